@@ -1,0 +1,118 @@
+#pragma once
+// ActuationDatabase: the paper's data exchange layer (Sec. II, III-A). One HDF5
+// file per finger design holding the reference mesh and, per actuation sample
+// S = (p, force points, forces), the deformed node positions x.
+//
+// Layout (documented in the README):
+//   /design               attributes: name, design_hash, element_type,
+//                         code_version, parameters (the design's .prm text)
+//   /mesh/X               (N,3) float64 reference node positions
+//   /mesh/cavity_triangles(F,3) int64 node indices, each triangle oriented so
+//                         that (x1-x0)x(x2-x0) points out of the body, i.e.
+//                         into the cavity
+//   /mesh/tip_nodes       (T)   int64 nodes on the tip face
+//   /mesh/base_nodes      (B)   int64 nodes on the clamped base face
+//   /samples/<id>/        attributes: pressure, role, status, reason,
+//                         load_factor_reached, newton_iterations, load_steps,
+//                         wall_time
+//                         datasets: force_points (m,3), forces (m,3),
+//                         force_points_deformed (m,3), x (N,3)
+// Samples are stored atomically: the new file is written beside the old one
+// and renamed over it, so a crash leaves the previous database intact.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace softchain::data
+{
+  using Point3 = std::array<double, 3>;
+
+  struct DesignRecord
+  {
+    std::string name;
+    std::string design_hash;  // hash of everything that changes the solution
+    std::string element_type; // "Q1", "Q2", "P1", "P2"
+    std::string code_version;
+    std::string parameters;   // the design's .prm text, for provenance
+  };
+
+  struct MeshRecord
+  {
+    std::vector<Point3>                      X;
+    std::vector<std::array<std::int64_t, 3>> cavity_triangles;
+    std::vector<std::int64_t>                tip_nodes;
+    std::vector<std::int64_t>                base_nodes;
+  };
+
+  struct PointForce
+  {
+    Point3 point; // reference position, inside the body
+    Point3 force; // dead load, world axes
+  };
+
+  struct Actuation
+  {
+    double                  pressure = 0.0; // Pa
+    std::vector<PointForce> point_forces;
+    // What the sample is for: "pressure" (k_phi), "lateral" (k_theta),
+    // "torsion" (k_psi), "validation" (never used for extraction), or a
+    // user's name.
+    std::string role;
+
+    // Canonical text of the actuation (pressure, points, forces; not role).
+    std::string canonical_text() const;
+  };
+
+  struct SampleRecord
+  {
+    std::string id; // sample_id(design_hash, actuation)
+    Actuation   actuation;
+    std::string status = "converged"; // or "failed"
+    std::string reason;               // why it failed (empty if converged)
+    double      load_factor_reached = 1.0;
+    int         newton_iterations   = 0;
+    int         load_steps          = 0;
+    double      wall_time           = 0.0; // s
+    std::vector<Point3> x; // deformed nodes (last converged state if failed)
+    std::vector<Point3> force_points_deformed;
+
+    bool converged() const { return status == "converged"; }
+  };
+
+  // Key of a sample: hash of the design hash and the actuation's canonical text.
+  std::string sample_id(const std::string &design_hash, const Actuation &actuation);
+
+  class ActuationDatabase
+  {
+  public:
+    // Opens `path` for reading. Throws InputError naming the file if it is
+    // missing or not a SoftChain database.
+    static ActuationDatabase open(const std::string &path);
+
+    // Opens `path` for a sweep. If it holds the same design_hash it is reused
+    // (its samples are a cache); otherwise an existing file is moved aside to
+    // `path.<old hash>.stale` and a new database with `design` and `mesh` is
+    // written.
+    static ActuationDatabase open_or_create(const std::string  &path,
+                                            const DesignRecord &design,
+                                            const MeshRecord   &mesh);
+
+    const std::string  &path() const { return path_; }
+    const DesignRecord &design() const { return design_; }
+    const MeshRecord   &mesh() const { return mesh_; }
+
+    bool                     has_sample(const std::string &id) const;
+    std::vector<std::string> sample_ids() const; // sorted
+    SampleRecord             read_sample(const std::string &id) const;
+
+    // Writes (or replaces) one sample atomically (write a copy, fsync, rename).
+    void store_sample(const SampleRecord &sample);
+
+  private:
+    std::string              path_;
+    DesignRecord             design_;
+    MeshRecord               mesh_;
+    std::vector<std::string> sample_ids_;
+  };
+} // namespace softchain::data
