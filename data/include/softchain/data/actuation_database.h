@@ -12,6 +12,9 @@
 //                         into the cavity
 //   /mesh/tip_nodes       (T)   int64 nodes on the tip face
 //   /mesh/base_nodes      (B)   int64 nodes on the clamped base face
+//   /mesh/cells           (C,k) int64 corner nodes of each element, k = 4
+//                         (tetrahedron) or 8 (hexahedron, deal.II's
+//                         lexicographic vertex order: x fastest, then y, z)
 //   /samples/<id>/        attributes: pressure, role, status, reason,
 //                         load_factor_reached, newton_iterations, load_steps,
 //                         wall_time
@@ -43,6 +46,8 @@ namespace softchain::data
     std::vector<std::array<std::int64_t, 3>> cavity_triangles;
     std::vector<std::int64_t>                tip_nodes;
     std::vector<std::int64_t>                base_nodes;
+    int                       nodes_per_cell = 4; // 4 or 8
+    std::vector<std::int64_t> cells;              // C * nodes_per_cell
   };
 
   struct PointForce
