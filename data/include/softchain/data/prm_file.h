@@ -24,6 +24,11 @@ namespace softchain::data
     bool                get_bool(const std::string &name) const;
     std::string         get(const std::string &name) const;
     std::vector<double> get_double_list(const std::string &name) const; // comma separated
+    // Added: comma separated words, trimmed ("" gives an empty list).
+    std::vector<std::string> get_list(const std::string &name) const;
+    // Added: "FILE[:LINE]: parameter 'NAME' in subsection 'TITLE'", the prefix
+    // of every InputError about that entry (LINE only if the file set it).
+    std::string describe(const std::string &name) const;
 
     std::string file;  // for messages
     std::string title; // subsection name

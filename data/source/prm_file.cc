@@ -1,0 +1,253 @@
+// PrmFile / PrmSection: deal.II ParameterHandler syntax without deal.II.
+// A logical line is one or more physical lines joined at a trailing "\";
+// "#" starts a comment; the statements are "subsection NAME", "end" and
+// "set NAME = VALUE".
+#include <softchain/data/input_error.h>
+#include <softchain/data/prm_file.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+namespace softchain::data
+{
+  namespace
+  {
+    std::string trim(const std::string &s)
+    {
+      const auto first = s.find_first_not_of(" \t\r");
+      if (first == std::string::npos)
+        return "";
+      return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+    }
+
+    enum class Kind
+    {
+      subsection,
+      set,
+      end
+    };
+
+    struct Statement
+    {
+      Kind        kind;
+      std::string name;  // subsection or parameter name
+      std::string value; // set only
+      int         first_line;
+      int         last_line;
+    };
+
+    std::string where(const std::string &path, int line)
+    {
+      return path + ":" + std::to_string(line) + ": ";
+    }
+
+    Statement parse_statement(const std::string &content, int first, int last,
+                              const std::string &path)
+    {
+      const auto word_end = content.find_first_of(" \t");
+      const std::string keyword = content.substr(0, word_end);
+      const std::string rest =
+        word_end == std::string::npos ? "" : trim(content.substr(word_end));
+      if (keyword == "end" && rest.empty())
+        return {Kind::end, "", "", first, last};
+      if (keyword == "subsection" && !rest.empty())
+        return {Kind::subsection, rest, "", first, last};
+      const auto equal = rest.find('=');
+      if (keyword == "set" && equal != std::string::npos && !trim(rest.substr(0, equal)).empty())
+        return {Kind::set, trim(rest.substr(0, equal)), trim(rest.substr(equal + 1)), first, last};
+      throw InputError(where(path, first) + "expected 'subsection NAME', 'set NAME = VALUE' or "
+                                            "'end', found '" + content + "'");
+    }
+
+    // Splits the text into statements; checks that subsection/end balance.
+    std::vector<Statement> statements(const std::string &text, const std::string &path)
+    {
+      std::vector<Statement> result;
+      std::istringstream     in(text);
+      std::string            physical, logical;
+      int                    line = 0, first = 1;
+      std::vector<int>       opened_at;
+      while (std::getline(in, physical))
+        {
+          ++line;
+          if (logical.empty())
+            first = line;
+          const std::string stripped = trim(physical);
+          if (!stripped.empty() && stripped.back() == '\\')
+            {
+              logical += stripped.substr(0, stripped.size() - 1) + " ";
+              continue;
+            }
+          logical += physical;
+          const std::string content = trim(logical.substr(0, logical.find('#')));
+          logical.clear();
+          if (content.empty())
+            continue;
+          result.push_back(parse_statement(content, first, line, path));
+          if (result.back().kind == Kind::subsection)
+            opened_at.push_back(first);
+          else if (result.back().kind == Kind::end)
+            {
+              if (opened_at.empty())
+                throw InputError(where(path, first) + "'end' without a matching 'subsection'");
+              opened_at.pop_back();
+            }
+        }
+      if (!opened_at.empty())
+        throw InputError(where(path, opened_at.back()) + "subsection is never closed by 'end'");
+      return result;
+    }
+
+    // Calls visit(statement, path of open subsections) for each statement; a
+    // subsection line and its end line see the path including that subsection.
+    void walk(const std::vector<Statement>                                            &all,
+              const std::function<void(const Statement &, const std::vector<std::string> &)> &visit)
+    {
+      std::vector<std::string> open;
+      for (const auto &s : all)
+        {
+          if (s.kind == Kind::subsection)
+            open.push_back(s.name);
+          visit(s, open);
+          if (s.kind == Kind::end)
+            open.pop_back();
+        }
+    }
+  } // namespace
+
+  void PrmSection::declare(const std::string &name, const std::string &default_value,
+                           const std::string &documentation)
+  {
+    entries[name] = Entry{default_value, documentation, 0};
+  }
+
+  std::string PrmSection::get(const std::string &name) const
+  {
+    const auto it = entries.find(name);
+    if (it == entries.end())
+      throw std::logic_error("PrmSection '" + title + "': parameter '" + name +
+                             "' was never declared");
+    return it->second.value;
+  }
+
+  std::string PrmSection::describe(const std::string &name) const
+  {
+    const int line = entries.count(name) ? entries.at(name).line : 0;
+    return file + (line ? ":" + std::to_string(line) : "") + ": parameter '" + name +
+           "' in subsection '" + title + "'";
+  }
+
+  double PrmSection::get_double(const std::string &name) const
+  {
+    const std::string value = get(name);
+    char             *end   = nullptr;
+    const double      v     = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0')
+      throw InputError(describe(name) + ": '" + value + "' is not a number");
+    return v;
+  }
+
+  int PrmSection::get_integer(const std::string &name) const
+  {
+    const std::string value = get(name);
+    char             *end   = nullptr;
+    const long        v     = std::strtol(value.c_str(), &end, 10);
+    if (value.empty() || *end != '\0')
+      throw InputError(describe(name) + ": '" + value + "' is not an integer");
+    return static_cast<int>(v);
+  }
+
+  bool PrmSection::get_bool(const std::string &name) const
+  {
+    const std::string value = get(name);
+    if (value == "true" || value == "yes")
+      return true;
+    if (value == "false" || value == "no")
+      return false;
+    throw InputError(describe(name) + ": '" + value + "' is not true/false/yes/no");
+  }
+
+  std::vector<std::string> PrmSection::get_list(const std::string &name) const
+  {
+    std::vector<std::string> items;
+    std::istringstream       in(get(name));
+    std::string              item;
+    while (std::getline(in, item, ','))
+      items.push_back(trim(item));
+    if (items.size() == 1 && items[0].empty())
+      items.clear();
+    if (std::count(items.begin(), items.end(), "") > 0)
+      throw InputError(describe(name) + ": empty item in the comma separated list");
+    return items;
+  }
+
+  std::vector<double> PrmSection::get_double_list(const std::string &name) const
+  {
+    std::vector<double> values;
+    for (const auto &item : get_list(name))
+      {
+        char        *end = nullptr;
+        const double v   = std::strtod(item.c_str(), &end);
+        if (*end != '\0')
+          throw InputError(describe(name) + ": list item '" + item + "' is not a number");
+        values.push_back(v);
+      }
+    return values;
+  }
+
+  PrmFile PrmFile::read(const std::string &path)
+  {
+    std::ifstream in(path);
+    if (!in)
+      throw InputError("cannot open parameter file '" + path + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    PrmFile file;
+    file.path_ = path;
+    file.text_ = text.str();
+    statements(file.text_, path); // validates the structure now
+    return file;
+  }
+
+  void PrmFile::parse_section(const std::string &title, PrmSection &section) const
+  {
+    section.file  = path_;
+    section.title = title;
+    walk(statements(text_, path_), [&](const Statement &s, const std::vector<std::string> &open) {
+      if (s.kind != Kind::set || open.empty() || open[0] != title)
+        return;
+      std::string key;
+      for (std::size_t i = 1; i < open.size(); ++i)
+        key += open[i] + "/";
+      key += s.name;
+      const auto entry = section.entries.find(key);
+      if (entry == section.entries.end())
+        throw InputError(where(path_, s.first_line) + "unknown parameter '" + key +
+                         "' in subsection '" + title + "'");
+      entry->second.value = s.value;
+      entry->second.line  = s.first_line;
+    });
+  }
+
+  std::string PrmFile::text_without(const std::vector<std::string> &titles) const
+  {
+    std::vector<bool> removed;
+    walk(statements(text_, path_), [&](const Statement &s, const std::vector<std::string> &open) {
+      if (open.empty() || std::find(titles.begin(), titles.end(), open[0]) == titles.end())
+        return;
+      removed.resize(std::max<std::size_t>(removed.size(), s.last_line), false);
+      for (int line = s.first_line; line <= s.last_line; ++line)
+        removed[line - 1] = true;
+    });
+    std::istringstream in(text_);
+    std::ostringstream out;
+    std::string        line;
+    for (std::size_t i = 0; std::getline(in, line); ++i)
+      out << (i < removed.size() && removed[i] ? "" : line) << '\n';
+    return out.str();
+  }
+} // namespace softchain::data

@@ -1,0 +1,167 @@
+// ActuationDatabase: round trip, replacement, cache, stale files, bad files.
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/input_error.h>
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+#include "scratch_directory.h"
+
+using namespace softchain::data;
+using softchain::testing::ScratchDirectory;
+
+namespace
+{
+  DesignRecord design(const std::string &hash)
+  {
+    return {"cube", hash, "Q1", "test", "subsection Geometry\nend\n"};
+  }
+
+  // One hexahedron (unit cube) with a "cavity" made of two triangles.
+  MeshRecord cube_mesh()
+  {
+    MeshRecord mesh;
+    for (int k = 0; k < 8; ++k)
+      mesh.X.push_back({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
+    mesh.cavity_triangles = {{0, 1, 3}, {0, 3, 2}};
+    mesh.tip_nodes        = {1, 3, 5, 7};
+    mesh.base_nodes       = {0, 2, 4, 6};
+    mesh.nodes_per_cell   = 8;
+    for (int k = 0; k < 8; ++k)
+      mesh.cells.push_back(k);
+    return mesh;
+  }
+
+  SampleRecord sample(const std::string &hash, double pressure, double shift)
+  {
+    SampleRecord s;
+    s.actuation.pressure     = pressure;
+    s.actuation.role         = "pressure";
+    s.actuation.point_forces = {{{1.0, 0.5, 0.5}, {0.0, -0.25, 0.0}}};
+    s.id                     = sample_id(hash, s.actuation);
+    s.newton_iterations      = 7;
+    s.load_steps             = 3;
+    s.wall_time              = 1.5;
+    for (const auto &X : cube_mesh().X)
+      s.x.push_back({X[0] + shift, X[1], X[2] - shift});
+    s.force_points_deformed = {{1.0 + shift, 0.5, 0.5 - shift}};
+    return s;
+  }
+
+  void check_equal(const SampleRecord &a, const SampleRecord &b)
+  {
+    CHECK(a.id == b.id);
+    CHECK(a.actuation.canonical_text() == b.actuation.canonical_text());
+    CHECK(a.actuation.role == b.actuation.role);
+    CHECK(a.status == b.status);
+    CHECK(a.reason == b.reason);
+    CHECK(a.load_factor_reached == b.load_factor_reached);
+    CHECK(a.newton_iterations == b.newton_iterations);
+    CHECK(a.load_steps == b.load_steps);
+    CHECK(a.wall_time == b.wall_time);
+    CHECK(a.x == b.x);
+    CHECK(a.force_points_deformed == b.force_points_deformed);
+  }
+
+  template <typename F>
+  void require_input_error_naming(const std::string &name, F &&f)
+  {
+    try
+      {
+        f();
+        FAIL("no InputError thrown");
+      }
+    catch (const InputError &e)
+      {
+        CHECK_THAT(e.what(), Catch::Contains(name));
+      }
+  }
+} // namespace
+
+TEST_CASE("database round trip of design, mesh and samples")
+{
+  ScratchDirectory  dir("db_round_trip");
+  const std::string path = dir.file("finger.h5");
+  auto              db   = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  SampleRecord      failed = sample("h1", 2e4, 0.25);
+  failed.status              = "failed";
+  failed.reason              = "Newton did not converge";
+  failed.load_factor_reached = 0.5;
+  db.store_sample(sample("h1", 1e4, 0.125));
+  db.store_sample(failed);
+
+  const auto again = ActuationDatabase::open(path);
+  CHECK(again.design().name == "cube");
+  CHECK(again.design().design_hash == "h1");
+  CHECK(again.design().parameters == design("h1").parameters);
+  CHECK(again.mesh().X == cube_mesh().X);
+  CHECK(again.mesh().cavity_triangles == cube_mesh().cavity_triangles);
+  CHECK(again.mesh().tip_nodes == cube_mesh().tip_nodes);
+  CHECK(again.mesh().base_nodes == cube_mesh().base_nodes);
+  CHECK(again.mesh().cells == cube_mesh().cells);
+  CHECK(again.mesh().nodes_per_cell == 8);
+  REQUIRE(again.sample_ids().size() == 2);
+  check_equal(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
+  const SampleRecord read_failed = again.read_sample(failed.id);
+  check_equal(read_failed, failed);
+  CHECK_FALSE(read_failed.converged());
+  // Nothing but the database is left in the directory (no temporary copies).
+  CHECK(std::distance(std::filesystem::directory_iterator(dir.path()),
+                      std::filesystem::directory_iterator()) == 1);
+}
+
+TEST_CASE("storing a sample with an existing id replaces it")
+{
+  ScratchDirectory dir("db_replace");
+  auto db = ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh());
+  db.store_sample(sample("h1", 1e4, 0.125));
+  db.store_sample(sample("h1", 1e4, 0.5)); // same actuation, so same id
+  const auto again = ActuationDatabase::open(dir.file("f.h5"));
+  REQUIRE(again.sample_ids().size() == 1);
+  check_equal(again.read_sample(again.sample_ids()[0]), sample("h1", 1e4, 0.5));
+}
+
+TEST_CASE("the same design reuses the stored samples as a cache")
+{
+  ScratchDirectory dir("db_cache");
+  ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh())
+    .store_sample(sample("h1", 1e4, 0.125));
+  const auto db = ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh());
+  Actuation  same;
+  same.pressure     = 1e4;
+  same.role         = "another role"; // the role is not part of the key
+  same.point_forces = sample("h1", 1e4, 0).actuation.point_forces;
+  CHECK(db.has_sample(sample_id("h1", same)));
+  same.pressure = 1e4 * (1 + 1e-15);
+  CHECK_FALSE(db.has_sample(sample_id("h1", same)));
+  CHECK(sample_id("h2", sample("h1", 1e4, 0).actuation) != sample("h1", 1e4, 0).id);
+}
+
+TEST_CASE("a new design hash moves the old database aside")
+{
+  ScratchDirectory dir("db_stale");
+  ActuationDatabase::open_or_create(dir.file("f.h5"), design("old"), cube_mesh())
+    .store_sample(sample("old", 1e4, 0.125));
+  const auto db = ActuationDatabase::open_or_create(dir.file("f.h5"), design("new"), cube_mesh());
+  CHECK(db.design().design_hash == "new");
+  CHECK(db.sample_ids().empty());
+  const auto stale = ActuationDatabase::open(dir.file("f.h5.old.stale"));
+  CHECK(stale.design().design_hash == "old");
+  CHECK(stale.sample_ids().size() == 1);
+}
+
+TEST_CASE("missing and non-database files give an InputError naming the file")
+{
+  ScratchDirectory dir("db_bad");
+  require_input_error_naming(dir.file("none.h5"),
+                             [&] { ActuationDatabase::open(dir.file("none.h5")); });
+  std::ofstream(dir.file("text.h5")) << "not HDF5\n";
+  require_input_error_naming(dir.file("text.h5"),
+                             [&] { ActuationDatabase::open(dir.file("text.h5")); });
+  require_input_error_naming(dir.file("text.h5"), [&] {
+    ActuationDatabase::open_or_create(dir.file("text.h5"), design("h"), cube_mesh());
+  });
+  const auto db = ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh());
+  require_input_error_naming("no sample 'nope'", [&] { db.read_sample("nope"); });
+}
