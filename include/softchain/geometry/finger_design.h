@@ -1,0 +1,52 @@
+#pragma once
+// FingerDesign: the .prm subsection "Finger design", checked. A design is
+// either parametric (Shape = p10 | p13 | parallelepiped, meshed from
+// meshes/finger.geo with the dimensions below) or imported (Shape = stl: two
+// closed STL surfaces, outer body and cavity, with the base and tip faces
+// found on the planes x = Base plane x and x = Tip plane x).
+#include <softchain/geometry/finger_dimensions.h>
+
+#include <string>
+
+namespace softchain::geometry
+{
+  // Where the fabric grid and the thread rings go (parametric designs).
+  struct SpringLayout
+  {
+    double fabric_height       = 0.0015; // y of the fabric grid, inside the bottom layer, m
+    double fabric_spacing      = 0.002;  // grid spacing of the fabric springs, m
+    double thread_pitch        = 0.004;  // distance between thread rings along x, m
+    double thread_node_spacing = 0.002;  // node spacing along a ring, m
+  };
+
+  // An imported design (Shape = stl). Paths are relative to the .prm file.
+  struct SurfaceDesign
+  {
+    std::string outer_file;  // closed STL of the outer body surface
+    std::string cavity_file; // closed STL of the cavity surface
+    std::string spring_file; // optional spring network file (may be empty)
+    double      base_x          = 0.0;  // plane of the clamped base face, m
+    double      tip_x           = 0.09; // plane of the tip face, m
+    double      plane_tolerance = 1e-6; // |x - plane| for a vertex on a plane, m
+  };
+
+  class FingerDesign
+  {
+  public:
+    // Reads the subsection "Finger design" of a .prm file (other subsections
+    // are ignored). Throws InputError naming file, line and parameter.
+    static FingerDesign read(const std::string &prm_path);
+
+    std::string      source;      // the .prm path, for messages
+    std::string      shape;       // p10 | p13 | parallelepiped | stl
+    int              resolution = 1; // 0 coarse, 1 default, 2 fine
+    bool             hexahedra  = false;
+    double           mesh_size  = 0.004; // m, from "Mesh sizes" and the resolution
+    FingerDimensions dimensions;
+    SpringLayout     springs;
+    SurfaceDesign    surface;
+
+    bool   parametric() const { return shape != "stl"; }
+    double length() const; // tip abscissa minus base abscissa
+  };
+} // namespace softchain::geometry

@@ -1,0 +1,169 @@
+#include <softchain/data/content_hash.h>
+#include <softchain/data/input_error.h>
+#include <softchain/data/prm_file.h>
+#include <softchain/geometry/finger_design.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace softchain::geometry
+{
+  namespace
+  {
+    using data::InputError;
+    using data::PrmSection;
+
+    const char *const subsection = "Finger design";
+
+    // Parameter name and where its value goes; the default comes from the
+    // member initialisers of FingerDimensions (the P10).
+    const std::vector<std::pair<const char *, double FingerDimensions::*>> dimension_entries = {
+      {"Length", &FingerDimensions::length},
+      {"Base width", &FingerDimensions::base_width},
+      {"Base height", &FingerDimensions::base_height},
+      {"Tip width", &FingerDimensions::tip_width},
+      {"Tip height", &FingerDimensions::tip_height},
+      {"Wall thickness", &FingerDimensions::wall},
+      {"Bottom layer thickness", &FingerDimensions::bottom},
+      {"Base fill length", &FingerDimensions::base_fill},
+      {"Tip cap thickness", &FingerDimensions::tip_cap}};
+
+    const std::vector<std::pair<const char *, double SpringLayout::*>> spring_entries = {
+      {"Fabric height", &SpringLayout::fabric_height},
+      {"Fabric spacing", &SpringLayout::fabric_spacing},
+      {"Thread pitch", &SpringLayout::thread_pitch},
+      {"Thread node spacing", &SpringLayout::thread_node_spacing}};
+
+    std::string number(double v)
+    {
+      return data::canonical(v);
+    }
+
+    void declare(PrmSection &section)
+    {
+      section.declare("Shape", "p10", "p10 | p13 | parallelepiped | stl");
+      section.declare("Resolution", "1", "0 coarse (tests), 1 default, 2 fine");
+      section.declare("Element shape", "tet", "tet | hex (hex: parametric shapes only)");
+      section.declare("Mesh sizes", "0.008, 0.004, 0.0018",
+                      "largest element size (m) at resolution 0, 1, 2");
+      for (const auto &[name, member] : dimension_entries)
+        section.declare(name, number(FingerDimensions().*member), "m");
+      for (const auto &[name, member] : spring_entries)
+        section.declare(name, number(SpringLayout().*member), "m");
+      const SurfaceDesign surface;
+      section.declare("Outer surface file", "", "Shape = stl: closed STL of the outer body");
+      section.declare("Cavity surface file", "", "Shape = stl: closed STL of the cavity");
+      section.declare("Spring file", "", "Shape = stl: spring networks (optional)");
+      section.declare("Base plane x", number(surface.base_x), "Shape = stl: base face plane, m");
+      section.declare("Tip plane x", number(surface.tip_x), "Shape = stl: tip face plane, m");
+      section.declare("Plane tolerance", number(surface.plane_tolerance), "m");
+    }
+
+    void require(bool condition, const PrmSection &section, const std::string &name,
+                 const std::string &what)
+    {
+      if (!condition)
+        throw InputError(section.describe(name) + " = " + section.get(name) + ": " + what);
+    }
+
+    double positive(const PrmSection &section, const std::string &name)
+    {
+      const double v = section.get_double(name);
+      require(v > 0.0, section, name, "must be positive");
+      return v;
+    }
+
+    void read_mesh_choice(const PrmSection &section, FingerDesign &design)
+    {
+      design.shape = section.get("Shape");
+      const std::set<std::string> shapes{"p10", "p13", "parallelepiped", "stl"};
+      require(shapes.count(design.shape), section, "Shape",
+              "expected p10, p13, parallelepiped or stl");
+      design.resolution = section.get_integer("Resolution");
+      require(design.resolution >= 0 && design.resolution <= 2, section, "Resolution",
+              "expected 0, 1 or 2");
+      const std::string element = section.get("Element shape");
+      require(element == "tet" || element == "hex", section, "Element shape", "expected tet or hex");
+      design.hexahedra = element == "hex";
+      require(!design.hexahedra || design.parametric(), section, "Element shape",
+              "hexahedra need a parametric shape, not stl");
+      const std::vector<double> sizes = section.get_double_list("Mesh sizes");
+      require(sizes.size() == 3 && *std::min_element(sizes.begin(), sizes.end()) > 0.0, section,
+              "Mesh sizes", "expected three positive sizes (resolution 0, 1, 2)");
+      design.mesh_size = sizes[design.resolution];
+    }
+
+    void check_cavity_fits(const PrmSection &section, const FingerDimensions &d)
+    {
+      require(d.base_fill + d.tip_cap < d.length, section, "Base fill length",
+              "base fill plus tip cap leave no cavity in the length");
+      require(std::min(d.base_width, d.tip_width) > 2.0 * d.wall, section, "Wall thickness",
+              "two walls are as wide as the finger: no cavity");
+      require(std::min(d.base_height, d.tip_height) > d.wall + d.bottom, section,
+              "Bottom layer thickness", "bottom layer and top wall fill the height: no cavity");
+    }
+
+    void read_parametric(const PrmSection &section, FingerDesign &design)
+    {
+      for (const auto &[name, member] : dimension_entries)
+        design.dimensions.*member = positive(section, name);
+      for (const auto &[name, member] : spring_entries)
+        design.springs.*member = positive(section, name);
+      check_cavity_fits(section, design.dimensions);
+      require(design.springs.fabric_height < design.dimensions.bottom, section, "Fabric height",
+              "the fabric must lie inside the bottom layer (below Bottom layer thickness)");
+      const FingerDimensions &d = design.dimensions;
+      require(design.shape != "parallelepiped" ||
+                (d.tip_width == d.base_width && d.tip_height == d.base_height),
+              section, "Tip width", "a parallelepiped has Tip width/height = Base width/height");
+    }
+
+    std::string path_beside(const std::string &prm_path, const std::string &file)
+    {
+      const std::filesystem::path p(file);
+      if (file.empty() || p.is_absolute())
+        return file;
+      return (std::filesystem::path(prm_path).parent_path() / p).string();
+    }
+
+    void read_surface(const PrmSection &section, FingerDesign &design)
+    {
+      SurfaceDesign &s = design.surface;
+      require(!section.get("Outer surface file").empty(), section, "Outer surface file",
+              "Shape = stl needs the outer surface");
+      require(!section.get("Cavity surface file").empty(), section, "Cavity surface file",
+              "Shape = stl needs the cavity surface");
+      s.outer_file      = path_beside(design.source, section.get("Outer surface file"));
+      s.cavity_file     = path_beside(design.source, section.get("Cavity surface file"));
+      s.spring_file     = path_beside(design.source, section.get("Spring file"));
+      s.base_x          = section.get_double("Base plane x");
+      s.tip_x           = section.get_double("Tip plane x");
+      s.plane_tolerance = positive(section, "Plane tolerance");
+      require(s.tip_x > s.base_x, section, "Tip plane x", "must be larger than Base plane x");
+    }
+  } // namespace
+
+  FingerDesign FingerDesign::read(const std::string &prm_path)
+  {
+    const data::PrmFile file = data::PrmFile::read(prm_path);
+    PrmSection          section;
+    declare(section);
+    file.parse_section(subsection, section);
+    FingerDesign design;
+    design.source = prm_path;
+    read_mesh_choice(section, design);
+    if (design.parametric())
+      read_parametric(section, design);
+    else
+      read_surface(section, design);
+    return design;
+  }
+
+  double FingerDesign::length() const
+  {
+    return parametric() ? dimensions.length : surface.tip_x - surface.base_x;
+  }
+} // namespace softchain::geometry

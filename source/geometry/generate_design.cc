@@ -1,0 +1,63 @@
+#include <softchain/data/content_hash.h>
+#include <softchain/geometry/generate_design.h>
+#include <softchain/geometry/mesh_checks.h>
+#include <softchain/geometry/reinforcement.h>
+#include <softchain/geometry/spring_network_file.h>
+#include <softchain/geometry/surface_import.h>
+
+#include <filesystem>
+
+namespace softchain::geometry
+{
+  namespace
+  {
+    // The -setnumber values of meshes/finger.geo.
+    GmshJob finger_job(const FingerDesign &design)
+    {
+      const FingerDimensions &d = design.dimensions;
+      GmshJob                 job;
+      job.name    = design.source;
+      job.script  = GmshJob::bundled_script("finger.geo");
+      job.numbers = {{"L", d.length},          {"w_base", d.base_width}, {"h_base", d.base_height},
+                     {"w_tip", d.tip_width},   {"h_tip", d.tip_height},  {"d", d.wall},
+                     {"bottom", d.bottom},     {"fill", d.base_fill},    {"cap", d.tip_cap},
+                     {"size", design.mesh_size}, {"hex", design.hexahedra ? 1.0 : 0.0}};
+      return job;
+    }
+
+    std::vector<SpringNetwork> spring_networks(const FingerDesign &design)
+    {
+      if (design.parametric())
+        return {Reinforcement::fabric(design.dimensions, design.springs),
+                Reinforcement::threads(design.dimensions, design.springs)};
+      if (design.surface.spring_file.empty())
+        return {};
+      return SpringNetworkFile::read(design.surface.spring_file);
+    }
+  } // namespace
+
+  GeneratedDesign generate_design(const FingerDesign &design, GmshMesher &mesher)
+  {
+    const GmshJob job = design.parametric() ? finger_job(design) : SurfaceImport::job(design);
+    const auto    networks = spring_networks(design);
+    GeneratedDesign result;
+    result.mesh_file = mesher.mesh(job);
+    result.hash      = data::content_hash(job.key() + "\n" + SpringNetworkFile::text(networks));
+    result.length    = design.length();
+    result.spring_file =
+      (std::filesystem::path(result.mesh_file).parent_path() / ("springs-" + result.hash + ".txt"))
+        .string();
+    if (!std::filesystem::exists(result.spring_file))
+      SpringNetworkFile::write(result.spring_file, networks);
+    const std::string spring_source =
+      design.parametric() ? result.spring_file : design.surface.spring_file;
+    MeshChecks::check_all(MshFile::read(result.mesh_file), networks, spring_source);
+    return result;
+  }
+
+  GeneratedDesign generate_design(const std::string &prm_path, const std::string &cache_dir)
+  {
+    GmshMesher mesher(cache_dir);
+    return generate_design(FingerDesign::read(prm_path), mesher);
+  }
+} // namespace softchain::geometry

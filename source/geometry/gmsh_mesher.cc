@@ -1,0 +1,133 @@
+#include <softchain/data/content_hash.h>
+#include <softchain/data/input_error.h>
+#include <softchain/geometry/gmsh_mesher.h>
+
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace softchain::geometry
+{
+  namespace fs = std::filesystem;
+
+  namespace
+  {
+    const char *const script_name = "input.geo";
+    const char *const mesh_name   = "mesh.msh";
+    const char *const log_name    = "gmsh.log";
+
+    std::string shell_quote(const std::string &s)
+    {
+      std::string quoted = "'";
+      for (const char c : s)
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      return quoted + "'";
+    }
+
+    void write_file(const fs::path &path, const std::string &content)
+    {
+      std::ofstream out(path, std::ios::binary);
+      out << content;
+      if (!out)
+        throw data::InputError("cannot write " + path.string());
+    }
+
+    // The last lines of gmsh's log, for the error message.
+    std::string log_tail(const fs::path &path, std::size_t n_lines = 8)
+    {
+      std::ifstream           in(path);
+      std::deque<std::string> lines;
+      for (std::string line; std::getline(in, line);)
+        {
+          lines.push_back(line);
+          if (lines.size() > n_lines)
+            lines.pop_front();
+        }
+      std::string tail;
+      for (const auto &line : lines)
+        tail += "\n  " + line;
+      return tail;
+    }
+
+    bool log_has_error(const fs::path &path)
+    {
+      std::ifstream in(path);
+      for (std::string line; std::getline(in, line);)
+        if (line.rfind("Error", 0) == 0)
+          return true;
+      return false;
+    }
+  } // namespace
+
+  std::string GmshJob::key() const
+  {
+    std::ostringstream text;
+    text << "gmsh job v1\n" << script.size() << "\n" << script;
+    for (const auto &[name, value] : numbers)
+      text << "number " << name << " " << data::canonical(value) << "\n";
+    for (const auto &[name, content] : files)
+      text << "file " << name << " " << content.size() << "\n" << content;
+    return data::content_hash(text.str());
+  }
+
+  std::string GmshJob::bundled_script(const std::string &file_name)
+  {
+    const fs::path path = fs::path(SOFTCHAIN_MESHES_DIR) / file_name;
+    std::ifstream  in(path);
+    if (!in)
+      throw data::InputError("cannot read the gmsh script " + path.string());
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  GmshMesher::GmshMesher(std::string cache_dir, std::string gmsh)
+    : cache_dir_(std::move(cache_dir))
+    , gmsh_(std::move(gmsh))
+  {}
+
+  std::string GmshMesher::default_binary()
+  {
+    const char *env = std::getenv("SOFTCHAIN_GMSH");
+    return env && *env ? env : "gmsh";
+  }
+
+  std::string GmshMesher::entry_directory(const GmshJob &job) const
+  {
+    return (fs::path(cache_dir_) / job.key()).string();
+  }
+
+  std::string GmshMesher::mesh(const GmshJob &job)
+  {
+    const fs::path directory = entry_directory(job);
+    const fs::path mesh      = directory / mesh_name;
+    if (!fs::exists(mesh))
+      run(job, directory.string());
+    return mesh.string();
+  }
+
+  void GmshMesher::run(const GmshJob &job, const std::string &directory)
+  {
+    fs::create_directories(directory);
+    write_file(fs::path(directory) / script_name, job.script);
+    for (const auto &[name, content] : job.files)
+      write_file(fs::path(directory) / name, content);
+    // Written under a temporary name and renamed: an interrupted run never
+    // leaves a mesh that looks cached.
+    const std::string partial = std::string(mesh_name) + ".part";
+    std::string command = "cd " + shell_quote(directory) + " && " + shell_quote(gmsh_) +
+                          " -3 -format msh22 " + script_name;
+    for (const auto &[name, value] : job.numbers)
+      command += " -setnumber " + name + " " + data::canonical(value);
+    command += " -o " + partial + " > " + log_name + " 2>&1";
+    ++n_runs_;
+    const int status = std::system(command.c_str());
+    const fs::path log = fs::path(directory) / log_name;
+    if (status != 0 || log_has_error(log) || !fs::exists(fs::path(directory) / partial))
+      throw data::InputError(job.name + ": gmsh failed (" + gmsh_ + ", log " + log.string() +
+                             "):" + log_tail(log));
+    fs::rename(fs::path(directory) / partial, fs::path(directory) / mesh_name);
+  }
+} // namespace softchain::geometry
