@@ -1,0 +1,110 @@
+#pragma once
+// ChainEquilibrium: static equilibrium of a ChainModel under a ChainLoad,
+//   r(q) = K q - J_p p - J(q)^T f = 0                     (paper, Sec. III-C)
+// solved by Newton's method with the exact tangent dr/dq.
+//
+// The problem is conservative: r is the gradient of the potential energy
+//   U(q) = 1/2 q^T K q - (J_p p)^T q - sum_k f_k . x_k(q)
+// (dead forces f_k at the material points x_k). Hence J(q)^T f is taken as the
+// generalised force of the Euler angles, Q_{i,alpha} = a_{i,alpha} . M_i with
+// M_i = sum_{k distal to i} (x_k - c_i) x f_k the moment about joint i: the
+// reduction's joint-frame torque to first order, exactly so in planar bending.
+// The tangent H = dr/dq = K - dQ/dq is the Hessian of U, symmetric:
+//   dQ_{j,alpha}/dq_{l,beta} = [(l,beta) before (j,alpha)] (a_{l,beta} x a_{j,alpha}) . M_j
+//                              + a_{j,alpha} . B_max(j,l) a_{l,beta},
+//   B_m = A_m - tr(A_m) I,  A_m = sum_{k distal to m} (x_k - c_m) f_k^T,
+// from da_{j,alpha} = a_{l,beta} x a_{j,alpha} and d(x_k - c_j) = a_{l,beta} x (x_k - c_max(j,l)).
+//
+// Globalisation, so that bending through 180 deg and beyond converges from
+// rest: the Newton step is capped at max_step_angle per angle; where H is not
+// positive definite (post-buckling) it is shifted, H + mu I, which keeps the
+// step a descent direction of U; a backtracking line search then requires U
+// to decrease (Armijo). Converged when |r|_inf <= tolerance * (|K q|_inf +
+// |J_p p|_inf + |J^T f|_inf). A load it cannot equilibrate within
+// max_iterations, or whose equilibrium leaves the chain's range of validity
+// (|theta_i| < 90 deg where the Euler convention is regular, |psi_i|, |phi_i|
+// <= 180 deg since the reduction reads angles in that range), is reported as
+// failed with the reason; the pose is then not an answer.
+#include <softchain/chain/chain_load.h>
+#include <softchain/chain/chain_model.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <string>
+
+namespace softchain::chain
+{
+  struct EquilibriumSettings
+  {
+    double tolerance      = 1e-10; // relative residual
+    int    max_iterations = 50;
+    double max_step_angle = 1.5;   // rad per angle and Newton step
+  };
+
+  struct Equilibrium
+  {
+    Eigen::VectorXd angles;        // q at the last iterate
+    bool            converged = false;
+    int             iterations = 0; // Newton steps taken
+    double          residual = 0.0; // relative residual at `angles`
+    std::string     failure;        // why not converged (empty if converged)
+  };
+
+  class ChainEquilibrium
+  {
+  public:
+    explicit ChainEquilibrium(const ChainModel &model, EquilibriumSettings settings = {});
+
+    // Equilibrium from rest, or from `start` (warm start, e.g. the previous
+    // pressure of a sweep).
+    Equilibrium solve(const ChainLoad &load);
+    Equilibrium solve(const ChainLoad &load, const Eigen::VectorXd &start);
+
+    // The pieces, for tests and for the dynamic step: set a load, then
+    // evaluate U, r and H at q.
+    void                   set_load(const ChainLoad &load);
+    double                 energy(const Eigen::VectorXd &q);
+    Eigen::VectorXd        residual(const Eigen::VectorXd &q);
+    Eigen::MatrixXd        tangent(const Eigen::VectorXd &q);
+    // Pose of the last evaluation.
+    const ChainPose &pose() const { return pose_; }
+
+  private:
+    struct AttachedLoad
+    {
+      int             link;
+      Eigen::Vector3d reference_point;
+      Eigen::Vector3d force;
+    };
+
+    void   evaluate(const Eigen::VectorXd &q);
+    void   accumulate_distal_loads();
+    void   assemble_tangent();
+    bool   converged() const;
+    double relative_residual() const;
+    void   newton_direction();
+    bool   line_search(Eigen::VectorXd &q);
+    std::string range_violation(const Eigen::VectorXd &q) const;
+
+    const ChainModel   &model_;
+    EquilibriumSettings settings_;
+
+    // Load (set_load)
+    Eigen::VectorXd           stiffness_;       // diag K
+    Eigen::VectorXd           pressure_torque_; // J_p p
+    std::vector<AttachedLoad> loads_;           // sorted by link
+
+    // State of the last evaluation
+    ChainPose                    pose_;
+    std::vector<Eigen::Vector3d> moment_;       // M_i
+    std::vector<Eigen::Matrix3d> moment_gradient_; // B_i
+    Eigen::VectorXd              generalised_force_; // Q = J^T f
+    Eigen::VectorXd              residual_;
+    double                       residual_scale_ = 0.0;   // |K q| + |J_p p| + |Q|
+    double                       energy_ = 0.0;
+    double                       energy_magnitude_ = 0.0; // sum of |terms| of U
+    Eigen::MatrixXd              tangent_;
+    Eigen::VectorXd              direction_;
+    Eigen::LLT<Eigen::MatrixXd>  factor_;
+  };
+} // namespace softchain::chain

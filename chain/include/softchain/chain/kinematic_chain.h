@@ -1,0 +1,62 @@
+#pragma once
+// KinematicChain: the paper's lumped finger (Sec. II, III-C): rigid links joined
+// by spherical joints. Joint i (0-based here, i = 0..n-1) sits at its reference
+// centre J_i; link i is the rigid body between J_i and J_{i+1} (the last link
+// reaches the tip point T). The clamped base carries everything proximal to J_0.
+//
+// Joint angles q = (psi_0, theta_0, phi_0, ..., psi_{n-1}, theta_{n-1},
+// phi_{n-1}) are the relative rotations of ARCHITECTURE.md with the shared
+// Euler convention (data/joint_angles.h): E(q_i) = Rx(psi) Ry(theta) Rz(phi).
+// Forward kinematics (R_{-1} = I, c_0 = J_0):
+//   R_i     = R_{i-1} E(q_i)
+//   c_{i+1} = c_i + R_i (J_{i+1} - J_i),   tip = c_{n-1} + R_{n-1} (T - J_{n-1})
+// and a material point X of link b moves to x = c_b + R_b (X - J_b).
+// The world axes of the three angles of joint i are the columns of
+//   A_i = R_{i-1} [ e_x,  Rx(psi) e_y,  Rx(psi) Ry(theta) e_z ]
+// so that dx/dq_{i,alpha} = a_{i,alpha} x (x - c_i) for points distal to i.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace softchain::chain
+{
+  // The chain's configuration for one set of joint angles.
+  struct ChainPose
+  {
+    std::vector<Eigen::Vector3d> joint_positions; // c_i, world
+    std::vector<Eigen::Matrix3d> link_rotations;  // R_i
+    std::vector<Eigen::Matrix3d> joint_axes;      // A_i (world axes as columns)
+    Eigen::Vector3d              tip_position = Eigen::Vector3d::Zero();
+  };
+
+  class KinematicChain
+  {
+  public:
+    // Joint centres in order along +x (strictly increasing x) and the tip
+    // point beyond the last one; throws std::invalid_argument otherwise.
+    KinematicChain(std::vector<Eigen::Vector3d> joint_centres,
+                   const Eigen::Vector3d       &tip);
+
+    int n_joints() const { return static_cast<int>(joint_centres_.size()); }
+    int n_angles() const { return 3 * n_joints(); }
+    const Eigen::Vector3d &joint_centre(int i) const { return joint_centres_[i]; }
+    const Eigen::Vector3d &tip() const { return tip_; }
+    // Reference length from the first joint to the tip.
+    double length_from_first_joint() const;
+
+    // Link that carries the material point with reference position X: the
+    // last joint i with J_i,x <= X_x, or -1 for the clamped base.
+    int link_of(const Eigen::Vector3d &X) const;
+
+    ChainPose rest_pose() const;
+    // Overwrites `pose` (sized by rest_pose(); no allocation) for angles q.
+    void update_pose(const Eigen::VectorXd &q, ChainPose &pose) const;
+    // Current position of the reference point X carried by `link` (-1: base).
+    Eigen::Vector3d point_position(const ChainPose &pose, int link,
+                                   const Eigen::Vector3d &X) const;
+
+  private:
+    std::vector<Eigen::Vector3d> joint_centres_;
+    Eigen::Vector3d              tip_;
+  };
+} // namespace softchain::chain

@@ -1,0 +1,23 @@
+#pragma once
+// PiecewiseLinear: a scalar tabulated against pressure (the reduction's
+// k_phi(p) and J_p(p) tables), interpolated linearly between the tabulated
+// pressures and held constant beyond the first and last one (no extrapolation
+// of a secant stiffness outside the sampled range).
+#include <vector>
+
+namespace softchain::chain
+{
+  class PiecewiseLinear
+  {
+  public:
+    // Abscissae strictly increasing, same count as values, at least one;
+    // throws std::invalid_argument otherwise.
+    PiecewiseLinear(std::vector<double> abscissae, std::vector<double> values);
+
+    double operator()(double x) const;
+
+  private:
+    std::vector<double> abscissae_;
+    std::vector<double> values_;
+  };
+} // namespace softchain::chain

@@ -1,0 +1,243 @@
+#include <softchain/chain/chain_equilibrium.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    Eigen::Matrix3d cross_matrix(const Eigen::Vector3d &v)
+    {
+      Eigen::Matrix3d m;
+      m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+      return m;
+    }
+
+    double degrees(double radians) { return radians * 180.0 / M_PI; }
+
+    // Armijo constant of the backtracking line search (sufficient decrease).
+    constexpr double armijo = 1e-4;
+    constexpr int    max_halvings = 40;
+  } // namespace
+
+  ChainEquilibrium::ChainEquilibrium(const ChainModel &model, EquilibriumSettings settings)
+    : model_(model)
+    , settings_(settings)
+    , pose_(model.chain().rest_pose())
+    , moment_(model.chain().n_joints())
+    , moment_gradient_(model.chain().n_joints())
+    , generalised_force_(model.chain().n_angles())
+    , residual_(model.chain().n_angles())
+    , tangent_(model.chain().n_angles(), model.chain().n_angles())
+    , direction_(model.chain().n_angles())
+    , factor_(model.chain().n_angles())
+  {
+    if (!(settings_.tolerance > 0.0) || settings_.max_iterations < 1 ||
+        !(settings_.max_step_angle > 0.0))
+      throw std::invalid_argument("ChainEquilibrium: tolerance, iterations and step must be positive");
+  }
+
+  void ChainEquilibrium::set_load(const ChainLoad &load)
+  {
+    if (!std::isfinite(load.pressure))
+      throw std::invalid_argument("ChainEquilibrium: pressure is not finite");
+    stiffness_       = model_.stiffness().diagonal(load.pressure);
+    pressure_torque_ = model_.actuation().torque(load.pressure);
+    loads_.clear();
+    for (const PointLoad &p : load.point_loads)
+      {
+        if (!p.reference_point.allFinite() || !p.force.allFinite())
+          throw std::invalid_argument("ChainEquilibrium: point load is not finite");
+        const int link = model_.chain().link_of(p.reference_point);
+        if (link >= 0) // loads on the clamped base do no work
+          loads_.push_back({link, p.reference_point, p.force});
+      }
+    std::stable_sort(loads_.begin(), loads_.end(),
+                     [](const AttachedLoad &a, const AttachedLoad &b) { return a.link < b.link; });
+  }
+
+  void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
+  {
+    model_.chain().update_pose(q, pose_);
+    accumulate_distal_loads();
+    const double strain = 0.5 * q.dot(stiffness_.cwiseProduct(q));
+    const double work   = pressure_torque_.dot(q);
+    residual_           = stiffness_.cwiseProduct(q) - pressure_torque_ - generalised_force_;
+    residual_scale_     = stiffness_.cwiseProduct(q).lpNorm<Eigen::Infinity>() +
+                      pressure_torque_.lpNorm<Eigen::Infinity>() +
+                      generalised_force_.lpNorm<Eigen::Infinity>();
+    energy_ += strain - work;
+    energy_magnitude_ += strain + std::abs(work);
+  }
+
+  // Backward pass from the tip: M_m, B_m (header) and Q_m = A_m^T M_m, with
+  // the potential of the dead loads, -sum f.x, left in energy_.
+  void ChainEquilibrium::accumulate_distal_loads()
+  {
+    Eigen::Vector3d force  = Eigen::Vector3d::Zero(); // sum f_k
+    Eigen::Vector3d moment = Eigen::Vector3d::Zero(); // sum x_k x f_k
+    Eigen::Matrix3d dyad   = Eigen::Matrix3d::Zero(); // sum x_k f_k^T
+    energy_                = 0.0;
+    energy_magnitude_      = 0.0;
+    auto load              = loads_.rbegin();
+    for (int m = model_.chain().n_joints() - 1; m >= 0; --m)
+      {
+        for (; load != loads_.rend() && load->link == m; ++load)
+          {
+            const Eigen::Vector3d x =
+              model_.chain().point_position(pose_, m, load->reference_point);
+            force += load->force;
+            moment += x.cross(load->force);
+            dyad += x * load->force.transpose();
+            energy_ -= load->force.dot(x);
+            energy_magnitude_ += std::abs(load->force.dot(x));
+          }
+        const Eigen::Vector3d &c = pose_.joint_positions[m];
+        moment_[m]               = moment - c.cross(force);
+        const Eigen::Matrix3d a  = dyad - c * force.transpose();
+        moment_gradient_[m]      = a - a.trace() * Eigen::Matrix3d::Identity();
+        generalised_force_.segment<3>(3 * m) = pose_.joint_axes[m].transpose() * moment_[m];
+      }
+  }
+
+  // Lower triangle of H = K - dQ/dq block by block (header), then mirrored.
+  void ChainEquilibrium::assemble_tangent()
+  {
+    const int n = model_.chain().n_joints();
+    for (int j = 0; j < n; ++j)
+      {
+        const Eigen::Matrix3d &axes_j = pose_.joint_axes[j];
+        const Eigen::Matrix3d  twist  = cross_matrix(moment_[j]);
+        const Eigen::Matrix3d  row    = axes_j.transpose() * (moment_gradient_[j] + twist);
+        for (int l = 0; l < j; ++l)
+          tangent_.block<3, 3>(3 * j, 3 * l) = -row * pose_.joint_axes[l];
+        Eigen::Matrix3d diagonal = axes_j.transpose() * moment_gradient_[j] * axes_j;
+        diagonal += (axes_j.transpose() * twist * axes_j).triangularView<Eigen::StrictlyLower>();
+        tangent_.block<3, 3>(3 * j, 3 * j) = -diagonal;
+      }
+    tangent_.diagonal() += stiffness_;
+    tangent_.triangularView<Eigen::StrictlyUpper>() = tangent_.transpose();
+  }
+
+  bool ChainEquilibrium::converged() const
+  {
+    return residual_.lpNorm<Eigen::Infinity>() <= settings_.tolerance * residual_scale_;
+  }
+
+  double ChainEquilibrium::relative_residual() const
+  {
+    const double r = residual_.lpNorm<Eigen::Infinity>();
+    return residual_scale_ > 0.0 ? r / residual_scale_ : r;
+  }
+
+  // direction_ = -H^-1 r, with H shifted by mu I until positive definite (the
+  // shifted step is a descent direction of U), capped at max_step_angle.
+  void ChainEquilibrium::newton_direction()
+  {
+    double shift = 0.0;
+    for (factor_.compute(tangent_); factor_.info() != Eigen::Success;
+         factor_.compute(tangent_ + shift * Eigen::MatrixXd::Identity(tangent_.rows(), tangent_.cols())))
+      shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
+    direction_       = -factor_.solve(residual_);
+    const double big = direction_.lpNorm<Eigen::Infinity>();
+    if (big > settings_.max_step_angle)
+      direction_ *= settings_.max_step_angle / big;
+  }
+
+  // Backtracking until U decreases enough (Armijo); `slack` admits the
+  // round-off of U itself (a few ulps of its largest term) near convergence.
+  bool ChainEquilibrium::line_search(Eigen::VectorXd &q)
+  {
+    const Eigen::VectorXd start  = q;
+    const double          energy = energy_;
+    const double          slope  = residual_.dot(direction_);
+    const double          slack  = 64.0 * std::numeric_limits<double>::epsilon() * energy_magnitude_;
+    double                step   = 1.0;
+    for (int halving = 0; halving < max_halvings; ++halving, step *= 0.5)
+      {
+        q = start + step * direction_;
+        evaluate(q);
+        if (energy_ <= energy + armijo * step * slope + slack)
+          return true;
+      }
+    q = start;
+    evaluate(q);
+    return false;
+  }
+
+  std::string ChainEquilibrium::range_violation(const Eigen::VectorXd &q) const
+  {
+    static const char *names[3] = {"psi", "theta", "phi"};
+    for (Eigen::Index j = 0; j < q.size(); ++j)
+      {
+        const bool outside =
+          j % 3 == 1 ? std::abs(q[j]) >= 0.5 * M_PI : std::abs(q[j]) > M_PI;
+        if (outside)
+          {
+            std::ostringstream message;
+            message << "joint " << j / 3 + 1 << ": " << names[j % 3] << " = " << degrees(q[j])
+                    << " deg at equilibrium, outside the chain's range (|theta| < 90 deg, "
+                       "|psi|, |phi| <= 180 deg)";
+            return message.str();
+          }
+      }
+    return {};
+  }
+
+  Equilibrium ChainEquilibrium::solve(const ChainLoad &load)
+  {
+    return solve(load, Eigen::VectorXd::Zero(model_.chain().n_angles()));
+  }
+
+  Equilibrium ChainEquilibrium::solve(const ChainLoad &load, const Eigen::VectorXd &start)
+  {
+    if (start.size() != model_.chain().n_angles() || !start.allFinite())
+      throw std::invalid_argument("ChainEquilibrium: start needs 3 finite angles per joint");
+    set_load(load);
+    Equilibrium result;
+    result.angles = start;
+    evaluate(result.angles);
+    while (!converged() && result.failure.empty())
+      {
+        if (result.iterations == settings_.max_iterations)
+          result.failure = "no equilibrium within " + std::to_string(settings_.max_iterations) +
+                           " Newton iterations";
+        else
+          {
+            assemble_tangent();
+            newton_direction();
+            ++result.iterations;
+            if (!line_search(result.angles))
+              result.failure = "line search found no decrease of the energy";
+          }
+      }
+    if (result.failure.empty())
+      result.failure = range_violation(result.angles);
+    result.converged = result.failure.empty();
+    result.residual  = relative_residual();
+    return result;
+  }
+
+  double ChainEquilibrium::energy(const Eigen::VectorXd &q)
+  {
+    evaluate(q);
+    return energy_;
+  }
+
+  Eigen::VectorXd ChainEquilibrium::residual(const Eigen::VectorXd &q)
+  {
+    evaluate(q);
+    return residual_;
+  }
+
+  Eigen::MatrixXd ChainEquilibrium::tangent(const Eigen::VectorXd &q)
+  {
+    evaluate(q);
+    assemble_tangent();
+    return tangent_;
+  }
+} // namespace softchain::chain

@@ -1,0 +1,91 @@
+#include <softchain/chain/kinematic_chain.h>
+#include <softchain/data/joint_angles.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    // Columns: the Euler axes e_x, Rx(psi) e_y, Rx(psi) Ry(theta) e_z in the
+    // parent link's frame (the columns of dE/dq E^T, see the header).
+    Eigen::Matrix3d local_euler_axes(double psi, double theta)
+    {
+      Eigen::Matrix3d axes;
+      axes.col(0) << 1.0, 0.0, 0.0;
+      axes.col(1) << 0.0, std::cos(psi), std::sin(psi);
+      axes.col(2) << std::sin(theta), -std::sin(psi) * std::cos(theta),
+        std::cos(psi) * std::cos(theta);
+      return axes;
+    }
+  } // namespace
+
+  KinematicChain::KinematicChain(std::vector<Eigen::Vector3d> joint_centres,
+                                 const Eigen::Vector3d       &tip)
+    : joint_centres_(std::move(joint_centres))
+    , tip_(tip)
+  {
+    if (joint_centres_.empty())
+      throw std::invalid_argument("KinematicChain: no joints");
+    for (std::size_t i = 1; i < joint_centres_.size(); ++i)
+      if (!(joint_centres_[i].x() > joint_centres_[i - 1].x()))
+        throw std::invalid_argument(
+          "KinematicChain: joint centres must increase strictly along x");
+    if (!(tip_.x() > joint_centres_.back().x()))
+      throw std::invalid_argument(
+        "KinematicChain: the tip must lie beyond the last joint along x");
+  }
+
+  double KinematicChain::length_from_first_joint() const
+  {
+    double length = 0.0;
+    for (std::size_t i = 1; i < joint_centres_.size(); ++i)
+      length += (joint_centres_[i] - joint_centres_[i - 1]).norm();
+    return length + (tip_ - joint_centres_.back()).norm();
+  }
+
+  int KinematicChain::link_of(const Eigen::Vector3d &X) const
+  {
+    int link = -1;
+    while (link + 1 < n_joints() && joint_centres_[link + 1].x() <= X.x())
+      ++link;
+    return link;
+  }
+
+  ChainPose KinematicChain::rest_pose() const
+  {
+    ChainPose pose;
+    pose.joint_positions = joint_centres_;
+    pose.link_rotations.assign(n_joints(), Eigen::Matrix3d::Identity());
+    pose.joint_axes.assign(n_joints(), Eigen::Matrix3d::Identity());
+    pose.tip_position = tip_;
+    return pose;
+  }
+
+  void KinematicChain::update_pose(const Eigen::VectorXd &q, ChainPose &pose) const
+  {
+    Eigen::Matrix3d parent   = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d position = joint_centres_[0];
+    for (int i = 0; i < n_joints(); ++i)
+      {
+        const data::JointAngles angles{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+        pose.joint_positions[i] = position;
+        pose.joint_axes[i]      = parent * local_euler_axes(angles.psi, angles.theta);
+        parent                  = parent * data::rotation_from_angles(angles);
+        pose.link_rotations[i]  = parent;
+        const Eigen::Vector3d &next = i + 1 < n_joints() ? joint_centres_[i + 1] : tip_;
+        position += parent * (next - joint_centres_[i]);
+      }
+    pose.tip_position = position;
+  }
+
+  Eigen::Vector3d KinematicChain::point_position(const ChainPose &pose, int link,
+                                                 const Eigen::Vector3d &X) const
+  {
+    if (link < 0)
+      return X;
+    return pose.joint_positions[link] +
+           pose.link_rotations[link] * (X - joint_centres_[link]);
+  }
+} // namespace softchain::chain
