@@ -1,0 +1,46 @@
+#pragma once
+// StiffnessFiles: the reduction tier's output that defines a chain, for one
+// method (M1, M2) and slab half-width b = fraction * a, under
+// <output_dir>/stiffness/ with label <M>_b<fraction with 2 decimals>a:
+//   <label>.csv                   joint,x_ref,Jx,Jy,Jz,k_psi,k_theta,k_phi,
+//                                 k_psi_fit,k_theta_fit,k_phi_fit,n_psi,n_theta,n_phi
+//   <label>_kphi_vs_pressure.csv  pressure,joint,k_phi
+//   <label>_pressure_torque.csv   pressure,joint,jp_x,jp_y,jp_z
+// Joints are numbered 1..n (ARCHITECTURE.md) and listed in that order in the
+// stiffness file. Bad content (missing column, missing or misnumbered joint,
+// NaN, zero or negative stiffness, NaN J_p) is an InputError naming the file
+// and row (rows counted from 1 after the header line). In the k_phi(p) table
+// NaN means "no value at this pressure" (the reduction's threshold) and the
+// row is skipped; a joint without any value is an error.
+#include <softchain/chain/chain_model.h>
+
+#include <string>
+
+namespace softchain::chain
+{
+  class StiffnessFiles
+  {
+  public:
+    StiffnessFiles(const std::string &stiffness_directory, const std::string &method,
+                   double half_width_fraction);
+
+    // "M2_b0.50a"
+    static std::string label(const std::string &method, double half_width_fraction);
+
+    const std::string &stiffness_path() const { return stiffness_path_; }
+    const std::string &bending_in_pressure_path() const { return bending_in_pressure_path_; }
+    const std::string &pressure_torque_path() const { return pressure_torque_path_; }
+    bool               exist() const;
+
+    // The chain of these files with the given tip point. `column` is "value"
+    // (k at the largest load) or "fit" (least-squares over the load set);
+    // `in_pressure` makes k_phi and J_p follow their pressure tables.
+    ChainModel read_model(const std::string &name, const Eigen::Vector3d &tip,
+                          const std::string &column, bool in_pressure) const;
+
+  private:
+    std::string stiffness_path_;
+    std::string bending_in_pressure_path_;
+    std::string pressure_torque_path_;
+  };
+} // namespace softchain::chain

@@ -1,0 +1,207 @@
+#include <softchain/chain/stiffness_files.h>
+#include <softchain/data/csv_table.h>
+#include <softchain/data/input_error.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    using data::CsvTable;
+    using data::InputError;
+
+    std::string where(const std::string &path, std::size_t row)
+    {
+      return path + ", row " + std::to_string(row + 1) + ": ";
+    }
+
+    CsvTable read_table(const std::string &path, const std::vector<std::string> &columns)
+    {
+      if (!std::filesystem::exists(path))
+        throw InputError("missing chain input file '" + path + "' (run the reduction first)");
+      CsvTable table = CsvTable::read(path);
+      for (const std::string &c : columns)
+        if (!table.has_column(c))
+          throw InputError(path + ": missing column '" + c + "'");
+      if (table.n_rows() == 0)
+        throw InputError(path + ": no rows");
+      return table;
+    }
+
+    // Joint number of a row as a 0-based index; must be one of 1..n.
+    int joint_index(const CsvTable &table, const std::string &path, std::size_t row, int n)
+    {
+      const double joint = table.number(row, "joint");
+      if (!(joint >= 1 && joint <= n && joint == std::round(joint)))
+        throw InputError(where(path, row) + "joint " + table.text(row, "joint") +
+                         " is not one of the joints 1.." + std::to_string(n));
+      return static_cast<int>(joint) - 1;
+    }
+
+    double positive_stiffness(const CsvTable &table, const std::string &path, std::size_t row,
+                              const std::string &column)
+    {
+      const double k = table.number(row, column);
+      if (!(std::isfinite(k) && k > 0.0))
+        throw InputError(where(path, row) + column + " = " + table.text(row, column) +
+                         " is not a positive finite stiffness");
+      return k;
+    }
+
+    double finite_number(const CsvTable &table, const std::string &path, std::size_t row,
+                         const std::string &column)
+    {
+      const double v = table.number(row, column);
+      if (!std::isfinite(v))
+        throw InputError(where(path, row) + column + " = " + table.text(row, column) +
+                         " is not a finite number");
+      return v;
+    }
+
+    // Tabulated (pressure, value) pairs of one quantity, as PiecewiseLinear.
+    PiecewiseLinear in_pressure(const std::map<double, double> &table, const std::string &path,
+                                const std::string &what)
+    {
+      if (table.empty())
+        throw InputError(path + ": no value of " + what);
+      std::vector<double> pressures, values;
+      for (const auto &[p, v] : table)
+        {
+          pressures.push_back(p);
+          values.push_back(v);
+        }
+      return PiecewiseLinear(pressures, values);
+    }
+
+    void insert_once(std::map<double, double> &table, double pressure, double value,
+                     const std::string &path, std::size_t row)
+    {
+      if (!table.emplace(pressure, value).second)
+        throw InputError(where(path, row) + "joint listed twice at the same pressure");
+    }
+
+    struct StiffnessTable
+    {
+      std::vector<Eigen::Vector3d> joint_centres;
+      std::vector<Eigen::Vector3d> stiffness;
+    };
+
+    StiffnessTable read_stiffness(const std::string &path, const std::string &column)
+    {
+      if (column != "value" && column != "fit")
+        throw std::invalid_argument("StiffnessFiles: column must be 'value' or 'fit'");
+      const std::string suffix = column == "fit" ? "_fit" : "";
+      const std::vector<std::string> k_columns = {"k_psi" + suffix, "k_theta" + suffix,
+                                                  "k_phi" + suffix};
+      const CsvTable table = read_table(path, {"joint", "Jx", "Jy", "Jz", k_columns[0],
+                                               k_columns[1], k_columns[2]});
+      StiffnessTable result;
+      const int      n = static_cast<int>(table.n_rows());
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          if (joint_index(table, path, row, n) != static_cast<int>(row))
+            throw InputError(where(path, row) + "expected joint " + std::to_string(row + 1) +
+                             ", found " + table.text(row, "joint") +
+                             " (joints must be listed 1..n without gaps)");
+          result.joint_centres.emplace_back(finite_number(table, path, row, "Jx"),
+                                            finite_number(table, path, row, "Jy"),
+                                            finite_number(table, path, row, "Jz"));
+          if (row > 0 && !(result.joint_centres[row].x() > result.joint_centres[row - 1].x()))
+            throw InputError(where(path, row) + "Jx must increase from joint to joint");
+          result.stiffness.emplace_back(positive_stiffness(table, path, row, k_columns[0]),
+                                        positive_stiffness(table, path, row, k_columns[1]),
+                                        positive_stiffness(table, path, row, k_columns[2]));
+        }
+      return result;
+    }
+
+    std::vector<PiecewiseLinear> read_bending_in_pressure(const std::string &path, int n)
+    {
+      const CsvTable table = read_table(path, {"pressure", "joint", "k_phi"});
+      std::vector<std::map<double, double>> per_joint(n);
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          const int joint = joint_index(table, path, row, n);
+          if (std::isnan(table.number(row, "k_phi")))
+            continue; // no value at this pressure (rotation below threshold)
+          insert_once(per_joint[joint], finite_number(table, path, row, "pressure"),
+                      positive_stiffness(table, path, row, "k_phi"), path, row);
+        }
+      std::vector<PiecewiseLinear> result;
+      for (int i = 0; i < n; ++i)
+        result.push_back(in_pressure(per_joint[i], path, "k_phi for joint " + std::to_string(i + 1)));
+      return result;
+    }
+
+    std::vector<PiecewiseLinear> read_pressure_torque(const std::string &path, int n)
+    {
+      const std::vector<std::string> components = {"jp_x", "jp_y", "jp_z"};
+      const CsvTable table = read_table(path, {"pressure", "joint", "jp_x", "jp_y", "jp_z"});
+      std::vector<std::map<double, double>> per_angle(3 * n);
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          const int    joint    = joint_index(table, path, row, n);
+          const double pressure = finite_number(table, path, row, "pressure");
+          for (int c = 0; c < 3; ++c)
+            insert_once(per_angle[3 * joint + c], pressure,
+                        finite_number(table, path, row, components[c]), path, row);
+        }
+      for (int j = 0; j < 3 * n; ++j)
+        if (per_angle[j].count(0.0) == 0)
+          throw InputError(path + ": no rest row (pressure 0) for joint " + std::to_string(j / 3 + 1));
+      std::vector<PiecewiseLinear> result;
+      for (int j = 0; j < 3 * n; ++j)
+        result.push_back(in_pressure(per_angle[j], path, components[j % 3]));
+      return result;
+    }
+
+    PressureActuation actuation_from(std::vector<PiecewiseLinear> torque, bool in_pressure)
+    {
+      Eigen::VectorXd rest(torque.size());
+      for (std::size_t j = 0; j < torque.size(); ++j)
+        rest[j] = torque[j](0.0);
+      PressureActuation actuation(rest);
+      if (in_pressure)
+        actuation.set_torque_in_pressure(std::move(torque));
+      return actuation;
+    }
+  } // namespace
+
+  StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
+                                 const std::string &method, double half_width_fraction)
+  {
+    const std::string base =
+      (std::filesystem::path(stiffness_directory) / label(method, half_width_fraction)).string();
+    stiffness_path_           = base + ".csv";
+    bending_in_pressure_path_ = base + "_kphi_vs_pressure.csv";
+    pressure_torque_path_     = base + "_pressure_torque.csv";
+  }
+
+  std::string StiffnessFiles::label(const std::string &method, double half_width_fraction)
+  {
+    char fraction[32];
+    std::snprintf(fraction, sizeof(fraction), "%.2f", half_width_fraction);
+    return method + "_b" + fraction + "a";
+  }
+
+  bool StiffnessFiles::exist() const { return std::filesystem::exists(stiffness_path_); }
+
+  ChainModel StiffnessFiles::read_model(const std::string &name, const Eigen::Vector3d &tip,
+                                        const std::string &column, bool in_pressure) const
+  {
+    StiffnessTable table = read_stiffness(stiffness_path_, column);
+    const int      n     = static_cast<int>(table.stiffness.size());
+    if (!(tip.x() > table.joint_centres.back().x()))
+      throw InputError(stiffness_path_ + ": the last joint lies beyond the finger's tip");
+    JointStiffness stiffness(std::move(table.stiffness));
+    if (in_pressure)
+      stiffness.set_bending_in_pressure(read_bending_in_pressure(bending_in_pressure_path_, n));
+    return ChainModel(name, KinematicChain(std::move(table.joint_centres), tip),
+                      std::move(stiffness),
+                      actuation_from(read_pressure_torque(pressure_torque_path_, n), in_pressure));
+  }
+} // namespace softchain::chain

@@ -1,0 +1,127 @@
+// Reading the reduction's CSVs into a chain, and the errors for bad files.
+#include <softchain/chain/stiffness_files.h>
+#include <softchain/data/input_error.h>
+
+#include "../data/scratch_directory.h"
+#include "reduction_output.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+using namespace softchain::chain;
+using softchain::chain::testing::UniformReduction;
+using softchain::data::InputError;
+
+namespace
+{
+  const Eigen::Vector3d tip(0.09, 0.0, 0.0);
+
+  // Replaces the stiffness file by the uniform table with `edit` applied to its text.
+  template <typename Edit>
+  void rewrite_stiffness(const StiffnessFiles &files, Edit edit)
+  {
+    std::string text;
+    {
+      std::ifstream in(files.stiffness_path());
+      text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    edit(text);
+    std::ofstream(files.stiffness_path()) << text;
+  }
+
+  void replace(std::string &text, const std::string &from, const std::string &to)
+  {
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+  }
+} // namespace
+
+TEST_CASE("the file label is the method and b as a fraction of a with two decimals")
+{
+  CHECK(StiffnessFiles::label("M2", 0.5) == "M2_b0.50a");
+  CHECK(StiffnessFiles::label("M1", 1.0 / 3.0) == "M1_b0.33a");
+  const StiffnessFiles files("out/stiffness", "M1", 1.0);
+  CHECK(files.pressure_torque_path() == "out/stiffness/M1_b1.00a_pressure_torque.csv");
+}
+
+TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
+{
+  softchain::testing::ScratchDirectory dir("chain_stiffness_files");
+  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const UniformReduction               r;
+  testing::write_reduction(files, r);
+  REQUIRE(files.exist());
+
+  SECTION("value column, constant in pressure")
+  {
+    const ChainModel model = files.read_model("M2", tip, "value", false);
+    CHECK(model.chain().n_joints() == r.n);
+    CHECK(model.chain().joint_centre(3).x() == Approx(3.5 * r.a));
+    CHECK(model.stiffness().diagonal(r.p_max).segment<3>(6) == r.k);
+    CHECK(model.actuation().torque(r.p_max).segment<3>(6) == r.jp * r.p_max);
+  }
+  SECTION("fit column, k_phi and J_p interpolated in pressure")
+  {
+    const ChainModel model = files.read_model("M2", tip, "fit", true);
+    CHECK(model.stiffness().diagonal(0.0)[0] == r.k_fit[0]);
+    // Halfway between the rows at p_max / 2 and p_max: linear interpolation,
+    // exact up to round-off.
+    const double p = 0.75 * r.p_max;
+    CHECK(model.stiffness().diagonal(p)[5] == Approx((1 - r.k_phi_drop * 0.75) * r.k[2]).epsilon(1e-14));
+    CHECK(model.actuation().torque(p)[5] == Approx((1 + r.jp_growth * 0.75) * r.jp[2] * p).epsilon(1e-14));
+    // Below the first pressure with a k_phi value it is held constant.
+    CHECK(model.stiffness().diagonal(0.0)[2] == Approx((1 - r.k_phi_drop * 0.5) * r.k[2]).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("bad stiffness files are input errors naming file and row")
+{
+  softchain::testing::ScratchDirectory dir("chain_bad_stiffness");
+  const StiffnessFiles                 files(dir.path().string(), "M1", 1.0);
+  testing::write_reduction(files, UniformReduction{});
+  const auto error_of = [&](const std::string &column) {
+    try
+      {
+        files.read_model("M1", tip, column, true);
+      }
+    catch (const InputError &e)
+      {
+        return std::string(e.what());
+      }
+    return std::string("no error");
+  };
+  const std::string path = files.stiffness_path();
+
+  SECTION("a missing joint")
+  {
+    rewrite_stiffness(files, [](std::string &t) { replace(t, "\n3,", "\n4,"); });
+    CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 3") && Catch::Contains("expected joint 3"));
+  }
+  SECTION("a negative stiffness")
+  {
+    UniformReduction r;
+    r.k[1] = -0.05;
+    testing::stiffness_table(r).write(path);
+    CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 1") && Catch::Contains("k_theta = -0.05"));
+  }
+  SECTION("a NaN stiffness")
+  {
+    UniformReduction r;
+    r.k_fit[0] = NAN;
+    testing::stiffness_table(r).write(path);
+    CHECK_THAT(error_of("fit"), Catch::Contains(path + ", row 1") && Catch::Contains("k_psi_fit = nan"));
+  }
+  SECTION("a missing column")
+  {
+    rewrite_stiffness(files, [](std::string &t) { replace(t, "k_phi_fit", "kphi_fit"); });
+    CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("missing column 'k_phi_fit'"));
+    CHECK(error_of("value") == "no error"); // the value columns are all there
+  }
+  SECTION("a missing pressure torque file")
+  {
+    std::filesystem::remove(files.pressure_torque_path());
+    CHECK_THAT(error_of("value"), Catch::Contains(files.pressure_torque_path()));
+  }
+}
