@@ -34,16 +34,16 @@ namespace softchain::data
         line.pop_back();
       return line;
     }
-
-    std::string number_text(double value)
-    {
-      if (std::isnan(value))
-        return "nan";
-      char text[32];
-      std::snprintf(text, sizeof(text), "%.17g", value);
-      return text;
-    }
   } // namespace
+
+  std::string CsvTable::cell(double value)
+  {
+    if (std::isnan(value))
+      return "nan";
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.17g", value);
+    return text;
+  }
 
   CsvTable::CsvTable(std::vector<std::string> columns)
     : columns_(std::move(columns))
@@ -106,7 +106,7 @@ namespace softchain::data
   {
     std::vector<std::string> cells;
     for (const double v : values)
-      cells.push_back(number_text(v));
+      cells.push_back(cell(v));
     add_row(cells);
   }
 

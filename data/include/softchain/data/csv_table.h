@@ -21,6 +21,9 @@ namespace softchain::data
 
     void add_row(const std::vector<std::string> &cells);
     void add_row(const std::vector<double> &values);
+    // Added: the text of a number cell as add_row writes it (17 significant
+    // digits, "nan" for NaN), for rows that mix text and numbers.
+    static std::string cell(double value);
 
     // Column index by name; throws InputError naming the file and column.
     std::size_t column(const std::string &name) const;

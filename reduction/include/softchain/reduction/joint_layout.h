@@ -1,0 +1,29 @@
+#pragma once
+// JointLayout: where the chain's spherical joints sit along the finger
+// (ARCHITECTURE.md, "Joints"): joint i = 1..n at x_i = (i - 1/2) a on the
+// long axis x, the base face being x = 0; n = round(L / a) with L the
+// x-extent of the reference mesh unless the .prm fixes n.
+#include <softchain/data/actuation_database.h>
+
+#include <string>
+#include <vector>
+
+namespace softchain::reduction
+{
+  class JointLayout
+  {
+  public:
+    // Throws data::InputError naming `source` when no joint fits.
+    JointLayout(const std::vector<data::Point3> &X, double spacing, int n_requested,
+                const std::string &source);
+
+    int    n_joints() const { return n_joints_; }
+    double spacing() const { return spacing_; }
+    // Reference abscissa x_i of joint i = 1..n.
+    double x(int joint) const { return (joint - 0.5) * spacing_; }
+
+  private:
+    double spacing_;
+    int    n_joints_;
+  };
+} // namespace softchain::reduction

@@ -1,0 +1,36 @@
+#pragma once
+// ReductionParameters: the "subsection Reduction" of a design's .prm file
+// (reduction/README.md lists the entries). Everything else in the file belongs
+// to the other tiers and is ignored here.
+#include <string>
+#include <vector>
+
+namespace softchain::reduction
+{
+  // How a joint's rotation is read from its slab of nodes (paper Sec. III-C).
+  enum class RotationMethod
+  {
+    bounding_box, // M1: frame spanned by the deformed edges of the slab's box
+    affine_fit    // M2: rotation of the polar decomposition of the affine fit
+  };
+
+  // "M1" or "M2", the names used in the .prm file and the CSV file names.
+  std::string method_name(RotationMethod method);
+
+  struct ReductionParameters
+  {
+    double                      joint_spacing = 0.01; // a [m]
+    int                         n_joints      = 0;    // 0: round(L / a)
+    std::vector<double>         slab_half_width_fractions; // b / a
+    std::vector<RotationMethod> methods;
+    double                      rotation_threshold = 0.0; // rad
+    std::vector<std::string>    pressure_roles;           // feed k_phi
+    std::vector<std::string>    lateral_roles;            // feed k_theta
+    std::vector<std::string>    torsion_roles;            // feed k_psi
+    bool                        plots = true;
+
+    // Reads and checks "subsection Reduction" of `prm_path`; throws
+    // data::InputError naming file, line and parameter.
+    static ReductionParameters read(const std::string &prm_path);
+  };
+} // namespace softchain::reduction

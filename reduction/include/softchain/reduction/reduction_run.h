@@ -1,0 +1,34 @@
+#pragma once
+// ReductionRun: `softchain reduce` -- the .prm's subsection Reduction and the
+// database in, the stiffness CSV files (and plots) under
+// <output_dir>/stiffness/ out.
+#include <string>
+
+namespace softchain::reduction
+{
+  struct ReductionSummary
+  {
+    int n_samples_used   = 0; // converged samples reduced
+    int n_failed_skipped = 0; // failed samples skipped (warning)
+    int n_below_threshold = 0; // (sample, joint, axis, method, b) without k (warning)
+    bool plots_drawn      = false;
+  };
+
+  class ReductionRun
+  {
+  public:
+    ReductionRun(std::string prm_path, std::string database_path, std::string output_dir);
+
+    // Throws data::InputError for bad input; prints the warnings to stderr.
+    ReductionSummary run() const;
+
+  private:
+    std::string prm_path_;
+    std::string database_path_;
+    std::string output_dir_;
+  };
+
+  // The command line's entry point: 0 on success; throws data::InputError.
+  int run_reduction(const std::string &prm_path, const std::string &database_path,
+                    const std::string &output_dir);
+} // namespace softchain::reduction

@@ -1,0 +1,45 @@
+#pragma once
+// SampleReduction: one database sample reduced to the chain's variables by
+// one method: per joint the relative angles (psi, theta, phi), the torque
+// tau_i = (J^T f)_i + J_p,i p in the joint frame, J_p,i and the stretches.
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/joint_angles.h>
+#include <softchain/reduction/reduction_parameters.h>
+#include <softchain/reduction/slab_selection.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace softchain::reduction
+{
+  struct JointResult
+  {
+    data::JointAngles angles;
+    Eigen::Vector3d   torque;           // N m, joint frame (x: psi, y: theta, z: phi)
+    Eigen::Vector3d   pressure_torque;  // J_p,i: N m per Pa, joint frame
+    Eigen::Vector3d   stretches;        // principal stretches (M2), NaN for M1
+  };
+
+  class SampleReduction
+  {
+  public:
+    SampleReduction(const data::SampleRecord &sample, const data::MeshRecord &mesh,
+                    const std::vector<SlabSelection> &slabs, RotationMethod method);
+
+    const std::string              &id() const { return id_; }
+    const std::string              &role() const { return role_; }
+    double                          pressure() const { return pressure_; }
+    // Sum of the magnitudes |f_k| of the sample's point forces (N).
+    double                          force_norm() const { return force_norm_; }
+    const std::vector<JointResult> &joints() const { return joints_; }
+
+  private:
+    std::string              id_;
+    std::string              role_;
+    double                   pressure_;
+    double                   force_norm_;
+    std::vector<JointResult> joints_;
+  };
+} // namespace softchain::reduction

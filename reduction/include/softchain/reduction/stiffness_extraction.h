@@ -1,0 +1,56 @@
+#pragma once
+// StiffnessExtraction: the diagonal joint stiffness K_i = diag(k_psi, k_theta,
+// k_phi) from tau_i = K_i (psi_i, theta_i, phi_i)^T (paper Sec. III-C), each
+// axis from the samples whose role feeds it (paper Sec. IV-A: pressure-only
+// samples for k_phi, lateral-force samples for k_theta, torsion samples for
+// k_psi). Per sample k = tau / angle; a rotation with |angle| below the
+// threshold gives no value (NaN, counted), never a huge or infinite one.
+// Per joint and axis:
+//   at the largest load: k of the usable sample with the largest load (the
+//                        paper's choice), loads ordered by pressure first,
+//                        then by force_norm;
+//   fit:                 least squares over the usable samples,
+//                        k = sum(tau angle) / sum(angle^2).
+#include <softchain/reduction/reduction_parameters.h>
+#include <softchain/reduction/sample_reduction.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace softchain::reduction
+{
+  // Axis index: 0 = psi (x, torsion), 1 = theta (y, lateral), 2 = phi (z).
+  double angle_about(const data::JointAngles &angles, int axis);
+
+  struct JointStiffness
+  {
+    Eigen::Vector3d    at_largest_load; // N m / rad, NaN when no usable sample
+    Eigen::Vector3d    fit;             // N m / rad, NaN when no usable sample
+    std::array<int, 3> n_used{{0, 0, 0}};
+  };
+
+  class StiffnessExtraction
+  {
+  public:
+    StiffnessExtraction(const std::vector<SampleReduction> &samples,
+                        const ReductionParameters &parameters, std::size_t n_joints);
+
+    const std::vector<JointStiffness> &joints() const { return joints_; }
+    // Number of (sample, joint, axis) rotations below the threshold.
+    int n_below_threshold() const { return n_below_threshold_; }
+    // tau / angle of one sample, NaN below the threshold.
+    double single(const SampleReduction &sample, std::size_t joint, int axis) const;
+    // Does this sample's role feed the axis?
+    bool feeds(const SampleReduction &sample, int axis) const;
+
+  private:
+    JointStiffness extract_joint(const std::vector<SampleReduction> &samples, std::size_t joint);
+
+    std::array<std::vector<std::string>, 3> roles_;
+    double                                  threshold_;
+    std::vector<JointStiffness>             joints_;
+    int                                     n_below_threshold_ = 0;
+  };
+} // namespace softchain::reduction

@@ -1,0 +1,36 @@
+#pragma once
+// StiffnessPlots: PNG plots like the paper's Fig. 5-7, drawn by gnuplot from
+// the CSV files of StiffnessTables: per method and b, k_phi along x for each
+// pressure (Fig. 5a, 5b, 6); k_phi at the largest pressure for every method
+// and b (Fig. 5c); k_psi (Fig. 5d) and k_theta (Fig. 7) along x. The gnuplot
+// script stiffness/plots.gp is always written; it is run when `gnuplot` is
+// on the PATH.
+#include <string>
+#include <vector>
+
+namespace softchain::reduction
+{
+  class StiffnessPlots
+  {
+  public:
+    // `labels`: the "<M>_b<f>a" of the tables in `directory`; `pressures`:
+    // the distinct pressures of the k_phi samples; `spacing`: a.
+    StiffnessPlots(std::string directory, std::vector<std::string> labels,
+                   std::vector<double> pressures, double spacing);
+
+    std::string script() const;
+    // Writes plots.gp and runs gnuplot on it if installed (its messages go
+    // to plots.log). Returns whether gnuplot ran and succeeded.
+    bool draw() const;
+
+  private:
+    std::string per_pressure_plot(const std::string &label) const;
+    std::string all_labels_plot(const std::string &name, const std::string &column,
+                                const std::string &ylabel) const;
+
+    std::string              directory_;
+    std::vector<std::string> labels_;
+    std::vector<double>      pressures_;
+    double                   spacing_;
+  };
+} // namespace softchain::reduction

@@ -1,0 +1,37 @@
+#pragma once
+// StiffnessTables: the CSV files of one MethodReduction, read by the chain
+// tier (columns documented in reduction/README.md; SI units, "nan" for no
+// value):
+//   <label>.csv                   per joint: reference centre, k at the largest
+//                                 load, least-squares k, samples used
+//   <label>_samples.csv           per sample and joint: angles, torques, stretches
+//   <label>_kphi_vs_pressure.csv  per pressure sample and joint: k_phi
+//   <label>_pressure_torque.csv   J_p per joint at rest (pressure 0) and at
+//                                 each pressure sample
+#include <softchain/data/csv_table.h>
+#include <softchain/reduction/method_reduction.h>
+
+#include <string>
+
+namespace softchain::reduction
+{
+  class StiffnessTables
+  {
+  public:
+    explicit StiffnessTables(const MethodReduction &reduction);
+
+    data::CsvTable stiffness() const;
+    data::CsvTable samples() const;
+    data::CsvTable kphi_vs_pressure() const;
+    data::CsvTable pressure_torque() const;
+
+    // Writes the four files into `directory` (created if missing).
+    void write(const std::string &directory) const;
+
+  private:
+    // The samples fed to k_phi, by increasing pressure.
+    std::vector<const SampleReduction *> pressure_samples() const;
+
+    const MethodReduction &reduction_;
+  };
+} // namespace softchain::reduction

@@ -1,0 +1,75 @@
+// ReductionParameters: declares, reads and checks "subsection Reduction".
+#include <softchain/data/input_error.h>
+#include <softchain/data/prm_file.h>
+#include <softchain/reduction/reduction_parameters.h>
+
+namespace softchain::reduction
+{
+  namespace
+  {
+    void declare(data::PrmSection &section)
+    {
+      section.declare("Joint spacing", "0.01", "a [m]: distance between joints");
+      section.declare("Number of joints", "0", "0: round(L/a), L the x-extent of the mesh");
+      section.declare("Slab half-widths", "1, 0.5, 0.3333333333333333", "b as fractions of a");
+      section.declare("Methods", "M1, M2", "M1: bounding box, M2: affine fit");
+      section.declare("Rotation threshold", "0.0017453292519943296",
+                      "rad: a smaller |angle| gives no stiffness");
+      section.declare("Pressure roles", "pressure", "sample roles feeding k_phi");
+      section.declare("Lateral roles", "lateral", "sample roles feeding k_theta");
+      section.declare("Torsion roles", "torsion", "sample roles feeding k_psi");
+      section.declare("Plots", "true", "PNG plots via gnuplot when it is installed");
+    }
+
+    void require(bool ok, const data::PrmSection &section, const std::string &name,
+                 const std::string &what)
+    {
+      if (!ok)
+        throw data::InputError(section.describe(name) + ": " + what);
+    }
+
+    std::vector<RotationMethod> read_methods(const data::PrmSection &section)
+    {
+      std::vector<RotationMethod> result;
+      for (const auto &name : section.get_list("Methods"))
+        {
+          require(name == "M1" || name == "M2", section, "Methods",
+                  "unknown method '" + name + "' (M1 or M2)");
+          result.push_back(name == "M1" ? RotationMethod::bounding_box :
+                                          RotationMethod::affine_fit);
+        }
+      require(!result.empty(), section, "Methods", "no method given");
+      return result;
+    }
+  } // namespace
+
+  std::string method_name(RotationMethod method)
+  {
+    return method == RotationMethod::bounding_box ? "M1" : "M2";
+  }
+
+  ReductionParameters ReductionParameters::read(const std::string &prm_path)
+  {
+    data::PrmSection section;
+    declare(section);
+    data::PrmFile::read(prm_path).parse_section("Reduction", section);
+
+    ReductionParameters p;
+    p.joint_spacing = section.get_double("Joint spacing");
+    require(p.joint_spacing > 0, section, "Joint spacing", "must be positive");
+    p.n_joints = section.get_integer("Number of joints");
+    require(p.n_joints >= 0, section, "Number of joints", "must be >= 0");
+    p.slab_half_width_fractions = section.get_double_list("Slab half-widths");
+    require(!p.slab_half_width_fractions.empty(), section, "Slab half-widths", "no value given");
+    for (const double f : p.slab_half_width_fractions)
+      require(f > 0, section, "Slab half-widths", "fractions must be positive");
+    p.methods            = read_methods(section);
+    p.rotation_threshold = section.get_double("Rotation threshold");
+    require(p.rotation_threshold >= 0, section, "Rotation threshold", "must be >= 0");
+    p.pressure_roles = section.get_list("Pressure roles");
+    p.lateral_roles  = section.get_list("Lateral roles");
+    p.torsion_roles  = section.get_list("Torsion roles");
+    p.plots          = section.get_bool("Plots");
+    return p;
+  }
+} // namespace softchain::reduction

@@ -1,0 +1,104 @@
+// ReductionRun: parameters + database -> stiffness CSV files and plots.
+#include <softchain/data/actuation_database.h>
+#include <softchain/reduction/joint_layout.h>
+#include <softchain/reduction/method_reduction.h>
+#include <softchain/reduction/reduction_parameters.h>
+#include <softchain/reduction/reduction_run.h>
+#include <softchain/reduction/stiffness_plots.h>
+#include <softchain/reduction/stiffness_tables.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+namespace softchain::reduction
+{
+  namespace
+  {
+    // The converged samples; failed ones are skipped with a warning.
+    std::vector<data::SampleRecord> converged_samples(const data::ActuationDatabase &database,
+                                                      int                           &n_failed)
+    {
+      std::vector<data::SampleRecord> converged;
+      for (const auto &id : database.sample_ids())
+        {
+          data::SampleRecord sample = database.read_sample(id);
+          if (sample.converged())
+            converged.push_back(std::move(sample));
+          else
+            {
+              ++n_failed;
+              std::cerr << "softchain reduce: warning: skipping failed sample '" << id
+                        << "' (" << sample.reason << ")\n";
+            }
+        }
+      return converged;
+    }
+
+    // Distinct pressures of the samples that feed k_phi, increasing.
+    std::vector<double> kphi_pressures(const std::vector<data::SampleRecord> &samples,
+                                       const ReductionParameters             &parameters)
+    {
+      std::vector<double> pressures;
+      const auto         &roles = parameters.pressure_roles;
+      for (const auto &s : samples)
+        if (std::find(roles.begin(), roles.end(), s.actuation.role) != roles.end())
+          pressures.push_back(s.actuation.pressure);
+      std::sort(pressures.begin(), pressures.end());
+      pressures.erase(std::unique(pressures.begin(), pressures.end()), pressures.end());
+      return pressures;
+    }
+  } // namespace
+
+  ReductionRun::ReductionRun(std::string prm_path, std::string database_path,
+                             std::string output_dir)
+    : prm_path_(std::move(prm_path))
+    , database_path_(std::move(database_path))
+    , output_dir_(std::move(output_dir))
+  {}
+
+  ReductionSummary ReductionRun::run() const
+  {
+    const auto parameters = ReductionParameters::read(prm_path_);
+    const auto database   = data::ActuationDatabase::open(database_path_);
+    const JointLayout layout(database.mesh().X, parameters.joint_spacing, parameters.n_joints,
+                             database_path_);
+    ReductionSummary summary;
+    const auto       samples = converged_samples(database, summary.n_failed_skipped);
+    summary.n_samples_used   = static_cast<int>(samples.size());
+    const std::string directory = output_dir_ + "/stiffness";
+    std::filesystem::create_directories(directory);
+    std::vector<std::string> labels;
+    for (const double fraction : parameters.slab_half_width_fractions)
+      for (const auto method : parameters.methods)
+        {
+          const MethodReduction reduction(method, fraction, parameters, layout, database.mesh(),
+                                          samples);
+          StiffnessTables(reduction).write(directory);
+          labels.push_back(reduction.label());
+          summary.n_below_threshold += reduction.stiffness().n_below_threshold();
+        }
+    if (summary.n_below_threshold > 0)
+      std::cerr << "softchain reduce: warning: " << summary.n_below_threshold
+                << " (sample, joint, axis) rotations over all methods and b are below "
+                   "Reduction/Rotation threshold = "
+                << parameters.rotation_threshold << " rad and give no stiffness (nan)\n";
+    if (parameters.plots)
+      {
+        summary.plots_drawn = StiffnessPlots(directory, labels, kphi_pressures(samples, parameters),
+                                             parameters.joint_spacing)
+                                .draw();
+        if (!summary.plots_drawn)
+          std::cerr << "softchain reduce: warning: no PNG plots (gnuplot missing or failed, see "
+                    << directory << "/plots.log); the script is " << directory << "/plots.gp\n";
+      }
+    return summary;
+  }
+
+  int run_reduction(const std::string &prm_path, const std::string &database_path,
+                    const std::string &output_dir)
+  {
+    ReductionRun(prm_path, database_path, output_dir).run();
+    return 0;
+  }
+} // namespace softchain::reduction

@@ -1,0 +1,97 @@
+// StiffnessTables: the CSV files of one (method, b) reduction.
+#include <softchain/reduction/stiffness_tables.h>
+
+#include <algorithm>
+
+namespace softchain::reduction
+{
+  using data::CsvTable;
+
+  StiffnessTables::StiffnessTables(const MethodReduction &reduction)
+    : reduction_(reduction)
+  {}
+
+  std::vector<const SampleReduction *> StiffnessTables::pressure_samples() const
+  {
+    std::vector<const SampleReduction *> selected;
+    for (const auto &sample : reduction_.samples())
+      if (reduction_.stiffness().feeds(sample, 2))
+        selected.push_back(&sample);
+    std::stable_sort(selected.begin(), selected.end(),
+                     [](const SampleReduction *a, const SampleReduction *b) {
+                       return a->pressure() < b->pressure();
+                     });
+    return selected;
+  }
+
+  CsvTable StiffnessTables::stiffness() const
+  {
+    CsvTable table({"joint", "x_ref", "Jx", "Jy", "Jz", "k_psi", "k_theta", "k_phi", "k_psi_fit",
+                    "k_theta_fit", "k_phi_fit", "n_psi", "n_theta", "n_phi"});
+    const auto &joints = reduction_.stiffness().joints();
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      {
+        const SlabSelection  &slab = reduction_.slabs()[i];
+        const Eigen::Vector3d J    = slab.reference_centre();
+        const JointStiffness &k    = joints[i];
+        table.add_row(std::vector<double>{
+          double(slab.joint()), slab.x_joint(), J(0), J(1), J(2), k.at_largest_load(0),
+          k.at_largest_load(1), k.at_largest_load(2), k.fit(0), k.fit(1), k.fit(2),
+          double(k.n_used[0]), double(k.n_used[1]), double(k.n_used[2])});
+      }
+    return table;
+  }
+
+  CsvTable StiffnessTables::samples() const
+  {
+    CsvTable table({"sample", "role", "pressure", "force_norm", "joint", "psi", "theta", "phi",
+                    "tau_x", "tau_y", "tau_z", "stretch_1", "stretch_2", "stretch_3"});
+    for (const auto &sample : reduction_.samples())
+      for (std::size_t i = 0; i < sample.joints().size(); ++i)
+        {
+          const JointResult &r     = sample.joints()[i];
+          std::vector<std::string> cells = {sample.id(), sample.role()};
+          for (const double v :
+               {sample.pressure(), sample.force_norm(), double(i + 1), r.angles.psi, r.angles.theta,
+                r.angles.phi, r.torque(0), r.torque(1), r.torque(2), r.stretches(0),
+                r.stretches(1), r.stretches(2)})
+            cells.push_back(CsvTable::cell(v));
+          table.add_row(cells);
+        }
+    return table;
+  }
+
+  CsvTable StiffnessTables::kphi_vs_pressure() const
+  {
+    CsvTable table({"pressure", "joint", "k_phi"});
+    for (const auto *sample : pressure_samples())
+      for (std::size_t i = 0; i < sample->joints().size(); ++i)
+        table.add_row(std::vector<double>{sample->pressure(), double(i + 1),
+                                          reduction_.stiffness().single(*sample, i, 2)});
+    return table;
+  }
+
+  CsvTable StiffnessTables::pressure_torque() const
+  {
+    CsvTable table({"pressure", "joint", "jp_x", "jp_y", "jp_z"});
+    std::vector<const SampleReduction *> configurations = {&reduction_.rest()};
+    for (const auto *sample : pressure_samples())
+      configurations.push_back(sample);
+    for (const auto *sample : configurations)
+      for (std::size_t i = 0; i < sample->joints().size(); ++i)
+        {
+          const Eigen::Vector3d &jp = sample->joints()[i].pressure_torque;
+          table.add_row(std::vector<double>{sample->pressure(), double(i + 1), jp(0), jp(1), jp(2)});
+        }
+    return table;
+  }
+
+  void StiffnessTables::write(const std::string &directory) const
+  {
+    const std::string stem = directory + "/" + reduction_.label();
+    stiffness().write(stem + ".csv");
+    samples().write(stem + "_samples.csv");
+    kphi_vs_pressure().write(stem + "_kphi_vs_pressure.csv");
+    pressure_torque().write(stem + "_pressure_torque.csv");
+  }
+} // namespace softchain::reduction
