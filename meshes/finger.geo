@@ -24,7 +24,7 @@ DefineConstant[
   h_tip  = {0.012,  Name "tip height"},
   d      = {0.0025, Name "wall thickness"},
   bottom = {0.003,  Name "bottom layer thickness"},
-  fill   = {0.015,  Name "base fill length"},
+  fill   = {0.010,  Name "base fill length"},
   cap    = {0.0025, Name "tip cap thickness"},
   size   = {0.004,  Name "element size"},
   hex    = {0,      Name "hexahedra"}

@@ -2,6 +2,8 @@
 #include <softchain/geometry/cavity_surface.h>
 #include <softchain/geometry/cell_geometry.h>
 
+#include <Eigen/Geometry> // cross products
+
 #include <algorithm>
 #include <map>
 

@@ -1,5 +1,7 @@
 #include <softchain/geometry/cell_geometry.h>
 
+#include <Eigen/Geometry> // cross products
+
 namespace softchain::geometry
 {
   namespace

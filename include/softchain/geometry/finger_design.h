@@ -15,7 +15,7 @@ namespace softchain::geometry
   {
     double fabric_height       = 0.0015; // y of the fabric grid, inside the bottom layer, m
     double fabric_spacing      = 0.002;  // grid spacing of the fabric springs, m
-    double thread_pitch        = 0.004;  // distance between thread rings along x, m
+    double thread_pitch        = 0.005;  // distance between thread rings along x, m
     double thread_node_spacing = 0.002;  // node spacing along a ring, m
   };
 

@@ -19,7 +19,7 @@ namespace softchain::geometry
     double tip_height  = 0.012;  // m, at x = length
     double wall        = 0.0025; // side and top wall thickness, m
     double bottom      = 0.003;  // bottom layer (holds the fabric), m
-    double base_fill   = 0.015;  // solid section at the base, m
+    double base_fill   = 0.010;  // solid section at the base, m
     double tip_cap     = 0.0025; // closed tip, m
 
     double width(double x) const;

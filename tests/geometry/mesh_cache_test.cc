@@ -1,0 +1,57 @@
+// The mesh cache: an unchanged design is meshed once; a change of a mesh
+// parameter meshes again; a change of a spring parameter does not.
+#include <softchain/geometry/generate_design.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "test_files.h"
+
+using namespace softchain::geometry;
+using namespace softchain::geometry::testing;
+
+TEST_CASE("an unchanged design is not meshed twice", "[geometry][cache]")
+{
+  const std::string dir = scratch_directory("cache_reuse");
+  const std::string prm = design_variant("p10", dir, {{"Resolution", "0"}});
+  GmshMesher        mesher(dir + "/cache");
+
+  const GeneratedDesign first = generate_design(FingerDesign::read(prm), mesher);
+  CHECK(mesher.n_runs() == 1);
+  const auto written = std::filesystem::last_write_time(first.mesh_file);
+
+  const GeneratedDesign second = generate_design(FingerDesign::read(prm), mesher);
+  CHECK(mesher.n_runs() == 1);
+  CHECK(second.mesh_file == first.mesh_file);
+  CHECK(second.hash == first.hash);
+  CHECK(std::filesystem::last_write_time(second.mesh_file) == written);
+
+  // The cache lives on disk: a new mesher (a new process) finds it too.
+  GmshMesher later(dir + "/cache");
+  CHECK(generate_design(FingerDesign::read(prm), later).mesh_file == first.mesh_file);
+  CHECK(later.n_runs() == 0);
+}
+
+TEST_CASE("a changed mesh parameter meshes again, a changed spring parameter does not",
+          "[geometry][cache]")
+{
+  const std::string dir = scratch_directory("cache_keys");
+  GmshMesher        mesher(dir + "/cache");
+  const auto        generate = [&](const std::vector<std::pair<std::string, std::string>> &changes) {
+    auto all = changes;
+    all.emplace_back("Resolution", "0");
+    return generate_design(FingerDesign::read(design_variant("p10", dir, all)), mesher);
+  };
+  const GeneratedDesign original = generate({});
+  const GeneratedDesign thicker  = generate({{"Wall thickness", "0.003"}});
+  CHECK(mesher.n_runs() == 2);
+  CHECK(thicker.mesh_file != original.mesh_file);
+  CHECK(thicker.hash != original.hash);
+
+  const GeneratedDesign denser_threads = generate({{"Thread pitch", "0.004"}});
+  CHECK(mesher.n_runs() == 2);
+  CHECK(denser_threads.mesh_file == original.mesh_file);
+  CHECK(denser_threads.hash != original.hash);
+  CHECK(denser_threads.spring_file != original.spring_file);
+}

@@ -1,0 +1,117 @@
+// The three shipped designs, meshed at the coarse resolution with tetrahedra
+// and with hexahedra: volumes against the analytic shape, the cavity closed,
+// the groups present, every spring node inside the silicone.
+#include <softchain/geometry/cavity_surface.h>
+#include <softchain/geometry/cell_geometry.h>
+#include <softchain/geometry/generate_design.h>
+#include <softchain/geometry/mesh_checks.h>
+#include <softchain/geometry/msh_file.h>
+#include <softchain/geometry/point_locator.h>
+#include <softchain/geometry/spring_network_file.h>
+
+#include <Eigen/Geometry> // cross products
+#include <catch2/catch.hpp>
+
+#include "test_files.h"
+
+using namespace softchain::geometry;
+using namespace softchain::geometry::testing;
+
+namespace
+{
+  // Every face of the parametric shapes is planar and gmsh puts the surface
+  // nodes on those planes, so the mesh reproduces the analytic volumes up to
+  // round-off: coordinates carry ~16 significant digits (msh 2.2 text), and
+  // a few thousand facets and cells add ~1e-13 relative. 1e-10 leaves margin
+  // while any misplaced node or missing cell (>= 1e-4 relative) fails.
+  constexpr double planar_volume_tolerance = 1e-10;
+
+  struct Meshed
+  {
+    FingerDesign    design;
+    GeneratedDesign generated;
+    MshFile         mesh;
+  };
+
+  Meshed mesh_design(const std::string &name, const std::string &element_shape)
+  {
+    const std::string dir = scratch_directory("parametric_" + name + "_" + element_shape);
+    const std::string prm =
+      design_variant(name, dir, {{"Resolution", "0"}, {"Element shape", element_shape}});
+    GmshMesher mesher(dir + "/cache");
+    Meshed     m{FingerDesign::read(prm), {}, {}};
+    m.generated = generate_design(m.design, mesher);
+    m.mesh      = MshFile::read(m.generated.mesh_file);
+    return m;
+  }
+} // namespace
+
+TEST_CASE("parametric designs match their analytic volumes", "[geometry][mesh]")
+{
+  const auto name          = GENERATE(as<std::string>{}, "p10", "p13", "parallelepiped");
+  const auto element_shape = GENERATE(as<std::string>{}, "tet", "hex");
+  CAPTURE(name, element_shape);
+  const Meshed            m = mesh_design(name, element_shape);
+  const FingerDimensions &d = m.design.dimensions;
+
+  CHECK(CellGeometry::total_volume(m.mesh) ==
+        Approx(d.material_volume()).epsilon(planar_volume_tolerance));
+  const CavitySurface cavity(m.mesh);
+  CHECK(cavity.enclosed_volume() == Approx(d.cavity_volume()).epsilon(planar_volume_tolerance));
+  // Closed: the area vectors cancel (round-off only, see MeshChecks).
+  CHECK(cavity.area_vector_sum().norm() < 1e-9 * cavity.total_area());
+  CHECK(m.generated.length == d.length);
+
+  const std::size_t corners = element_shape == "hex" ? 8 : 4;
+  for (const auto &cell : m.mesh.cells)
+    REQUIRE(cell.nodes.size() == corners);
+}
+
+TEST_CASE("parametric meshes carry the physical groups", "[geometry][mesh]")
+{
+  const Meshed m = mesh_design("p10", "tet");
+  for (const char *name : {"base", "cavity", "tip"})
+    CHECK(m.mesh.has_group(name, 2));
+  CHECK(m.mesh.has_group("silicone", 3));
+  // base and tip facets lie on x = 0 and x = L.
+  for (const auto &[group, x] : {std::pair{"base", 0.0}, std::pair{"tip", m.design.dimensions.length}})
+    for (const MshElement *facet : m.mesh.facets_of(group))
+      for (const std::size_t n : facet->nodes)
+        REQUIRE(m.mesh.nodes[n].x() == Approx(x).margin(1e-12));
+}
+
+TEST_CASE("cavity triangles point out of the silicone, into the cavity", "[geometry][mesh]")
+{
+  const Meshed            m = mesh_design("parallelepiped", "tet");
+  const FingerDimensions &d = m.design.dimensions;
+  const CavitySurface     cavity(m.mesh);
+  const Eigen::Vector3d   centre(0.5 * (d.cavity_start() + d.cavity_end()),
+                               0.5 * (d.bottom + d.base_height - d.wall), 0.0);
+  // The cavity is a box: each inward facet normal points toward its centre.
+  for (const auto &t : cavity.triangles())
+    {
+      const Eigen::Vector3d x0 = m.mesh.nodes[t[0]];
+      const Eigen::Vector3d n  = (m.mesh.nodes[t[1]] - x0).cross(m.mesh.nodes[t[2]] - x0);
+      REQUIRE(n.dot(centre - x0) > 0.0);
+    }
+}
+
+TEST_CASE("every spring node lies inside the silicone of the mesh", "[geometry][springs]")
+{
+  const auto name = GENERATE(as<std::string>{}, "p10", "p13", "parallelepiped");
+  CAPTURE(name);
+  const Meshed m        = mesh_design(name, "tet");
+  const auto   networks = SpringNetworkFile::read(m.generated.spring_file);
+  REQUIRE(networks.size() == 2);
+  const PointLocator locator(m.mesh);
+  for (const auto &network : networks)
+    {
+      CHECK(network.n_nodes() > 0);
+      for (const auto &polyline : network.polylines)
+        for (const auto &p : polyline.points)
+          {
+            REQUIRE(m.design.dimensions.material_margin(p) > 0.0);
+            REQUIRE(locator.locate(p).has_value());
+          }
+    }
+}
