@@ -1,0 +1,38 @@
+#pragma once
+// TipPoseFit: the FEM tip frame, fitted to the nodes of the tip face.
+// Position: centroid of the deformed tip nodes. Rotation: the best-fit
+// rotation of the centred reference onto the centred deformed nodes,
+//   R = argmin sum_j |(x_j - x_c) - R (X_j - X_c)|^2        (Kabsch, 1976)
+// from the SVD H = sum_j (X_j - X_c)(x_j - x_c)^T = U S V^T as
+//   R = V diag(1, 1, det(V U^T)) U^T.
+// The tip nodes are coplanar, so H has rank 2: a rotation is still
+// determined (the sign fix picks the proper one), an affine fit would not be.
+#include <Eigen/Core>
+#include <vector>
+
+namespace softchain::chain
+{
+  struct TipPose
+  {
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  };
+
+  class TipPoseFit
+  {
+  public:
+    // Reference tip nodes: at least 3, not collinear (std::invalid_argument).
+    explicit TipPoseFit(const std::vector<Eigen::Vector3d> &reference_nodes);
+
+    const Eigen::Vector3d &reference_centroid() const { return centroid_; }
+    // Pose of the same nodes, deformed (same count and order).
+    TipPose fit(const std::vector<Eigen::Vector3d> &deformed_nodes) const;
+
+  private:
+    Eigen::Vector3d              centroid_;
+    std::vector<Eigen::Vector3d> centred_;
+  };
+
+  // Angle of the rotation that takes `a` to `b` (rad, in [0, pi]).
+  double rotation_angle_between(const Eigen::Matrix3d &a, const Eigen::Matrix3d &b);
+} // namespace softchain::chain
