@@ -47,7 +47,9 @@ namespace softchain::geometry
       section.declare("Shape", "p10", "p10 | p13 | parallelepiped | stl");
       section.declare("Resolution", "1", "0 coarse (tests), 1 default, 2 fine");
       section.declare("Element shape", "tet", "tet | hex (hex: parametric shapes only)");
-      section.declare("Mesh sizes", "0.008, 0.004, 0.0018",
+      const auto sizes = FingerDesign().mesh_sizes;
+      section.declare("Mesh sizes",
+                      number(sizes[0]) + ", " + number(sizes[1]) + ", " + number(sizes[2]),
                       "largest element size (m) at resolution 0, 1, 2");
       for (const auto &[name, member] : dimension_entries)
         section.declare(name, number(FingerDimensions().*member), "m");
@@ -93,7 +95,7 @@ namespace softchain::geometry
       const std::vector<double> sizes = section.get_double_list("Mesh sizes");
       require(sizes.size() == 3 && *std::min_element(sizes.begin(), sizes.end()) > 0.0, section,
               "Mesh sizes", "expected three positive sizes (resolution 0, 1, 2)");
-      design.mesh_size = sizes[design.resolution];
+      std::copy(sizes.begin(), sizes.end(), design.mesh_sizes.begin());
     }
 
     void check_cavity_fits(const PrmSection &section, const FingerDimensions &d)

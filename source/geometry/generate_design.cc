@@ -21,7 +21,7 @@ namespace softchain::geometry
       job.numbers = {{"L", d.length},          {"w_base", d.base_width}, {"h_base", d.base_height},
                      {"w_tip", d.tip_width},   {"h_tip", d.tip_height},  {"d", d.wall},
                      {"bottom", d.bottom},     {"fill", d.base_fill},    {"cap", d.tip_cap},
-                     {"size", design.mesh_size}, {"hex", design.hexahedra ? 1.0 : 0.0}};
+                     {"size", design.mesh_size()}, {"hex", design.hexahedra ? 1.0 : 0.0}};
       return job;
     }
 

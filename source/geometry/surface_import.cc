@@ -51,15 +51,15 @@ namespace softchain::geometry
     const StlFile side = triangles_on_plane(
       triangles_on_plane(outer, s.base_x, s.plane_tolerance, false), s.tip_x, s.plane_tolerance, false);
     // One level for all pieces of the outer surface keeps them conforming.
-    const int outer_levels = levels(outer, design.mesh_size);
+    const int outer_levels = levels(outer, design.mesh_size());
     GmshJob   job;
     job.name    = design.source;
     job.script  = GmshJob::bundled_script("surface_import.geo");
-    job.numbers = {{"size", design.mesh_size}};
+    job.numbers = {{"size", design.mesh_size()}};
     job.files   = {{"outer_side.stl", side.subdivided(outer_levels).ascii_text()},
                    {"base.stl", base.subdivided(outer_levels).ascii_text()},
                    {"tip.stl", tip.subdivided(outer_levels).ascii_text()},
-                   {"cavity.stl", cavity.subdivided(levels(cavity, design.mesh_size)).ascii_text()}};
+                   {"cavity.stl", cavity.subdivided(levels(cavity, design.mesh_size())).ascii_text()}};
     return job;
   }
 } // namespace softchain::geometry

@@ -36,7 +36,7 @@ TEST_CASE("the resolution picks the mesh size", "[geometry][prm]")
   const auto        size_at = [&](const char *resolution) {
     return FingerDesign::read(design_variant("p10", dir, {{"Resolution", resolution},
                                                           {"Mesh sizes", "0.01, 0.005, 0.002"}}))
-      .mesh_size;
+      .mesh_size();
   };
   CHECK(size_at("0") == 0.01);
   CHECK(size_at("1") == 0.005);

@@ -6,6 +6,7 @@
 // found on the planes x = Base plane x and x = Tip plane x).
 #include <softchain/geometry/finger_dimensions.h>
 
+#include <array>
 #include <string>
 
 namespace softchain::geometry
@@ -41,12 +42,13 @@ namespace softchain::geometry
     std::string      shape;       // p10 | p13 | parallelepiped | stl
     int              resolution = 1; // 0 coarse, 1 default, 2 fine
     bool             hexahedra  = false;
-    double           mesh_size  = 0.004; // m, from "Mesh sizes" and the resolution
+    std::array<double, 3> mesh_sizes{0.008, 0.004, 0.0018}; // m, per resolution
     FingerDimensions dimensions;
     SpringLayout     springs;
     SurfaceDesign    surface;
 
     bool   parametric() const { return shape != "stl"; }
+    double mesh_size() const { return mesh_sizes.at(resolution); } // m
     double length() const; // tip abscissa minus base abscissa
   };
 } // namespace softchain::geometry

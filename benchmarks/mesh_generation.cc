@@ -1,0 +1,66 @@
+// Mesh generation benchmark (issue 3): for each shipped design, element shape
+// and resolution, the time of generate_design() with an empty cache (gmsh
+// runs) and with a warm cache (read + mesh checks only), and the sizes of the
+// mesh and of the spring networks. Prints a Markdown table.
+//
+//   mesh_generation [CACHE_DIR]     (default /tmp/softchain_mesh_benchmark, emptied first)
+#include <softchain/geometry/cavity_surface.h>
+#include <softchain/geometry/generate_design.h>
+#include <softchain/geometry/msh_file.h>
+#include <softchain/geometry/spring_network_file.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+using namespace softchain::geometry;
+
+namespace
+{
+  double seconds_of(GeneratedDesign &result, const FingerDesign &design, GmshMesher &mesher)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    result           = generate_design(design, mesher);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  std::size_t spring_nodes(const std::string &spring_file)
+  {
+    std::size_t n = 0;
+    for (const auto &network : SpringNetworkFile::read(spring_file))
+      n += network.n_nodes();
+    return n;
+  }
+
+  void row(const std::string &name, bool hexahedra, int resolution, const std::string &cache_dir)
+  {
+    FingerDesign design = FingerDesign::read(std::string(SOFTCHAIN_SOURCE_DIR) + "/parameter_files/" +
+                                             name + ".prm");
+    design.hexahedra  = hexahedra;
+    design.resolution = resolution;
+    GmshMesher      mesher(cache_dir);
+    GeneratedDesign result;
+    const double    cold = seconds_of(result, design, mesher);
+    const double    warm = seconds_of(result, design, mesher);
+    const MshFile   mesh = MshFile::read(result.mesh_file);
+    std::printf("| %-14s | %-3s | %d | %6.4f | %7zu | %6zu | %6zu | %5zu | %6.2f | %6.2f |\n",
+                name.c_str(), hexahedra ? "hex" : "tet", resolution, design.mesh_size(),
+                mesh.cells.size(), mesh.nodes.size(), CavitySurface(mesh).triangles().size(),
+                spring_nodes(result.spring_file), cold, warm);
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  const std::string cache_dir = argc > 1 ? argv[1] : "/tmp/softchain_mesh_benchmark";
+  std::filesystem::remove_all(cache_dir);
+  std::printf("| design | element | res | size (m) | cells | nodes | cavity triangles | spring nodes "
+              "| cold (s) | cached (s) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const char *name : {"p10", "p13", "parallelepiped"})
+    for (const bool hexahedra : {false, true})
+      for (int resolution = 0; resolution <= 2; ++resolution)
+        row(name, hexahedra, resolution, cache_dir);
+  return 0;
+}
