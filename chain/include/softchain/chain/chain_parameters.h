@@ -1,0 +1,34 @@
+#pragma once
+// ChainParameters: the chain tier's subsection of the design's .prm file
+// (other subsections belong to the other tiers and are ignored here):
+//   subsection Chain
+//     set Stiffness method = M2                  # M1 | M2: which reduction
+//     set Slab half-width = 0.5                  # b / a: selects the CSV
+//     set Stiffness column = value               # value | fit
+//     set Interpolate k_phi in pressure = true   # k_phi(p) and J_p(p) tables
+//     set Validation roles = validation, pressure
+//     set Baseline Young's modulus = 2.6e5       # Pa, beam-theory baseline
+//     set Newton tolerance = 1e-10               # relative residual
+//     set Maximum Newton iterations = 50
+//   end
+// Bad values are InputErrors naming file, line and parameter.
+#include <softchain/chain/chain_equilibrium.h>
+
+#include <string>
+#include <vector>
+
+namespace softchain::chain
+{
+  struct ChainParameters
+  {
+    std::string              method              = "M2";
+    double                   half_width_fraction = 0.5;
+    std::string              stiffness_column    = "value";
+    bool                     in_pressure         = true;
+    std::vector<std::string> validation_roles    = {"validation", "pressure"};
+    double                   baseline_youngs_modulus = 2.6e5;
+    EquilibriumSettings      newton;
+
+    static ChainParameters read(const std::string &prm_path);
+  };
+} // namespace softchain::chain

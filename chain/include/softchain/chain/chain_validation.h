@@ -1,0 +1,59 @@
+#pragma once
+// ChainValidation: the point of the pipeline (issue 6, paper Sec. IV-B):
+// the chain's tip pose against the FEM tip pose for database samples that
+// were not (all) used in the extraction. Per sample and model: tip position
+// error |x_chain - x_FEM| (mm and % of the finger length L) and orientation
+// error angle(R_chain^T R_FEM) (deg), where the FEM pose is the TipPoseFit of
+// the tip-face nodes and the chain's is its tip point and last link frame.
+// Summaries per model and sample role (and over all roles): max and mean.
+#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/csv_table.h>
+
+#include <string>
+#include <vector>
+
+namespace softchain::chain
+{
+  struct ValidationRecord
+  {
+    std::string sample, role, model;
+    double      pressure          = 0.0;
+    double      force_norm        = 0.0; // N, sum of |f_k|
+    double      position_error    = 0.0; // m (NaN if the chain failed)
+    double      orientation_error = 0.0; // rad (NaN if the chain failed)
+    int         iterations        = 0;
+    std::string status;                  // "converged" or the chain's failure
+  };
+
+  class ChainValidation
+  {
+  public:
+    // Reads the FEM tip pose of every converged sample whose role is listed;
+    // the database must have tip nodes (InputError otherwise).
+    ChainValidation(const data::ActuationDatabase &database,
+                    const std::vector<std::string> &roles, double finger_length);
+
+    std::size_t n_samples() const { return samples_.size(); }
+    // Solves every sample with `model` and records the errors.
+    void compare(const ChainModel &model, const EquilibriumSettings &settings);
+
+    const std::vector<ValidationRecord> &records() const { return records_; }
+    int                                  n_failed() const;
+    data::CsvTable                       per_sample_table() const;
+    data::CsvTable                       summary_table() const;
+
+  private:
+    struct FemSample
+    {
+      std::string id, role;
+      ChainLoad   load;
+      TipPose     tip;
+    };
+
+    std::vector<FemSample>        samples_;
+    double                        finger_length_;
+    std::vector<ValidationRecord> records_;
+  };
+} // namespace softchain::chain

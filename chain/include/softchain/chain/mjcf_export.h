@@ -1,0 +1,48 @@
+#pragma once
+// MjcfExport: the chain as a MuJoCo model (MJCF XML) for multi-body and grasp
+// simulation. Each spherical joint becomes three hinges in one body, axes
+// x, y, z in this order: MuJoCo composes the joints of a body as successive
+// rotations about their axes in the body's current frame, so the body's
+// rotation is Rx(q1) Ry(q2) Rz(q3) = E(psi, theta, phi), the chain's Euler
+// convention, and the hinge springs -k q give exactly the energy
+// 1/2 q^T K q of the diagonal K. Bodies sit at the joint centres, each link
+// is a capsule from its joint to the next joint (the last one to the tip,
+// marked by the site "tip"). Pressure is one actuator: a fixed tendon with
+// the rest J_p as joint coefficients, driven by a motor whose control is the
+// pressure in Pa (joint torque = J_p p). Hinge damping c = k * damping_time
+// makes MuJoCo's Euler step (implicit in damping) stable for timestep
+// < 2 c / k = 2 damping_time whatever the link inertia; the model uses
+// damping_time / 10. MJCF has one K and one J_p: the CSV's values and the
+// rest row, not the pressure tables.
+#include <softchain/chain/chain_model.h>
+
+#include <string>
+
+namespace softchain::chain
+{
+  struct MjcfOptions
+  {
+    double link_radius  = 0.005; // m, capsule radius
+    double density      = 1070;  // kg/m^3, silicone rubber
+    double damping_time = 0.01;  // s, hinge damping / stiffness
+    double max_pressure = 0.0;   // Pa, control range of the pressure (0: unlimited)
+  };
+
+  class MjcfExport
+  {
+  public:
+    MjcfExport(const ChainModel &model, MjcfOptions options);
+
+    std::string text() const;
+    // Writes the model to `path` (parent directories created); InputError
+    // naming the file if it cannot be written.
+    void write(const std::string &path) const;
+
+  private:
+    std::string body(int i) const;
+    std::string pressure_actuator() const;
+
+    const ChainModel &model_;
+    MjcfOptions       options_;
+  };
+} // namespace softchain::chain

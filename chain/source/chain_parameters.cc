@@ -1,0 +1,56 @@
+#include <softchain/chain/chain_parameters.h>
+#include <softchain/data/input_error.h>
+#include <softchain/data/prm_file.h>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    void declare(data::PrmSection &section)
+    {
+      section.declare("Stiffness method", "M2", "M1 (bounding box) or M2 (affine fit)");
+      section.declare("Slab half-width", "0.5", "b / a of the stiffness CSV to use");
+      section.declare("Stiffness column", "value", "value (largest load) or fit (least squares)");
+      section.declare("Interpolate k_phi in pressure", "true",
+                      "k_phi and J_p follow their pressure tables");
+      section.declare("Validation roles", "validation, pressure",
+                      "roles of the database samples compared with the chain");
+      section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");
+      section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
+      section.declare("Maximum Newton iterations", "50", "per equilibrium");
+    }
+
+    void require(bool ok, const data::PrmSection &section, const std::string &name,
+                 const std::string &what)
+    {
+      if (!ok)
+        throw data::InputError(section.describe(name) + ": " + what);
+    }
+  } // namespace
+
+  ChainParameters ChainParameters::read(const std::string &prm_path)
+  {
+    data::PrmSection section;
+    declare(section);
+    data::PrmFile::read(prm_path).parse_section("Chain", section);
+
+    ChainParameters p;
+    p.method = section.get("Stiffness method");
+    require(p.method == "M1" || p.method == "M2", section, "Stiffness method",
+            "'" + p.method + "' is neither M1 nor M2");
+    p.half_width_fraction = section.get_double("Slab half-width");
+    require(p.half_width_fraction > 0, section, "Slab half-width", "must be positive");
+    p.stiffness_column = section.get("Stiffness column");
+    require(p.stiffness_column == "value" || p.stiffness_column == "fit", section,
+            "Stiffness column", "'" + p.stiffness_column + "' is neither value nor fit");
+    p.in_pressure      = section.get_bool("Interpolate k_phi in pressure");
+    p.validation_roles = section.get_list("Validation roles");
+    p.baseline_youngs_modulus = section.get_double("Baseline Young's modulus");
+    require(p.baseline_youngs_modulus > 0, section, "Baseline Young's modulus", "must be positive");
+    p.newton.tolerance = section.get_double("Newton tolerance");
+    require(p.newton.tolerance > 0, section, "Newton tolerance", "must be positive");
+    p.newton.max_iterations = section.get_integer("Maximum Newton iterations");
+    require(p.newton.max_iterations >= 1, section, "Maximum Newton iterations", "must be >= 1");
+    return p;
+  }
+} // namespace softchain::chain

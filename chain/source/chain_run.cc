@@ -1,0 +1,139 @@
+#include <softchain/chain/beam_theory_baseline.h>
+#include <softchain/chain/chain_parameters.h>
+#include <softchain/chain/chain_run.h>
+#include <softchain/chain/chain_validation.h>
+#include <softchain/chain/mjcf_export.h>
+#include <softchain/chain/stiffness_files.h>
+#include <softchain/chain/validation_plot.h>
+
+#include <softchain/data/input_error.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    // Reference extent of the mesh: (min, max) corner of the bounding box.
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> bounding_box(const data::MeshRecord &mesh)
+    {
+      Eigen::Vector3d low  = Eigen::Vector3d::Constant(INFINITY);
+      Eigen::Vector3d high = -low;
+      for (const data::Point3 &p : mesh.X)
+        {
+          const Eigen::Vector3d x(p[0], p[1], p[2]);
+          low  = low.cwiseMin(x);
+          high = high.cwiseMax(x);
+        }
+      return {low, high};
+    }
+
+    // Tip point: reference centroid of the tip-face nodes.
+    Eigen::Vector3d tip_point(const data::ActuationDatabase &database)
+    {
+      const data::MeshRecord &mesh = database.mesh();
+      if (mesh.tip_nodes.empty())
+        throw data::InputError(database.path() + ": /mesh/tip_nodes is empty: no tip for the chain");
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (const std::int64_t i : mesh.tip_nodes)
+        sum += Eigen::Vector3d(mesh.X.at(i)[0], mesh.X.at(i)[1], mesh.X.at(i)[2]);
+      return sum / static_cast<double>(mesh.tip_nodes.size());
+    }
+
+    // M1 and M2 (the selected one required, the other if present).
+    std::vector<ChainModel> read_models(const std::string &directory, const ChainParameters &p,
+                                        const Eigen::Vector3d &tip)
+    {
+      std::vector<ChainModel> models;
+      for (const std::string method : {"M1", "M2"})
+        {
+          const StiffnessFiles files(directory, method, p.half_width_fraction);
+          if (method == p.method || files.exist())
+            models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure));
+          else
+            std::cout << "chain: no " << files.stiffness_path() << ", " << method << " skipped\n";
+        }
+      return models;
+    }
+
+    ChainModel baseline_of(const ChainModel &selected, const data::MeshRecord &mesh, double E)
+    {
+      std::vector<double> joint_x;
+      for (int i = 0; i < selected.chain().n_joints(); ++i)
+        joint_x.push_back(selected.chain().joint_centre(i).x());
+      return ChainModel("baseline", selected.chain(), BeamTheoryBaseline(mesh, joint_x).stiffness(E),
+                        selected.actuation());
+    }
+
+    double max_pressure(const data::ActuationDatabase &database)
+    {
+      double p = 0.0;
+      for (const std::string &id : database.sample_ids())
+        p = std::max(p, database.read_sample(id).actuation.pressure);
+      return p;
+    }
+
+    void export_model(const ChainModel &model, const data::ActuationDatabase &database,
+                      const std::string &path)
+    {
+      const auto  box = bounding_box(database.mesh());
+      MjcfOptions options;
+      // Capsules as thick as the finger's thinner dimension (height or width).
+      options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
+      options.max_pressure = max_pressure(database);
+      MjcfExport(model, options).write(path);
+      std::cout << "chain: MuJoCo model " << path << "\n";
+    }
+
+    void report(const ChainValidation &validation, const std::string &directory)
+    {
+      const data::CsvTable summary = validation.summary_table();
+      std::cout.precision(3);
+      for (std::size_t r = 0; r < summary.n_rows(); ++r)
+        std::cout << "chain: " << summary.text(r, "model") << " on " << summary.text(r, "roles")
+                  << ": tip error max " << summary.number(r, "max_tip_error_percent_L")
+                  << " % of L, mean " << summary.number(r, "mean_tip_error_percent_L")
+                  << " %; orientation max " << summary.number(r, "max_orientation_error_deg")
+                  << " deg (" << summary.text(r, "n_samples") << " samples, "
+                  << summary.text(r, "n_failed") << " failed)\n";
+      for (const ValidationRecord &r : validation.records())
+        if (r.status != "converged")
+          std::cerr << "chain: " << r.model << " failed on sample " << r.sample << ": " << r.status
+                    << "\n";
+      std::cout << "chain: tables in " << directory << "\n";
+    }
+  } // namespace
+
+  int run_chain(const std::string &prm_path, const std::string &database_path,
+                const std::string &output_dir, bool export_mjcf)
+  {
+    const ChainParameters          p        = ChainParameters::read(prm_path);
+    const data::ActuationDatabase  database = data::ActuationDatabase::open(database_path);
+    const data::MeshRecord        &mesh     = database.mesh();
+    const std::string stiffness_dir = (std::filesystem::path(output_dir) / "stiffness").string();
+    const std::string chain_dir     = (std::filesystem::path(output_dir) / "chain").string();
+
+    std::vector<ChainModel> models = read_models(stiffness_dir, p, tip_point(database));
+    const ChainModel        selected =
+      *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
+    if (export_mjcf)
+      export_model(selected, database, chain_dir + "/finger.xml");
+    models.push_back(baseline_of(selected, mesh, p.baseline_youngs_modulus));
+
+    const auto      box = bounding_box(mesh);
+    ChainValidation validation(database, p.validation_roles, box.second.x() - box.first.x());
+    for (const ChainModel &model : models)
+      validation.compare(model, p.newton);
+    validation.per_sample_table().write(chain_dir + "/validation.csv");
+    validation.summary_table().write(chain_dir + "/validation_summary.csv");
+    std::vector<std::string> names;
+    for (const ChainModel &model : models)
+      names.push_back(model.name());
+    if (!ValidationPlot(chain_dir, names).draw())
+      std::cout << "chain: gnuplot not available, validation.png not drawn (script validation.gp)\n";
+    report(validation, chain_dir);
+    return validation.n_failed() > 0 ? 2 : 0;
+  }
+} // namespace softchain::chain

@@ -1,0 +1,160 @@
+#include <softchain/chain/chain_validation.h>
+#include <softchain/data/input_error.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    using data::CsvTable;
+
+    Eigen::Vector3d vector_of(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
+
+    std::vector<Eigen::Vector3d> nodes_of(const std::vector<data::Point3>  &x,
+                                          const std::vector<std::int64_t> &indices)
+    {
+      std::vector<Eigen::Vector3d> nodes;
+      for (const std::int64_t i : indices)
+        nodes.push_back(vector_of(x.at(i)));
+      return nodes;
+    }
+
+    ChainLoad load_of(const data::Actuation &actuation)
+    {
+      ChainLoad load{actuation.pressure, {}};
+      for (const data::PointForce &f : actuation.point_forces)
+        load.point_loads.push_back({vector_of(f.point), vector_of(f.force)});
+      return load;
+    }
+
+    double force_norm(const ChainLoad &load)
+    {
+      double sum = 0.0;
+      for (const PointLoad &p : load.point_loads)
+        sum += p.force.norm();
+      return sum;
+    }
+
+    double degrees(double radians) { return radians * 180.0 / M_PI; }
+
+    // Max and mean of the errors of `records` that converged.
+    struct ErrorStatistics
+    {
+      int    n = 0, failed = 0;
+      double max_position = 0, mean_position = 0, max_orientation = 0, mean_orientation = 0;
+    };
+
+    ErrorStatistics statistics(const std::vector<const ValidationRecord *> &records)
+    {
+      ErrorStatistics s;
+      for (const ValidationRecord *r : records)
+        {
+          if (r->status != "converged")
+            {
+              ++s.failed;
+              continue;
+            }
+          ++s.n;
+          s.max_position = std::max(s.max_position, r->position_error);
+          s.max_orientation = std::max(s.max_orientation, r->orientation_error);
+          s.mean_position += r->position_error;
+          s.mean_orientation += r->orientation_error;
+        }
+      s.mean_position    = s.n ? s.mean_position / s.n : NAN;
+      s.mean_orientation = s.n ? s.mean_orientation / s.n : NAN;
+      return s;
+    }
+  } // namespace
+
+  ChainValidation::ChainValidation(const data::ActuationDatabase  &database,
+                                   const std::vector<std::string> &roles, double finger_length)
+    : finger_length_(finger_length)
+  {
+    const data::MeshRecord &mesh = database.mesh();
+    if (mesh.tip_nodes.empty())
+      throw data::InputError(database.path() + ": /mesh/tip_nodes is empty, no FEM tip pose to compare with");
+    const TipPoseFit fit(nodes_of(mesh.X, mesh.tip_nodes));
+    for (const std::string &id : database.sample_ids())
+      {
+        const data::SampleRecord sample = database.read_sample(id);
+        const std::string       &role   = sample.actuation.role;
+        if (!sample.converged() || std::find(roles.begin(), roles.end(), role) == roles.end())
+          continue;
+        samples_.push_back({id, role, load_of(sample.actuation),
+                            fit.fit(nodes_of(sample.x, mesh.tip_nodes))});
+      }
+  }
+
+  void ChainValidation::compare(const ChainModel &model, const EquilibriumSettings &settings)
+  {
+    ChainEquilibrium solver(model, settings);
+    for (const FemSample &s : samples_)
+      {
+        const Equilibrium e = solver.solve(s.load);
+        ValidationRecord  r{s.id, s.role, model.name(), s.load.pressure, force_norm(s.load),
+                            NAN, NAN, e.iterations, e.converged ? "converged" : e.failure};
+        if (e.converged)
+          {
+            const ChainPose &pose = solver.pose();
+            r.position_error      = (pose.tip_position - s.tip.position).norm();
+            r.orientation_error =
+              rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
+          }
+        records_.push_back(r);
+      }
+  }
+
+  int ChainValidation::n_failed() const
+  {
+    return static_cast<int>(std::count_if(records_.begin(), records_.end(), [](const auto &r) {
+      return r.status != "converged";
+    }));
+  }
+
+  CsvTable ChainValidation::per_sample_table() const
+  {
+    CsvTable table({"sample_index", "sample", "role", "pressure", "force_norm", "model",
+                    "tip_error_mm", "tip_error_percent_L", "orientation_error_deg",
+                    "chain_iterations", "chain_status"});
+    for (std::size_t i = 0; i < records_.size(); ++i)
+      {
+        const ValidationRecord &r = records_[i];
+        table.add_row({CsvTable::cell(double(i % samples_.size() + 1)), r.sample, r.role,
+                       CsvTable::cell(r.pressure), CsvTable::cell(r.force_norm), r.model,
+                       CsvTable::cell(1e3 * r.position_error),
+                       CsvTable::cell(100.0 * r.position_error / finger_length_),
+                       CsvTable::cell(degrees(r.orientation_error)),
+                       CsvTable::cell(double(r.iterations)), r.status});
+      }
+    return table;
+  }
+
+  CsvTable ChainValidation::summary_table() const
+  {
+    CsvTable table({"model", "roles", "n_samples", "n_failed", "max_tip_error_mm",
+                    "mean_tip_error_mm", "max_tip_error_percent_L", "mean_tip_error_percent_L",
+                    "max_orientation_error_deg", "mean_orientation_error_deg"});
+    std::vector<std::pair<std::string, std::string>> groups; // (model, role or "all")
+    for (const ValidationRecord &r : records_)
+      for (const std::string &role : {r.role, std::string("all")})
+        if (std::find(groups.begin(), groups.end(), std::make_pair(r.model, role)) == groups.end())
+          groups.emplace_back(r.model, role);
+    for (const auto &[model, role] : groups)
+      {
+        std::vector<const ValidationRecord *> members;
+        for (const ValidationRecord &r : records_)
+          if (r.model == model && (role == "all" || r.role == role))
+            members.push_back(&r);
+        const ErrorStatistics s = statistics(members);
+        table.add_row({model, role, CsvTable::cell(s.n), CsvTable::cell(s.failed),
+                       CsvTable::cell(1e3 * s.max_position), CsvTable::cell(1e3 * s.mean_position),
+                       CsvTable::cell(100 * s.max_position / finger_length_),
+                       CsvTable::cell(100 * s.mean_position / finger_length_),
+                       CsvTable::cell(degrees(s.max_orientation)),
+                       CsvTable::cell(degrees(s.mean_orientation))});
+      }
+    return table;
+  }
+} // namespace softchain::chain

@@ -1,0 +1,119 @@
+#include <softchain/chain/mjcf_export.h>
+#include <softchain/data/input_error.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    std::string triple(const Eigen::Vector3d &v)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << v.x() << " " << v.y() << " " << v.z();
+      return s.str();
+    }
+
+    std::string number(double v)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << v;
+      return s.str();
+    }
+
+    const char *axis_names[3] = {"psi", "theta", "phi"};
+    const char *axis_vectors[3] = {"1 0 0", "0 1 0", "0 0 1"};
+
+    std::string joint_name(int i, int axis)
+    {
+      return "joint" + std::to_string(i + 1) + "_" + axis_names[axis];
+    }
+  } // namespace
+
+  MjcfExport::MjcfExport(const ChainModel &model, MjcfOptions options)
+    : model_(model)
+    , options_(options)
+  {}
+
+  // Body of link i (nested: the XML of the distal links inside).
+  std::string MjcfExport::body(int i) const
+  {
+    const KinematicChain &chain = model_.chain();
+    const bool            last  = i + 1 == chain.n_joints();
+    const Eigen::Vector3d to_next =
+      (last ? chain.tip() : chain.joint_centre(i + 1)) - chain.joint_centre(i);
+    const Eigen::Vector3d offset =
+      i == 0 ? chain.joint_centre(0) : Eigen::Vector3d(chain.joint_centre(i) - chain.joint_centre(i - 1));
+    const std::string indent(2 * i + 4, ' ');
+    std::ostringstream s;
+    s << indent << "<body name=\"link" << i + 1 << "\" pos=\"" << triple(offset) << "\">\n";
+    for (int axis = 0; axis < 3; ++axis)
+      {
+        const double k = model_.stiffness().joint(i)[axis];
+        s << indent << "  <joint name=\"" << joint_name(i, axis) << "\" axis=\""
+          << axis_vectors[axis] << "\" stiffness=\"" << number(k) << "\" damping=\""
+          << number(k * options_.damping_time) << "\"/>\n";
+      }
+    s << indent << "  <geom name=\"link" << i + 1 << "\" fromto=\"0 0 0 " << triple(to_next)
+      << "\"/>\n";
+    if (last)
+      s << indent << "  <site name=\"tip\" pos=\"" << triple(to_next) << "\"/>\n";
+    else
+      s << body(i + 1);
+    s << indent << "</body>\n";
+    return s.str();
+  }
+
+  std::string MjcfExport::pressure_actuator() const
+  {
+    const Eigen::VectorXd &jp = model_.actuation().rest_torque_per_pascal();
+    std::ostringstream     coefficients;
+    for (Eigen::Index j = 0; j < jp.size(); ++j)
+      if (jp[j] != 0.0)
+        coefficients << "      <joint joint=\"" << joint_name(int(j / 3), int(j % 3))
+                     << "\" coef=\"" << number(jp[j]) << "\"/>\n";
+    if (coefficients.str().empty())
+      return "";
+    const std::string range = options_.max_pressure > 0
+                                ? " ctrllimited=\"true\" ctrlrange=\"0 " + number(options_.max_pressure) + "\""
+                                : " ctrllimited=\"false\"";
+    return "  <tendon>\n    <fixed name=\"pressure\">\n" + coefficients.str() +
+           "    </fixed>\n  </tendon>\n  <actuator>\n    <motor name=\"pressure\" tendon=\"pressure\" "
+           "gear=\"1\"" + range + "/>\n  </actuator>\n";
+  }
+
+  std::string MjcfExport::text() const
+  {
+    std::ostringstream s;
+    s << "<mujoco model=\"" << model_.name() << "\">\n"
+      << "  <!-- SoftChain chain tier: spherical joint = hinges x, y, z (R = Rx Ry Rz),\n"
+      << "       stiffness from the reduction's CSV, control 'pressure' in Pa. -->\n"
+      << "  <compiler angle=\"radian\"/>\n"
+      << "  <option timestep=\"" << number(0.1 * options_.damping_time)
+      << "\" integrator=\"Euler\"/>\n"
+      << "  <default>\n"
+      << "    <joint type=\"hinge\" limited=\"false\"/>\n"
+      << "    <geom type=\"capsule\" size=\"" << number(options_.link_radius) << "\" density=\""
+      << number(options_.density) << "\" contype=\"0\" conaffinity=\"1\"/>\n"
+      << "  </default>\n"
+      << "  <worldbody>\n"
+      << body(0) << "  </worldbody>\n"
+      << pressure_actuator() << "</mujoco>\n";
+    return s.str();
+  }
+
+  void MjcfExport::write(const std::string &path) const
+  {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty())
+      std::filesystem::create_directories(parent);
+    std::ofstream out(path);
+    out << text();
+    if (!out)
+      throw data::InputError("cannot write MJCF file '" + path + "'");
+  }
+} // namespace softchain::chain

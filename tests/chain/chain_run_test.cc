@@ -1,0 +1,150 @@
+// run_chain end to end on a synthetic database in the contract layout whose
+// samples were deformed by the M2 chain itself: M2 must reproduce them to
+// round-off, M1 (other stiffness) and the beam baseline must not.
+#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/chain_parameters.h>
+#include <softchain/chain/chain_run.h>
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/input_error.h>
+
+#include "../data/scratch_directory.h"
+#include "box_mesh.h"
+#include "reduction_output.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+using namespace softchain::chain;
+using namespace softchain;
+
+namespace
+{
+  const char *chain_prm = "subsection Geometry\n  set Length = 0.09\nend\n"
+                          "subsection Chain\n"
+                          "  set Stiffness method = M2\n"
+                          "  set Slab half-width = 0.5\n"
+                          "  set Stiffness column = value\n"
+                          "  set Interpolate k_phi in pressure = true\n"
+                          "  set Validation roles = validation, pressure\n"
+                          "  set Baseline Young's modulus = 2.6e5\n"
+                          "  set Newton tolerance = 1e-10\n"
+                          "  set Maximum Newton iterations = 50\n"
+                          "end\n";
+
+  data::Actuation actuation(double p, const std::string &role, const Eigen::Vector3d &f)
+  {
+    data::Actuation a;
+    a.pressure = p;
+    a.role     = role;
+    if (f.norm() > 0)
+      a.point_forces.push_back({{0.09, 0.0, 0.0}, {f.x(), f.y(), f.z()}});
+    return a;
+  }
+
+  // A sample whose nodes follow the chain's rigid links at equilibrium.
+  data::SampleRecord chain_sample(const ChainModel &model, const data::MeshRecord &mesh,
+                                  const std::string &hash, const data::Actuation &a)
+  {
+    ChainLoad load{a.pressure, {}};
+    for (const auto &f : a.point_forces)
+      load.point_loads.push_back({{f.point[0], f.point[1], f.point[2]},
+                                  {f.force[0], f.force[1], f.force[2]}});
+    ChainEquilibrium solver(model);
+    REQUIRE(solver.solve(load).converged);
+    data::SampleRecord s;
+    s.actuation = a;
+    s.id        = data::sample_id(hash, a);
+    for (const data::Point3 &p : mesh.X)
+      {
+        const Eigen::Vector3d X(p[0], p[1], p[2]);
+        const Eigen::Vector3d x =
+          model.chain().point_position(solver.pose(), model.chain().link_of(X), X);
+        s.x.push_back({x.x(), x.y(), x.z()});
+      }
+    return s;
+  }
+
+  void write_database(const std::string &path, const ChainModel &model,
+                                const data::MeshRecord &mesh)
+  {
+    const data::DesignRecord design{"box", "0123456789abcdef", "Q1", "test", chain_prm};
+    auto database = data::ActuationDatabase::open_or_create(path, design, mesh);
+    for (const auto &a : {actuation(3e4, "pressure", {0, 0, 0}), actuation(6e4, "pressure", {0, 0, 0}),
+                          actuation(5e4, "validation", {0.0, 0.05, 0.02}),
+                          actuation(0.0, "lateral", {0, 0, 0.1})})
+      database.store_sample(chain_sample(model, mesh, design.design_hash, a));
+  }
+} // namespace
+
+TEST_CASE("run_chain validates M1, M2 and the baseline against a database, writes MJCF")
+{
+  softchain::testing::ScratchDirectory dir("chain_run");
+  const std::string         out = dir.file("out");
+  const std::string         prm = dir.file("finger.prm");
+  std::ofstream(prm) << chain_prm;
+  chain::testing::BoxMeshSpec spec;
+  spec.y0                     = -0.5 * spec.height; // centred: joints on the x axis
+  const data::MeshRecord mesh = chain::testing::box_mesh(spec);
+
+  chain::testing::UniformReduction m2, m1;
+  m1.k *= 1.3;
+  const StiffnessFiles m2_files(out + "/stiffness", "M2", 0.5);
+  chain::testing::write_reduction(m2_files, m2);
+  chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", "M1", 0.5), m1);
+  write_database(dir.file("database.h5"), m2_files.read_model("M2", {0.09, 0, 0}, "value", true), mesh);
+
+  REQUIRE(run_chain(prm, dir.file("database.h5"), out, true) == 0);
+  const data::CsvTable table = data::CsvTable::read(out + "/chain/validation.csv");
+  REQUIRE(table.n_rows() == 9); // 3 samples of the validation roles x 3 models
+  for (std::size_t r = 0; r < table.n_rows(); ++r)
+    {
+      const double position = table.number(r, "tip_error_mm");
+      const double angle    = table.number(r, "orientation_error_deg");
+      CHECK(table.text(r, "chain_status") == "converged");
+      if (table.text(r, "model") == "M2")
+        {
+          // The same equilibrium solved twice: only the round-off of the
+          // tip-node centroid and the Kabsch SVD (1e-15 of 0.1 m, of 1 rad).
+          CHECK(position < 1e-9);
+          CHECK(angle < 1e-9);
+        }
+      else // 30 % stiffer (M1) or beam theory: visibly different poses
+        CHECK(position > 0.1);
+    }
+  const data::CsvTable summary = data::CsvTable::read(out + "/chain/validation_summary.csv");
+  CHECK(summary.n_rows() == 9); // 3 models x (pressure, validation, all)
+  std::ifstream     xml(out + "/chain/finger.xml");
+  const std::string text((std::istreambuf_iterator<char>(xml)), {});
+  CHECK(text.find("joint9_phi") != std::string::npos);
+  if (std::system("command -v gnuplot > /dev/null 2>&1") == 0)
+    CHECK(std::filesystem::exists(out + "/chain/validation.png"));
+}
+
+TEST_CASE("the Chain subsection is read and checked")
+{
+  softchain::testing::ScratchDirectory dir("chain_parameters");
+  const std::string         prm = dir.file("finger.prm");
+  SECTION("values")
+  {
+    std::ofstream(prm) << chain_prm;
+    const ChainParameters p = ChainParameters::read(prm);
+    CHECK(p.method == "M2");
+    CHECK(p.validation_roles == std::vector<std::string>{"validation", "pressure"});
+    CHECK(p.newton.max_iterations == 50);
+  }
+  SECTION("a bad method names file, line and parameter")
+  {
+    std::ofstream(prm) << "subsection Chain\n  set Stiffness method = M3\nend\n";
+    CHECK_THROWS_WITH(ChainParameters::read(prm),
+                      Catch::Contains(prm + ":2") && Catch::Contains("Stiffness method") &&
+                        Catch::Contains("M3"));
+  }
+  SECTION("a missing stiffness file of the selected method")
+  {
+    std::ofstream(prm) << chain_prm;
+    const data::DesignRecord design{"box", "0123456789abcdef", "Q1", "test", chain_prm};
+    data::ActuationDatabase::open_or_create(dir.file("db.h5"), design, chain::testing::box_mesh({}));
+    CHECK_THROWS_AS(run_chain(prm, dir.file("db.h5"), dir.file("out"), false), data::InputError);
+  }
+}
