@@ -3,6 +3,8 @@
 #include <softchain/reduction/pressure_torque.h>
 #include <softchain/reduction/vector_of_point.h>
 
+#include <Eigen/Geometry>
+
 namespace softchain::reduction
 {
   namespace

@@ -1,0 +1,93 @@
+// StiffnessExtraction: below-threshold rotations give NaN (never inf) and
+// are counted; the value at the largest load and the least-squares fit.
+#include <softchain/data/joint_angles.h>
+#include <softchain/reduction/joint_layout.h>
+#include <softchain/reduction/method_reduction.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "synthetic_finger.h"
+
+using namespace softchain;
+using namespace softchain::reduction;
+using namespace softchain::testing;
+
+namespace
+{
+  constexpr double a         = 10 * mm;
+  constexpr double threshold = 0.0017453292519943296; // 0.1 deg, the default
+
+  ReductionParameters parameters()
+  {
+    ReductionParameters p;
+    p.joint_spacing      = a;
+    p.rotation_threshold = threshold;
+    p.pressure_roles     = {"pressure"};
+    p.lateral_roles      = {"lateral"};
+    p.torsion_roles      = {"torsion"};
+    return p;
+  }
+
+  // A pressure sample bent onto an arc of radius R (R = inf: undeformed).
+  data::SampleRecord bent(const SyntheticFinger &finger, double pressure, double R,
+                          const std::string &role = "pressure")
+  {
+    data::SampleRecord s;
+    s.id                 = role + std::to_string(pressure);
+    s.actuation.pressure = pressure;
+    s.actuation.role     = role;
+    s.x = std::isinf(R) ? finger.mesh.X : deform(finger.mesh.X, arc_about_z(R));
+    return s;
+  }
+
+  MethodReduction reduce(const SyntheticFinger &finger, const std::vector<data::SampleRecord> &s)
+  {
+    const JointLayout layout(finger.mesh.X, a, 0, "synthetic");
+    return MethodReduction(RotationMethod::affine_fit, 0.5, parameters(), layout, finger.mesh, s);
+  }
+} // namespace
+
+TEST_CASE("a rotation below the threshold gives NaN stiffness, counted, never inf")
+{
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50));
+  // Undeformed (phi = 0 up to round-off) and bent by half the threshold per
+  // joint (a / R = threshold / 2); both carry a nonzero pressure torque.
+  const MethodReduction r =
+    reduce(finger, {bent(finger, 1e4, INFINITY), bent(finger, 2e4, -a / (threshold / 2))});
+  for (const auto &joint : r.stiffness().joints())
+    {
+      CHECK(std::isnan(joint.at_largest_load(2)));
+      CHECK(std::isnan(joint.fit(2)));
+      CHECK(joint.n_used[2] == 0);
+    }
+  CHECK(r.stiffness().n_below_threshold() == 2 * 5);
+  CHECK(r.samples()[1].joints()[2].torque(2) != 0);
+}
+
+TEST_CASE("k at the largest load and the least-squares fit over the usable samples")
+{
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50));
+  // Three pressure samples (the smallest below the threshold) and one
+  // validation sample, which feeds no axis.
+  const MethodReduction r = reduce(finger, {bent(finger, 3e4, -0.3), bent(finger, 1e4, -0.9),
+                                            bent(finger, 5e2, -a / (threshold / 3)),
+                                            bent(finger, 9e4, -0.1, "validation")});
+  for (std::size_t i = 0; i < 5; ++i)
+    {
+      const JointStiffness &k = r.stiffness().joints()[i];
+      const JointResult    &heavy = r.samples()[0].joints()[i];
+      const JointResult    &light = r.samples()[1].joints()[i];
+      CHECK(k.n_used[2] == 2);
+      // Both are computed from the same doubles in the same order: equal.
+      CHECK(k.at_largest_load(2) == heavy.torque(2) / heavy.angles.phi);
+      const double fit = (heavy.torque(2) * heavy.angles.phi + light.torque(2) * light.angles.phi) /
+                         (heavy.angles.phi * heavy.angles.phi + light.angles.phi * light.angles.phi);
+      CHECK(k.fit(2) == Approx(fit).epsilon(1e-14)); // summation order may differ
+      CHECK(std::isfinite(k.at_largest_load(2)));
+      CHECK(k.at_largest_load(2) > 0); // inflation torque and bend agree in sign
+      CHECK(std::isnan(k.at_largest_load(0))); // no torsion samples
+    }
+  CHECK(r.stiffness().n_below_threshold() == 5);
+}
