@@ -1,0 +1,113 @@
+// MJCF export: the structure of the file, and (with libmujoco-dev) MuJoCo
+// itself: loaded, driven by the same pressure and tip force with gravity off
+// and stepped with damping to rest, it must find the chain solver's pose.
+#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/mjcf_export.h>
+
+#include "../data/scratch_directory.h"
+
+#include <catch2/catch.hpp>
+
+#ifdef SOFTCHAIN_HAVE_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
+
+using namespace softchain::chain;
+
+namespace
+{
+  // A tapered finger: joint centres dropping in y, stiffness and J_p varying
+  // along it, J_p with all three components so that every hinge is driven.
+  ChainModel tapered_finger()
+  {
+    std::vector<Eigen::Vector3d> joints, k;
+    Eigen::VectorXd              jp(27);
+    for (int i = 0; i < 9; ++i)
+      {
+        joints.emplace_back((i + 0.5) * 0.01, -0.0004 * i, 0.0);
+        k.push_back((1.0 - 0.05 * i) * Eigen::Vector3d(0.2, 0.05, 0.05));
+        jp.segment<3>(3 * i) = (1.0 - 0.03 * i) * Eigen::Vector3d(1e-8, -2e-8, 2e-7);
+      }
+    return ChainModel("tapered", KinematicChain(joints, {0.09, -0.0036, 0.0}), JointStiffness(k),
+                      PressureActuation(jp));
+  }
+
+  std::size_t count(const std::string &text, const std::string &what)
+  {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+      ++n;
+    return n;
+  }
+} // namespace
+
+TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness and a pressure actuator")
+{
+  const ChainModel  model = tapered_finger();
+  const std::string xml   = MjcfExport(model, {}).text();
+  CHECK(count(xml, "<joint name=") == 27);
+  CHECK(count(xml, "<body name=") == 9);
+  const auto psi = xml.find("joint4_psi\" axis=\"1 0 0\""), theta = xml.find("joint4_theta\" axis=\"0 1 0\""),
+             phi = xml.find("joint4_phi\" axis=\"0 0 1\"");
+  CHECK(psi < theta);
+  CHECK(theta < phi);
+  CHECK(phi != std::string::npos);
+  CHECK(xml.find("stiffness=\"0.042500000000000003\"") != std::string::npos); // k_theta of joint 4
+  CHECK(count(xml, "coef=") == 27);
+  CHECK(xml.find("<motor name=\"pressure\" tendon=\"pressure\"") != std::string::npos);
+  CHECK(xml.find("<site name=\"tip\"") != std::string::npos);
+}
+
+#ifdef SOFTCHAIN_HAVE_MUJOCO
+TEST_CASE("MuJoCo comes to rest in the chain solver's pose")
+{
+  const ChainModel model = tapered_finger();
+  const double     p     = 5e4;
+  const Eigen::Vector3d f(0.02, 0.05, 0.03), tip = model.chain().tip();
+  ChainEquilibrium      solver(model);
+  const Equilibrium     e = solver.solve({p, {{tip, f}}});
+  REQUIRE(e.converged);
+  REQUIRE(e.angles.cwiseAbs().maxCoeff() > 0.1); // far from linear: ~100 deg of bending
+
+  softchain::testing::ScratchDirectory dir("chain_mjcf");
+  MjcfExport(model, {}).write(dir.file("finger.xml"));
+  char     error[1000] = "";
+  mjModel *m = mj_loadXML(dir.file("finger.xml").c_str(), nullptr, error, sizeof(error));
+  INFO(error);
+  REQUIRE(m != nullptr);
+  REQUIRE(m->nq == 27);
+  mjData *d = mj_makeData(m);
+  m->opt.gravity[2] = 0.0;
+  d->ctrl[0]        = p;
+  const int last = m->nbody - 1, site = mj_name2id(m, mjOBJ_SITE, "tip");
+  // The dead tip force as MuJoCo's applied wrench on the last body (at its
+  // centre of mass): force f and torque (tip - com) x f, updated every step.
+  const auto apply_tip_force = [&] {
+    const Eigen::Map<const Eigen::Vector3d> at(d->site_xpos + 3 * site), com(d->xipos + 3 * last);
+    Eigen::Map<Eigen::Matrix<double, 6, 1>>(d->xfrc_applied + 6 * last) << f, (at - com).cross(f);
+  };
+  // Rest: joint speeds below 1e-11 rad/s. With damping c = k * 0.01 s, the
+  // unbalanced spring torque left is c |qdot| = 1e-13 k, i.e. an angle
+  // error of 1e-13 rad.
+  long steps = 0;
+  for (mj_forward(m, d); steps < 2000000; ++steps)
+    {
+      apply_tip_force();
+      mj_step(m, d);
+      if (Eigen::Map<const Eigen::VectorXd>(d->qvel, m->nv).cwiseAbs().maxCoeff() < 1e-11 && steps > 10)
+        break;
+    }
+  mj_forward(m, d);
+  INFO("steps to rest: " << steps);
+  // Tolerance: the chain's Newton tolerance 1e-10 (relative residual) gives
+  // angles to ~1e-10 of their size (0.2 rad); MuJoCo's rest criterion adds
+  // 1e-13 rad: 1e-10 rad per hinge, and 9 hinges times 0.1 m arm bound the
+  // tip position error by 1e-10 m.
+  const Eigen::Map<const Eigen::VectorXd> qpos(d->qpos, m->nq);
+  CHECK((qpos - e.angles).cwiseAbs().maxCoeff() < 1e-10);
+  const Eigen::Map<const Eigen::Vector3d> mujoco_tip(d->site_xpos + 3 * site);
+  CHECK((mujoco_tip - solver.pose().tip_position).norm() < 1e-10);
+  mj_deleteData(d);
+  mj_deleteModel(m);
+}
+#endif
