@@ -7,7 +7,6 @@
 #include <softchain/reduction/stiffness_plots.h>
 #include <softchain/reduction/stiffness_tables.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -35,19 +34,6 @@ namespace softchain::reduction
       return converged;
     }
 
-    // Distinct pressures of the samples that feed k_phi, increasing.
-    std::vector<double> kphi_pressures(const std::vector<data::SampleRecord> &samples,
-                                       const ReductionParameters             &parameters)
-    {
-      std::vector<double> pressures;
-      const auto         &roles = parameters.pressure_roles;
-      for (const auto &s : samples)
-        if (std::find(roles.begin(), roles.end(), s.actuation.role) != roles.end())
-          pressures.push_back(s.actuation.pressure);
-      std::sort(pressures.begin(), pressures.end());
-      pressures.erase(std::unique(pressures.begin(), pressures.end()), pressures.end());
-      return pressures;
-    }
   } // namespace
 
   ReductionRun::ReductionRun(std::string prm_path, std::string database_path,
@@ -85,9 +71,8 @@ namespace softchain::reduction
                 << parameters.rotation_threshold << " rad and give no stiffness (nan)\n";
     if (parameters.plots)
       {
-        summary.plots_drawn = StiffnessPlots(directory, labels, kphi_pressures(samples, parameters),
-                                             parameters.joint_spacing)
-                                .draw();
+        summary.plots_drawn =
+          StiffnessPlots(directory, labels, parameters.joint_spacing).draw();
         if (!summary.plots_drawn)
           std::cerr << "softchain reduce: warning: no PNG plots (gnuplot missing or failed, see "
                     << directory << "/plots.log); the script is " << directory << "/plots.gp\n";

@@ -2,9 +2,10 @@
 // StiffnessPlots: PNG plots like the paper's Fig. 5-7, drawn by gnuplot from
 // the CSV files of StiffnessTables: per method and b, k_phi along x for each
 // pressure (Fig. 5a, 5b, 6); k_phi at the largest pressure for every method
-// and b (Fig. 5c); k_psi (Fig. 5d) and k_theta (Fig. 7) along x. The gnuplot
-// script stiffness/plots.gp is always written; it is run when `gnuplot` is
-// on the PATH.
+// and b (Fig. 5c); k_psi (Fig. 5d) and k_theta (Fig. 7) along x. Curves and
+// plots without any value (all "nan") are left out, since gnuplot stops on
+// them. The gnuplot script stiffness/plots.gp is always written; it is run
+// when `gnuplot` is on the PATH.
 #include <string>
 #include <vector>
 
@@ -13,10 +14,9 @@ namespace softchain::reduction
   class StiffnessPlots
   {
   public:
-    // `labels`: the "<M>_b<f>a" of the tables in `directory`; `pressures`:
-    // the distinct pressures of the k_phi samples; `spacing`: a.
-    StiffnessPlots(std::string directory, std::vector<std::string> labels,
-                   std::vector<double> pressures, double spacing);
+    // `labels`: the "<M>_b<f>a" of the tables already written in
+    // `directory`; `spacing`: a.
+    StiffnessPlots(std::string directory, std::vector<std::string> labels, double spacing);
 
     std::string script() const;
     // Writes plots.gp and runs gnuplot on it if installed (its messages go
@@ -27,10 +27,13 @@ namespace softchain::reduction
     std::string per_pressure_plot(const std::string &label) const;
     std::string all_labels_plot(const std::string &name, const std::string &column,
                                 const std::string &ylabel) const;
+    // Distinct pressures with a finite k_phi in <label>_kphi_vs_pressure.csv.
+    std::vector<double> pressures_with_kphi(const std::string &label) const;
+    // The labels whose <label>.csv has a finite value in `column`.
+    std::vector<std::string> labels_with(const std::string &column) const;
 
     std::string              directory_;
     std::vector<std::string> labels_;
-    std::vector<double>      pressures_;
     double                   spacing_;
   };
 } // namespace softchain::reduction
