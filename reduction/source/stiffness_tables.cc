@@ -15,12 +15,16 @@ namespace softchain::reduction
   {
     std::vector<const SampleReduction *> selected;
     for (const auto &sample : reduction_.samples())
-      if (reduction_.stiffness().feeds(sample, 2))
+      if (reduction_.stiffness().feeds(sample, 2) && sample.pressure() != 0)
         selected.push_back(&sample);
     std::stable_sort(selected.begin(), selected.end(),
                      [](const SampleReduction *a, const SampleReduction *b) {
                        return a->pressure() < b->pressure();
                      });
+    const auto same_pressure = [](const SampleReduction *a, const SampleReduction *b) {
+      return a->pressure() == b->pressure();
+    };
+    selected.erase(std::unique(selected.begin(), selected.end(), same_pressure), selected.end());
     return selected;
   }
 

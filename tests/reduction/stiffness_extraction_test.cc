@@ -3,6 +3,7 @@
 #include <softchain/data/joint_angles.h>
 #include <softchain/reduction/joint_layout.h>
 #include <softchain/reduction/method_reduction.h>
+#include <softchain/reduction/stiffness_tables.h>
 
 #include <catch2/catch.hpp>
 
@@ -90,4 +91,21 @@ TEST_CASE("k at the largest load and the least-squares fit over the usable sampl
       CHECK(std::isnan(k.at_largest_load(0))); // no torsion samples
     }
   CHECK(r.stiffness().n_below_threshold() == 5);
+}
+
+TEST_CASE("pressure tables: one row per joint and distinct nonzero pressure, rest first")
+{
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50));
+  // A pressure sample at p = 0 would repeat the rest rows; the chain tier
+  // reads (pressure, joint) as a key.
+  const MethodReduction r = reduce(finger, {bent(finger, 2e4, -0.3), bent(finger, 0, INFINITY),
+                                            bent(finger, 1e4, -0.6)});
+  const StiffnessTables tables(r);
+  const auto            jp = tables.pressure_torque();
+  REQUIRE(jp.n_rows() == 3 * 5);
+  for (std::size_t row = 0; row < jp.n_rows(); ++row)
+    CHECK(jp.number(row, "pressure") == std::vector<double>{0, 1e4, 2e4}[row / 5]);
+  const auto kp = tables.kphi_vs_pressure();
+  REQUIRE(kp.n_rows() == 2 * 5);
+  CHECK(kp.number(0, "pressure") == 1e4);
 }

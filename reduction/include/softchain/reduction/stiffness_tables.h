@@ -29,7 +29,9 @@ namespace softchain::reduction
     void write(const std::string &directory) const;
 
   private:
-    // The samples fed to k_phi, by increasing pressure.
+    // The samples fed to k_phi, one per distinct nonzero pressure (the first
+    // in sample id order), by increasing pressure: the pressure tables hold
+    // one row per (pressure, joint), the rest configuration being p = 0.
     std::vector<const SampleReduction *> pressure_samples() const;
 
     const MethodReduction &reduction_;
