@@ -1,15 +1,19 @@
 // Mesh generation benchmark (issue 3): for each shipped design, element shape
 // and resolution, the time of generate_design() with an empty cache (gmsh
 // runs) and with a warm cache (read + mesh checks only), and the sizes of the
-// mesh and of the spring networks. Prints a Markdown table.
+// mesh and of the spring networks, and the relative errors of the mesh's
+// silicone and cavity volumes against the analytic shape. Prints a Markdown
+// table.
 //
 //   mesh_generation [CACHE_DIR]     (default /tmp/softchain_mesh_benchmark, emptied first)
 #include <softchain/geometry/cavity_surface.h>
+#include <softchain/geometry/cell_geometry.h>
 #include <softchain/geometry/generate_design.h>
 #include <softchain/geometry/msh_file.h>
 #include <softchain/geometry/spring_network_file.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -33,6 +37,11 @@ namespace
     return n;
   }
 
+  double relative_error(double value, double exact)
+  {
+    return std::abs(value - exact) / exact;
+  }
+
   void row(const std::string &name, bool hexahedra, int resolution, const std::string &cache_dir)
   {
     FingerDesign design = FingerDesign::read(std::string(SOFTCHAIN_SOURCE_DIR) + "/parameter_files/" +
@@ -43,11 +52,16 @@ namespace
     GeneratedDesign result;
     const double    cold = seconds_of(result, design, mesher);
     const double    warm = seconds_of(result, design, mesher);
-    const MshFile   mesh = MshFile::read(result.mesh_file);
-    std::printf("| %-14s | %-3s | %d | %6.4f | %7zu | %6zu | %6zu | %5zu | %6.2f | %6.2f |\n",
+    const MshFile       mesh = MshFile::read(result.mesh_file);
+    const CavitySurface cavity(mesh);
+    const auto         &d = design.dimensions;
+    std::printf("| %-14s | %-3s | %d | %6.4f | %7zu | %6zu | %6zu | %5zu | %6.2f | %6.2f | %7.1e | "
+                "%7.1e |\n",
                 name.c_str(), hexahedra ? "hex" : "tet", resolution, design.mesh_size(),
-                mesh.cells.size(), mesh.nodes.size(), CavitySurface(mesh).triangles().size(),
-                spring_nodes(result.spring_file), cold, warm);
+                mesh.cells.size(), mesh.nodes.size(), cavity.triangles().size(),
+                spring_nodes(result.spring_file), cold, warm,
+                relative_error(CellGeometry::total_volume(mesh), d.material_volume()),
+                relative_error(cavity.enclosed_volume(), d.cavity_volume()));
   }
 } // namespace
 
@@ -56,8 +70,8 @@ int main(int argc, char **argv)
   const std::string cache_dir = argc > 1 ? argv[1] : "/tmp/softchain_mesh_benchmark";
   std::filesystem::remove_all(cache_dir);
   std::printf("| design | element | res | size (m) | cells | nodes | cavity triangles | spring nodes "
-              "| cold (s) | cached (s) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+              "| cold (s) | cached (s) | silicone volume error | cavity volume error |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const char *name : {"p10", "p13", "parallelepiped"})
     for (const bool hexahedra : {false, true})
       for (int resolution = 0; resolution <= 2; ++resolution)

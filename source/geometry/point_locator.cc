@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace softchain::geometry
 {
@@ -10,38 +11,45 @@ namespace softchain::geometry
     // Relative tolerance of the barycentric test: points on a face count as
     // inside (round-off of the coordinates, ~1e-16, is far below it).
     constexpr double barycentric_tolerance = 1e-10;
+
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> bounding_box(const std::vector<Eigen::Vector3d> &points)
+    {
+      Eigen::Vector3d lower = points.front(), upper = points.front();
+      for (const auto &p : points)
+        {
+          lower = lower.cwiseMin(p);
+          upper = upper.cwiseMax(p);
+        }
+      return {lower, upper};
+    }
   } // namespace
 
   PointLocator::PointLocator(const MshFile &mesh)
     : mesh_(mesh)
   {
-    lower_               = mesh.nodes[0];
-    Eigen::Vector3d upper = mesh.nodes[0];
-    for (const auto &x : mesh.nodes)
-      {
-        lower_ = lower_.cwiseMin(x);
-        upper  = upper.cwiseMax(x);
-      }
+    const auto [lower, upper] = bounding_box(mesh.nodes);
+    lower_                    = lower;
     // About one cell per bucket: n^3 buckets for n^3 cells, at most 64^3.
-    const int n = std::clamp(static_cast<int>(std::cbrt(double(mesh.cells.size()))), 1, 64);
-    n_buckets_  = {n, n, n};
-    bucket_size_ = ((upper - lower_) / double(n)).cwiseMax(1e-300);
+    const int n  = std::clamp(static_cast<int>(std::cbrt(double(mesh.cells.size()))), 1, 64);
+    n_buckets_   = {n, n, n};
+    bucket_size_ = ((upper - lower) / double(n)).cwiseMax(1e-300);
     buckets_.resize(std::size_t(n) * n * n);
     for (std::size_t c = 0; c < mesh.cells.size(); ++c)
       for (const auto &tet : CellGeometry::tetrahedra(mesh.cells[c]))
-        {
-          Eigen::Vector3d lo = mesh.nodes[tet[0]], hi = lo;
-          for (const std::size_t node : tet)
-            {
-              lo = lo.cwiseMin(mesh.nodes[node]);
-              hi = hi.cwiseMax(mesh.nodes[node]);
-            }
-          const auto a = bucket_of(lo), b = bucket_of(hi);
-          for (int i = a[0]; i <= b[0]; ++i)
-            for (int j = a[1]; j <= b[1]; ++j)
-              for (int k = a[2]; k <= b[2]; ++k)
-                buckets_[flat({i, j, k})].push_back({c, tet});
-        }
+        insert({c, tet});
+  }
+
+  void PointLocator::insert(const Entry &entry)
+  {
+    std::vector<Eigen::Vector3d> corners;
+    for (const std::size_t node : entry.tet)
+      corners.push_back(mesh_.nodes[node]);
+    const auto [lower, upper] = bounding_box(corners);
+    const auto a = bucket_of(lower), b = bucket_of(upper);
+    for (int i = a[0]; i <= b[0]; ++i)
+      for (int j = a[1]; j <= b[1]; ++j)
+        for (int k = a[2]; k <= b[2]; ++k)
+          buckets_[flat({i, j, k})].push_back(entry);
   }
 
   std::array<int, 3> PointLocator::bucket_of(const Eigen::Vector3d &p) const
@@ -76,9 +84,6 @@ namespace softchain::geometry
 
   std::optional<std::size_t> PointLocator::locate(const Eigen::Vector3d &p) const
   {
-    for (int d = 0; d < 3; ++d)
-      if (p[d] < lower_[d] || p[d] > lower_[d] + n_buckets_[d] * bucket_size_[d])
-        return std::nullopt;
     for (const auto &entry : buckets_[flat(bucket_of(p))])
       if (contains(entry.tet, p))
         return entry.cell;

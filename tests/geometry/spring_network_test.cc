@@ -106,8 +106,10 @@ TEST_CASE("the fabric is a grid in the bottom layer spanning the finger", "[geom
           const Eigen::Vector3d &p = line.points[i];
           REQUIRE(p.y() == design.springs.fabric_height);
           REQUIRE(d.material_margin(p) > 0.0);
+          // At most the fabric spacing apart; along x the taper tilts the
+          // longitudinal lines by |dz/dx| < 0.03, lengthening a step < 0.1 %.
           if (i > 0)
-            REQUIRE((p - line.points[i - 1]).norm() <= design.springs.fabric_spacing * 1.01);
+            REQUIRE((p - line.points[i - 1]).norm() <= design.springs.fabric_spacing * 1.001);
           x_min = std::min(x_min, p.x());
           x_max = std::max(x_max, p.x());
         }

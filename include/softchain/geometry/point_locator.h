@@ -11,6 +11,7 @@ namespace softchain::geometry
   class PointLocator
   {
   public:
+    // Keeps a reference: `mesh` must outlive the locator.
     explicit PointLocator(const MshFile &mesh);
 
     // Index into mesh.cells of a cell containing p, if any. A point on a
@@ -23,6 +24,7 @@ namespace softchain::geometry
       std::size_t               cell;
       CellGeometry::Tetrahedron tet;
     };
+    void               insert(const Entry &entry);
     std::array<int, 3> bucket_of(const Eigen::Vector3d &p) const;
     std::size_t        flat(const std::array<int, 3> &b) const;
     bool               contains(const CellGeometry::Tetrahedron &t, const Eigen::Vector3d &p) const;
