@@ -99,6 +99,22 @@ TEST_CASE("rigid motion: only joint 1 rotates, both methods")
       }
 }
 
+TEST_CASE("a rigid motion after bending changes joint 1 only: R_i = R_{i-1}^T R_i^0")
+{
+  // x = Q arc(X): R_i^0 = Q Rz(m_i/R), so R_{i-1}^T R_i^0 = Rz((m_i - m_{i-1})/R)
+  // for i > 1 whatever Q, while the reversed product R_i^0 R_{i-1}^T would
+  // give Q Rz(.) Q^T, with psi and theta.
+  const Eigen::Matrix3d Q   = data::rotation_from_angles({0.4, 0.3, -0.2});
+  const Map             arc = arc_about_z(0.2);
+  const Map moved = [&](const Eigen::Vector3d &X) -> Eigen::Vector3d { return Q * arc(X); };
+  for (const auto method : both_methods)
+    {
+      const auto angles = angles_of(uniform_finger(), method, a / 2, moved);
+      for (std::size_t i = 1; i < angles.size(); ++i)
+        check_angles(angles[i], 0, 0, a / 0.2, exact);
+    }
+}
+
 TEST_CASE("pure bending onto an arc about z: phi_i = a / R after the first joint")
 {
   // Both methods are exact here: each slab is a product of node planes
