@@ -63,37 +63,57 @@ namespace softchain::data
                                             "'end', found '" + content + "'");
     }
 
+    struct LogicalLine
+    {
+      std::string content; // comment removed, trimmed
+      int         first_line;
+      int         last_line;
+    };
+
+    // Joins physical lines ending in "\" with the next one (a trailing "\"
+    // on the last line just ends it), then strips "#" comments.
+    std::vector<LogicalLine> logical_lines(const std::string &text)
+    {
+      std::vector<LogicalLine> lines;
+      std::istringstream       in(text);
+      std::string              physical, joined;
+      int                      line = 0, first = 1;
+      const auto               finish = [&] {
+        lines.push_back({trim(joined.substr(0, joined.find('#'))), first, line});
+        joined.clear();
+        first = line + 1;
+      };
+      while (std::getline(in, physical))
+        {
+          ++line;
+          const std::string stripped = trim(physical);
+          const bool continued = !stripped.empty() && stripped.back() == '\\';
+          joined += continued ? stripped.substr(0, stripped.size() - 1) + " " : physical;
+          if (!continued)
+            finish();
+        }
+      if (first <= line)
+        finish();
+      return lines;
+    }
+
     // Splits the text into statements; checks that subsection/end balance.
     std::vector<Statement> statements(const std::string &text, const std::string &path)
     {
       std::vector<Statement> result;
-      std::istringstream     in(text);
-      std::string            physical, logical;
-      int                    line = 0, first = 1;
       std::vector<int>       opened_at;
-      while (std::getline(in, physical))
+      for (const auto &line : logical_lines(text))
         {
-          ++line;
-          if (logical.empty())
-            first = line;
-          const std::string stripped = trim(physical);
-          if (!stripped.empty() && stripped.back() == '\\')
-            {
-              logical += stripped.substr(0, stripped.size() - 1) + " ";
-              continue;
-            }
-          logical += physical;
-          const std::string content = trim(logical.substr(0, logical.find('#')));
-          logical.clear();
-          if (content.empty())
+          if (line.content.empty())
             continue;
-          result.push_back(parse_statement(content, first, line, path));
+          result.push_back(parse_statement(line.content, line.first_line, line.last_line, path));
           if (result.back().kind == Kind::subsection)
-            opened_at.push_back(first);
+            opened_at.push_back(line.first_line);
           else if (result.back().kind == Kind::end)
             {
               if (opened_at.empty())
-                throw InputError(where(path, first) + "'end' without a matching 'subsection'");
+                throw InputError(where(path, line.first_line) +
+                                 "'end' without a matching 'subsection'");
               opened_at.pop_back();
             }
         }

@@ -84,6 +84,10 @@ TEST_CASE("prm: malformed structure names file and line")
   CHECK_THROWS_WITH(PrmFile::read(write(dir, "\nsubsection A\n")),
                     Catch::Contains(":2: subsection is never closed"));
   CHECK_THROWS_WITH(PrmFile::read(dir.file("none.prm")), Catch::Contains(dir.file("none.prm")));
+  // A "\" on the last line continues into nothing: the statement still counts.
+  CHECK_NOTHROW(PrmFile::read(write(dir, "subsection A\nend \\")));
+  CHECK_THROWS_WITH(PrmFile::read(write(dir, "subsection A \\")),
+                    Catch::Contains(":1: subsection is never closed"));
 }
 
 TEST_CASE("prm: text_without blanks the named subsections and keeps line numbers")
