@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h> // getpid
+
 namespace softchain::geometry
 {
   namespace fs = std::filesystem;
@@ -114,9 +116,10 @@ namespace softchain::geometry
     write_file(fs::path(directory) / script_name, job.script);
     for (const auto &[name, content] : job.files)
       write_file(fs::path(directory) / name, content);
-    // Written under a temporary name and renamed: an interrupted run never
-    // leaves a mesh that looks cached.
-    const std::string partial = std::string(mesh_name) + ".part";
+    // Written under a temporary name (per process) and renamed: an
+    // interrupted run never leaves a mesh that looks cached, and two
+    // processes meshing the same design do not write into one file.
+    const std::string partial = std::string(mesh_name) + ".part" + std::to_string(::getpid());
     std::string command = "cd " + shell_quote(directory) + " && " + shell_quote(gmsh_) +
                           " -3 -format msh22 " + script_name;
     for (const auto &[name, value] : job.numbers)

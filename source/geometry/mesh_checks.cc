@@ -29,11 +29,16 @@ namespace softchain::geometry
       return longest;
     }
 
-    std::string point_text(const Eigen::Vector3d &p)
+    std::string text(double value)
     {
       std::ostringstream s;
-      s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+      s << value;
       return s.str();
+    }
+
+    std::string point_text(const Eigen::Vector3d &p)
+    {
+      return "(" + text(p.x()) + ", " + text(p.y()) + ", " + text(p.z()) + ")";
     }
 
     void check_cell(const MshFile &mesh, const MshElement &cell)
@@ -44,7 +49,7 @@ namespace softchain::geometry
           const double scale = std::pow(longest_edge(mesh.nodes, t), 3);
           if (std::abs(v) <= degenerate_volume_ratio * scale)
             throw InputError(mesh.path + ": element " + std::to_string(cell.id) +
-                             " is degenerate (volume " + std::to_string(v) + " m^3)");
+                             " is degenerate (volume " + text(v) + " m^3)");
           if (v < 0.0)
             throw InputError(mesh.path + ": element " + std::to_string(cell.id) +
                              " is inverted (negative volume)");
@@ -73,8 +78,7 @@ namespace softchain::geometry
     const double        gap = cavity.area_vector_sum().norm();
     if (cavity.triangles().empty() || gap > closed_surface_tolerance * cavity.total_area())
       throw InputError(mesh.path + ": the cavity surface is not closed (area vectors sum to " +
-                       std::to_string(gap) + " m^2 of " + std::to_string(cavity.total_area()) +
-                       " m^2)");
+                       text(gap) + " m^2 of " + text(cavity.total_area()) + " m^2)");
   }
 
   void MeshChecks::check_springs_inside(const MshFile &mesh, const std::vector<SpringNetwork> &networks,

@@ -69,10 +69,12 @@ namespace softchain::geometry
 
   SpringNetwork Reinforcement::threads(const FingerDimensions &d, const SpringLayout &layout)
   {
+    // Rings at cavity_start + (k + 1/2) pitch, k = 0, 1, ... before cavity_end.
+    const int n_rings = static_cast<int>(
+      std::ceil((d.cavity_end() - d.cavity_start()) / layout.thread_pitch - 0.5));
     SpringNetwork threads{"thread", {}};
-    for (double x = d.cavity_start() + 0.5 * layout.thread_pitch; x < d.cavity_end();
-         x += layout.thread_pitch)
-      threads.polylines.push_back(ring(d, layout, x));
+    for (int k = 0; k < n_rings; ++k)
+      threads.polylines.push_back(ring(d, layout, d.cavity_start() + (k + 0.5) * layout.thread_pitch));
     return threads;
   }
 } // namespace softchain::geometry
