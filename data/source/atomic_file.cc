@@ -1,0 +1,51 @@
+// write_atomically: write a temporary file, fsync, rename, fsync directory.
+#include "atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+namespace softchain::data
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    // Makes `temporary` durable and puts it in place of `path` atomically.
+    void commit(const std::string &temporary, const std::string &path)
+    {
+      const int  fd     = ::open(temporary.c_str(), O_RDONLY);
+      const bool synced = fd >= 0 && ::fsync(fd) == 0;
+      if (fd >= 0)
+        ::close(fd);
+      if (!synced || std::rename(temporary.c_str(), path.c_str()) != 0)
+        throw std::runtime_error("cannot sync and rename '" + temporary + "' to '" + path + "'");
+      const std::string directory = fs::absolute(path).parent_path().string();
+      const int         dir_fd    = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY);
+      if (dir_fd >= 0)
+        {
+          ::fsync(dir_fd); // makes the rename itself durable
+          ::close(dir_fd);
+        }
+    }
+  } // namespace
+
+  void write_atomically(const std::string                              &path,
+                        const std::function<void(const std::string &)> &write)
+  {
+    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+    try
+      {
+        write(temporary);
+        commit(temporary, path);
+      }
+    catch (...)
+      {
+        fs::remove(temporary);
+        throw;
+      }
+  }
+} // namespace softchain::data

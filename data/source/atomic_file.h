@@ -1,0 +1,15 @@
+#pragma once
+// Atomic replacement of a file: the new content is written to a temporary
+// file in the same directory, fsync'ed and renamed over the original (then
+// the directory is fsync'ed), so readers and crashes see either the old or
+// the new complete file.
+#include <functional>
+#include <string>
+
+namespace softchain::data
+{
+  // Calls write(temporary) and commits the temporary file over `path`; the
+  // temporary file is removed if anything throws.
+  void write_atomically(const std::string                              &path,
+                        const std::function<void(const std::string &)> &write);
+} // namespace softchain::data
