@@ -59,29 +59,33 @@ namespace softchain::reduction
   {
     JointStiffness stiffness;
     for (int axis = 0; axis < 3; ++axis)
-      {
-        const SampleReduction *largest = nullptr;
-        double                 sum_tau_angle = 0, sum_angle_squared = 0;
-        for (const auto &sample : samples)
-          {
-            if (!feeds(sample, axis))
-              continue;
-            if (std::isnan(single(sample, joint, axis)))
-              {
-                ++n_below_threshold_;
-                continue;
-              }
-            const JointResult &result = sample.joints()[joint];
-            const double       angle  = angle_about(result.angles, axis);
-            sum_tau_angle += result.torque(axis) * angle;
-            sum_angle_squared += angle * angle;
-            ++stiffness.n_used[axis];
-            if (!largest || lighter(*largest, sample))
-              largest = &sample;
-          }
-        stiffness.at_largest_load(axis) = largest ? single(*largest, joint, axis) : no_value;
-        stiffness.fit(axis) = largest ? sum_tau_angle / sum_angle_squared : no_value;
-      }
+      extract_axis(samples, joint, axis, stiffness);
     return stiffness;
+  }
+
+  void StiffnessExtraction::extract_axis(const std::vector<SampleReduction> &samples,
+                                         std::size_t joint, int axis, JointStiffness &stiffness)
+  {
+    const SampleReduction *largest       = nullptr;
+    double                 sum_tau_angle = 0, sum_angle_squared = 0;
+    for (const auto &sample : samples)
+      {
+        if (!feeds(sample, axis))
+          continue;
+        if (std::isnan(single(sample, joint, axis)))
+          {
+            ++n_below_threshold_;
+            continue;
+          }
+        const JointResult &result = sample.joints()[joint];
+        const double       angle  = angle_about(result.angles, axis);
+        sum_tau_angle += result.torque(axis) * angle;
+        sum_angle_squared += angle * angle;
+        ++stiffness.n_used[axis];
+        if (!largest || lighter(*largest, sample))
+          largest = &sample;
+      }
+    stiffness.at_largest_load(axis) = largest ? single(*largest, joint, axis) : no_value;
+    stiffness.fit(axis)             = largest ? sum_tau_angle / sum_angle_squared : no_value;
   }
 } // namespace softchain::reduction

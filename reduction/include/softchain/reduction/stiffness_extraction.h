@@ -47,6 +47,8 @@ namespace softchain::reduction
 
   private:
     JointStiffness extract_joint(const std::vector<SampleReduction> &samples, std::size_t joint);
+    void           extract_axis(const std::vector<SampleReduction> &samples, std::size_t joint,
+                                int axis, JointStiffness &stiffness);
 
     std::array<std::vector<std::string>, 3> roles_;
     double                                  threshold_;
