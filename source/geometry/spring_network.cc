@@ -9,13 +9,4 @@ namespace softchain::geometry
       n += line.points.size();
     return n;
   }
-
-  std::size_t SpringNetwork::n_springs() const
-  {
-    std::size_t n = 0;
-    for (const auto &line : polylines)
-      if (line.points.size() > 1)
-        n += line.points.size() - (line.closed ? 0 : 1);
-    return n;
-  }
 } // namespace softchain::geometry

@@ -33,15 +33,13 @@ namespace softchain::geometry
     // Throws InputError naming the job (with the end of gmsh's log) if gmsh fails.
     std::string mesh(const GmshJob &job);
 
-    // The directory of a job's cache entry.
-    std::string entry_directory(const GmshJob &job) const;
-
     int n_runs() const { return n_runs_; } // gmsh invocations by this object
 
     static std::string default_binary();
 
   private:
-    void run(const GmshJob &job, const std::string &directory);
+    std::string entry_directory(const GmshJob &job) const; // cache_dir/<key>
+    void        run(const GmshJob &job, const std::string &directory);
 
     std::string cache_dir_;
     std::string gmsh_;

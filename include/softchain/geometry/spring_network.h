@@ -23,6 +23,5 @@ namespace softchain::geometry
     std::vector<Polyline> polylines;
 
     std::size_t n_nodes() const;
-    std::size_t n_springs() const; // links between consecutive nodes
   };
 } // namespace softchain::geometry
