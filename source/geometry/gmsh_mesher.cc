@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <unistd.h> // getpid
 
@@ -36,21 +37,25 @@ namespace softchain::geometry
         throw data::InputError("cannot write " + path.string());
     }
 
-    // The last lines of gmsh's log, for the error message.
-    std::string log_tail(const fs::path &path, std::size_t n_lines = 8)
+    // What gmsh said, for the error message: its first error lines (the
+    // cause), or the end of its log if it reported no error.
+    std::string log_summary(const fs::path &path)
     {
-      std::ifstream           in(path);
-      std::deque<std::string> lines;
+      std::vector<std::string> errors;
+      std::deque<std::string>  tail;
+      std::ifstream            in(path);
       for (std::string line; std::getline(in, line);)
         {
-          lines.push_back(line);
-          if (lines.size() > n_lines)
-            lines.pop_front();
+          if (line.rfind("Error", 0) == 0 && errors.size() < 3)
+            errors.push_back(line);
+          tail.push_back(line);
+          if (tail.size() > 8)
+            tail.pop_front();
         }
-      std::string tail;
-      for (const auto &line : lines)
-        tail += "\n  " + line;
-      return tail;
+      std::string summary;
+      for (const auto &line : errors.empty() ? std::vector<std::string>(tail.begin(), tail.end()) : errors)
+        summary += "\n  " + line;
+      return summary;
     }
 
     bool log_has_error(const fs::path &path)
@@ -129,8 +134,12 @@ namespace softchain::geometry
     const int status = std::system(command.c_str());
     const fs::path log = fs::path(directory) / log_name;
     if (status != 0 || log_has_error(log) || !fs::exists(fs::path(directory) / partial))
-      throw data::InputError(job.name + ": gmsh failed (" + gmsh_ + ", log " + log.string() +
-                             "):" + log_tail(log));
+      {
+        std::error_code ignored; // nothing to remove if gmsh wrote nothing
+        fs::remove(fs::path(directory) / partial, ignored);
+        throw data::InputError(job.name + ": gmsh failed (" + gmsh_ + ", log " + log.string() +
+                               "):" + log_summary(log));
+      }
     fs::rename(fs::path(directory) / partial, fs::path(directory) / mesh_name);
   }
 } // namespace softchain::geometry

@@ -1,5 +1,6 @@
 // The mesh cache: an unchanged design is meshed once; a change of a mesh
 // parameter meshes again; a change of a spring parameter does not.
+#include <softchain/data/input_error.h>
 #include <softchain/geometry/generate_design.h>
 
 #include <catch2/catch.hpp>
@@ -10,6 +11,7 @@
 
 using namespace softchain::geometry;
 using namespace softchain::geometry::testing;
+using Catch::Matchers::Contains;
 
 TEST_CASE("an unchanged design is not meshed twice", "[geometry][cache]")
 {
@@ -54,4 +56,22 @@ TEST_CASE("a changed mesh parameter meshes again, a changed spring parameter doe
   CHECK(denser_threads.mesh_file == original.mesh_file);
   CHECK(denser_threads.hash != original.hash);
   CHECK(denser_threads.spring_file != original.spring_file);
+}
+
+TEST_CASE("a failing gmsh run is an input error and caches nothing", "[geometry][cache][errors]")
+{
+  const std::string dir = scratch_directory("cache_failure");
+  GmshJob           broken;
+  broken.name   = "broken.prm";
+  broken.script = "Point(1) = {0, 0, 0};\nLine(1) = {1, 7};\n"; // point 7 does not exist
+  GmshMesher mesher(dir + "/cache");
+  CHECK_THROWS_WITH(mesher.mesh(broken), Contains("broken.prm") && Contains("gmsh failed") &&
+                                           Contains("Unknown control point 7"));
+  CHECK_THROWS_AS(mesher.mesh(broken), softchain::data::InputError);
+  CHECK(mesher.n_runs() == 2); // the failed run left no cached mesh
+
+  GmshMesher missing(dir + "/cache", dir + "/no_such_gmsh");
+  GmshJob    fine = broken;
+  fine.script     = "Point(1) = {0, 0, 0};\n";
+  CHECK_THROWS_WITH(missing.mesh(fine), Contains("no_such_gmsh"));
 }
