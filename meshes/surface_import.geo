@@ -21,3 +21,4 @@ Physical Surface("cavity") = {4};
 Physical Volume("silicone") = {1};
 
 Mesh.MeshSizeMax = size;
+Mesh.Algorithm3D = 10; // HXT, as in finger.geo (fewer slivers)
