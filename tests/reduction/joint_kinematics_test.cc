@@ -172,7 +172,8 @@ TEST_CASE("M1 on an uneven slab: chord angle error, bounded by h_max / R")
       CHECK(std::abs(angles[i].phi - a / R) < h_max / R);
       largest = std::max(largest, std::abs(angles[i].phi - a / R));
     }
-  CHECK(largest > 1e3 * exact); // the slabs are uneven enough to matter
+  // The slabs are uneven enough to matter (measured: 2.7% of a/R).
+  CHECK(largest > 1e-2 * a / R);
 }
 
 TEST_CASE("lateral bending onto an arc about y: theta_i = a / R")
