@@ -34,6 +34,35 @@ namespace softchain::reduction
       return converged;
     }
 
+    // Writes the CSV files of every (b, method); returns their labels and
+    // adds the rotations below the threshold to n_below_threshold.
+    std::vector<std::string> write_tables(const ReductionParameters             &parameters,
+                                          const JointLayout                     &layout,
+                                          const data::MeshRecord                &mesh,
+                                          const std::vector<data::SampleRecord> &samples,
+                                          const std::string &directory, int &n_below_threshold)
+    {
+      std::vector<std::string> labels;
+      for (const double fraction : parameters.slab_half_width_fractions)
+        for (const auto method : parameters.methods)
+          {
+            const MethodReduction reduction(method, fraction, parameters, layout, mesh, samples);
+            StiffnessTables(reduction).write(directory);
+            labels.push_back(reduction.label());
+            n_below_threshold += reduction.stiffness().n_below_threshold();
+          }
+      return labels;
+    }
+
+    bool draw_plots(const std::string &directory, const std::vector<std::string> &labels,
+                    double spacing)
+    {
+      const bool drawn = StiffnessPlots(directory, labels, spacing).draw();
+      if (!drawn)
+        std::cerr << "softchain reduce: warning: no PNG plots (gnuplot missing or failed, see "
+                  << directory << "/plots.log); the script is " << directory << "/plots.gp\n";
+      return drawn;
+    }
   } // namespace
 
   ReductionRun::ReductionRun(std::string prm_path, std::string database_path,
@@ -54,29 +83,15 @@ namespace softchain::reduction
     summary.n_samples_used   = static_cast<int>(samples.size());
     const std::string directory = output_dir_ + "/stiffness";
     std::filesystem::create_directories(directory);
-    std::vector<std::string> labels;
-    for (const double fraction : parameters.slab_half_width_fractions)
-      for (const auto method : parameters.methods)
-        {
-          const MethodReduction reduction(method, fraction, parameters, layout, database.mesh(),
-                                          samples);
-          StiffnessTables(reduction).write(directory);
-          labels.push_back(reduction.label());
-          summary.n_below_threshold += reduction.stiffness().n_below_threshold();
-        }
+    const auto labels = write_tables(parameters, layout, database.mesh(), samples, directory,
+                                     summary.n_below_threshold);
     if (summary.n_below_threshold > 0)
       std::cerr << "softchain reduce: warning: " << summary.n_below_threshold
                 << " (sample, joint, axis) rotations over all methods and b are below "
                    "Reduction/Rotation threshold = "
                 << parameters.rotation_threshold << " rad and give no stiffness (nan)\n";
     if (parameters.plots)
-      {
-        summary.plots_drawn =
-          StiffnessPlots(directory, labels, parameters.joint_spacing).draw();
-        if (!summary.plots_drawn)
-          std::cerr << "softchain reduce: warning: no PNG plots (gnuplot missing or failed, see "
-                    << directory << "/plots.log); the script is " << directory << "/plots.gp\n";
-      }
+      summary.plots_drawn = draw_plots(directory, labels, parameters.joint_spacing);
     return summary;
   }
 
