@@ -32,9 +32,8 @@ namespace softchain::chain
     , moment_gradient_(model.chain().n_joints())
     , generalised_force_(model.chain().n_angles())
     , residual_(model.chain().n_angles())
-    , tangent_(model.chain().n_angles(), model.chain().n_angles())
+    , tangent_(model.chain().n_joints())
     , direction_(model.chain().n_angles())
-    , factor_(model.chain().n_angles())
   {
     if (!(settings_.tolerance > 0.0) || settings_.max_iterations < 1 ||
         !(settings_.max_step_angle > 0.0))
@@ -104,23 +103,24 @@ namespace softchain::chain
       }
   }
 
-  // Lower triangle of H = K - dQ/dq block by block (header), then mirrored.
-  void ChainEquilibrium::assemble_tangent()
+  // H = K - dQ/dq in ChainTangent's form (header): U_j = -A_j^T (B_j + [M_j]x);
+  // D_j = K_j - A_j^T B_j A_j - (strictly lower part of A_j^T [M_j]x A_j),
+  // mirrored to the upper triangle (H is symmetric).
+  void ChainEquilibrium::prepare_tangent()
   {
-    const int n = model_.chain().n_joints();
-    for (int j = 0; j < n; ++j)
+    for (int j = 0; j < model_.chain().n_joints(); ++j)
       {
-        const Eigen::Matrix3d &axes_j = pose_.joint_axes[j];
-        const Eigen::Matrix3d  twist  = cross_matrix(moment_[j]);
-        const Eigen::Matrix3d  row    = axes_j.transpose() * (moment_gradient_[j] + twist);
-        for (int l = 0; l < j; ++l)
-          tangent_.block<3, 3>(3 * j, 3 * l) = -row * pose_.joint_axes[l];
-        Eigen::Matrix3d diagonal = axes_j.transpose() * moment_gradient_[j] * axes_j;
-        diagonal += (axes_j.transpose() * twist * axes_j).triangularView<Eigen::StrictlyLower>();
-        tangent_.block<3, 3>(3 * j, 3 * j) = -diagonal;
+        const Eigen::Matrix3d &axes  = pose_.joint_axes[j];
+        const Eigen::Matrix3d  twist = cross_matrix(moment_[j]);
+        tangent_.axes(j)             = axes;
+        tangent_.coupling(j)         = -axes.transpose() * (moment_gradient_[j] + twist);
+        Eigen::Matrix3d lower        = axes.transpose() * moment_gradient_[j] * axes;
+        lower += (axes.transpose() * twist * axes).triangularView<Eigen::StrictlyLower>();
+        Eigen::Matrix3d &d = tangent_.diagonal(j);
+        d                  = lower.selfadjointView<Eigen::Lower>();
+        d                  = -d;
+        d.diagonal() += stiffness_.segment<3>(3 * j);
       }
-    tangent_.diagonal() += stiffness_;
-    tangent_.triangularView<Eigen::StrictlyUpper>() = tangent_.transpose();
   }
 
   bool ChainEquilibrium::converged() const
@@ -138,11 +138,10 @@ namespace softchain::chain
   // shifted step is a descent direction of U), capped at max_step_angle.
   void ChainEquilibrium::newton_direction()
   {
-    double shift = 0.0;
-    for (factor_.compute(tangent_); factor_.info() != Eigen::Success;
-         factor_.compute(tangent_ + shift * Eigen::MatrixXd::Identity(tangent_.rows(), tangent_.cols())))
+    for (double shift = 0.0; !tangent_.factor(shift);)
       shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
-    direction_       = -factor_.solve(residual_);
+    tangent_.solve(residual_, direction_);
+    direction_ *= -1.0;
     const double big = direction_.lpNorm<Eigen::Infinity>();
     if (big > settings_.max_step_angle)
       direction_ *= settings_.max_step_angle / big;
@@ -208,7 +207,7 @@ namespace softchain::chain
                            " Newton iterations";
         else
           {
-            assemble_tangent();
+            prepare_tangent();
             newton_direction();
             ++result.iterations;
             if (!line_search(result.angles))
@@ -234,10 +233,18 @@ namespace softchain::chain
     return residual_;
   }
 
+  Eigen::VectorXd ChainEquilibrium::newton_step(const Eigen::VectorXd &q)
+  {
+    evaluate(q);
+    prepare_tangent();
+    newton_direction();
+    return direction_;
+  }
+
   Eigen::MatrixXd ChainEquilibrium::tangent(const Eigen::VectorXd &q)
   {
     evaluate(q);
-    assemble_tangent();
-    return tangent_;
+    prepare_tangent();
+    return tangent_.dense();
   }
 } // namespace softchain::chain

@@ -1,5 +1,4 @@
 #include <softchain/chain/kinematic_chain.h>
-#include <softchain/data/joint_angles.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -8,16 +7,29 @@ namespace softchain::chain
 {
   namespace
   {
-    // Columns: the Euler axes e_x, Rx(psi) e_y, Rx(psi) Ry(theta) e_z in the
-    // parent link's frame (the columns of dE/dq E^T, see the header).
-    Eigen::Matrix3d local_euler_axes(double psi, double theta)
+    // The shared convention E = Rx(psi) Ry(theta) Rz(phi) (data/joint_angles.h)
+    // multiplied out, and its Euler axes e_x, Rx(psi) e_y, Rx(psi) Ry(theta) e_z
+    // (the columns of dE/dq E^T), from one set of sines and cosines: the hot
+    // loop of every equilibrium evaluation. A test checks E against
+    // data::rotation_from_angles.
+    struct EulerFrame
     {
+      Eigen::Matrix3d rotation;
       Eigen::Matrix3d axes;
-      axes.col(0) << 1.0, 0.0, 0.0;
-      axes.col(1) << 0.0, std::cos(psi), std::sin(psi);
-      axes.col(2) << std::sin(theta), -std::sin(psi) * std::cos(theta),
-        std::cos(psi) * std::cos(theta);
-      return axes;
+    };
+
+    EulerFrame euler_frame(double psi, double theta, double phi)
+    {
+      const double cx = std::cos(psi), sx = std::sin(psi), cy = std::cos(theta),
+                   sy = std::sin(theta), cz = std::cos(phi), sz = std::sin(phi);
+      EulerFrame f;
+      f.rotation << cy * cz, -cy * sz, sy,                          //
+        cx * sz + sx * sy * cz, cx * cz - sx * sy * sz, -sx * cy, //
+        sx * sz - cx * sy * cz, sx * cz + cx * sy * sz, cx * cy;
+      f.axes << 1.0, 0.0, sy, //
+        0.0, cx, -sx * cy,    //
+        0.0, sx, cx * cy;
+      return f;
     }
   } // namespace
 
@@ -69,10 +81,10 @@ namespace softchain::chain
     Eigen::Vector3d position = joint_centres_[0];
     for (int i = 0; i < n_joints(); ++i)
       {
-        const data::JointAngles angles{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+        const EulerFrame frame  = euler_frame(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
         pose.joint_positions[i] = position;
-        pose.joint_axes[i]      = parent * local_euler_axes(angles.psi, angles.theta);
-        parent                  = parent * data::rotation_from_angles(angles);
+        pose.joint_axes[i]      = parent * frame.axes;
+        parent                  = parent * frame.rotation;
         pose.link_rotations[i]  = parent;
         const Eigen::Vector3d &next = i + 1 < n_joints() ? joint_centres_[i + 1] : tip_;
         position += parent * (next - joint_centres_[i]);

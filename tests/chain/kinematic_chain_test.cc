@@ -1,6 +1,7 @@
 // Forward kinematics of the chain against angle sets whose poses are known by
 // hand, and the kinematic Jacobian against finite differences.
 #include <softchain/chain/kinematic_chain.h>
+#include <softchain/data/joint_angles.h>
 
 #include "uniform_finger.h"
 
@@ -57,6 +58,18 @@ TEST_CASE("a single joint rotates the distal link by Rx(psi) Ry(theta) Rz(phi)")
       const ChainPose pose = pose_of(chain, c.angles);
       CHECK((pose.tip_position - c.tip).norm() < exact);
       CHECK((pose.link_rotations[0].col(1) - c.link_y).norm() < exact);
+    }
+}
+
+TEST_CASE("the chain's link rotations are the data layer's Euler convention")
+{
+  const KinematicChain chain({Eigen::Vector3d::Zero()}, Eigen::Vector3d::UnitX());
+  for (const Eigen::Vector3d &angles : {Eigen::Vector3d(0.3, -0.7, 2.5), Eigen::Vector3d(-2.9, 1.2, -0.4),
+                                       Eigen::Vector3d(1.0, 0.0, -3.1)})
+    {
+      const Eigen::Matrix3d expected =
+        softchain::data::rotation_from_angles({angles[0], angles[1], angles[2]});
+      CHECK((pose_of(chain, angles).link_rotations[0] - expected).norm() < exact);
     }
 }
 

@@ -15,6 +15,9 @@
 //   B_m = A_m - tr(A_m) I,  A_m = sum_{k distal to m} (x_k - c_m) f_k^T,
 // from da_{j,alpha} = a_{l,beta} x a_{j,alpha} and d(x_k - c_j) = a_{l,beta} x (x_k - c_max(j,l)).
 //
+// H has the block semiseparable form of ChainTangent, which solves the
+// Newton system in O(n).
+//
 // Globalisation, so that bending through 180 deg and beyond converges from
 // rest: the Newton step is capped at max_step_angle per angle; where H is not
 // positive definite (post-buckling) it is shifted, H + mu I, which keeps the
@@ -28,7 +31,8 @@
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/chain_model.h>
 
-#include <Eigen/Cholesky>
+#include <softchain/chain/chain_tangent.h>
+
 #include <Eigen/Core>
 #include <string>
 
@@ -66,6 +70,8 @@ namespace softchain::chain
     double                 energy(const Eigen::VectorXd &q);
     Eigen::VectorXd        residual(const Eigen::VectorXd &q);
     Eigen::MatrixXd        tangent(const Eigen::VectorXd &q);
+    // The (shifted, capped) Newton step at q, by ChainTangent's O(n) solve.
+    Eigen::VectorXd        newton_step(const Eigen::VectorXd &q);
     // Pose of the last evaluation.
     const ChainPose &pose() const { return pose_; }
 
@@ -79,7 +85,7 @@ namespace softchain::chain
 
     void   evaluate(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
-    void   assemble_tangent();
+    void   prepare_tangent();
     bool   converged() const;
     double relative_residual() const;
     void   newton_direction();
@@ -103,8 +109,7 @@ namespace softchain::chain
     double                       residual_scale_ = 0.0;   // |K q| + |J_p p| + |Q|
     double                       energy_ = 0.0;
     double                       energy_magnitude_ = 0.0; // sum of |terms| of U
-    Eigen::MatrixXd              tangent_;
+    ChainTangent                 tangent_;
     Eigen::VectorXd              direction_;
-    Eigen::LLT<Eigen::MatrixXd>  factor_;
   };
 } // namespace softchain::chain

@@ -6,7 +6,8 @@
 //
 // Joint angles q = (psi_0, theta_0, phi_0, ..., psi_{n-1}, theta_{n-1},
 // phi_{n-1}) are the relative rotations of ARCHITECTURE.md with the shared
-// Euler convention (data/joint_angles.h): E(q_i) = Rx(psi) Ry(theta) Rz(phi).
+// Euler convention (data/joint_angles.h): E(q_i) = Rx(psi) Ry(theta) Rz(phi),
+// the convention of the reduction that measured the angles.
 // Forward kinematics (R_{-1} = I, c_0 = J_0):
 //   R_i     = R_{i-1} E(q_i)
 //   c_{i+1} = c_i + R_i (J_{i+1} - J_i),   tip = c_{n-1} + R_{n-1} (T - J_{n-1})

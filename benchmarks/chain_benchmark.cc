@@ -1,0 +1,149 @@
+// Speed of the chain tier (issue 6): one equilibrium of a 9-joint finger from
+// rest, a sweep of 100 pressures with warm starts, a 5-finger hand (45
+// joints), and the heap memory of one finger (model + solver workspace).
+// The paper's SOFA chain took about 6 ms per finger (Sec. V).
+// Run: chain_benchmark --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+#include <softchain/chain/chain_equilibrium.h>
+
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+
+#include <memory>
+#include <stdexcept>
+
+using namespace softchain::chain;
+
+namespace
+{
+  constexpr int    n_joints = 9;
+  constexpr double a        = 0.01;  // m, the paper's joint spacing
+  constexpr double p_max    = 8e4;   // Pa, the paper's largest pressure
+
+  // A PneuFlex-like finger: stiffness decreasing towards the tip, J_p such
+  // that p_max bends it through about 200 deg.
+  ChainModel finger(double scale = 1.0)
+  {
+    std::vector<Eigen::Vector3d> joints, k;
+    Eigen::VectorXd              jp = Eigen::VectorXd::Zero(3 * n_joints);
+    for (int i = 0; i < n_joints; ++i)
+      {
+        joints.emplace_back((i + 0.5) * a, -0.0003 * i, 0.0);
+        k.push_back(scale * (1.0 - 0.05 * i) * Eigen::Vector3d(0.2, 0.05, 0.05));
+        jp[3 * i + 2] = scale * (1.0 - 0.05 * i) * 0.05 * 0.39 / p_max;
+      }
+    return ChainModel("finger", KinematicChain(joints, {n_joints * a, -0.003, 0.0}),
+                      JointStiffness(k), PressureActuation(jp));
+  }
+
+  // A contact-like force at the fingertip, in world axes.
+  ChainLoad load(double pressure) { return {pressure, {{{n_joints * a, 0.0, 0.0}, {0.0, 0.3, 0.05}}}}; }
+
+  void require(const Equilibrium &e)
+  {
+    if (!e.converged)
+      throw std::runtime_error("benchmark equilibrium failed: " + e.failure);
+  }
+
+  void report_iterations(benchmark::State &state, int iterations, int solves)
+  {
+    state.counters["newton_iterations_per_solve"] = double(iterations) / solves;
+  }
+} // namespace
+
+// Pressure only: K q = J_p p is linear, one Newton step.
+static void equilibrium_pressure_from_rest(benchmark::State &state)
+{
+  const ChainModel model = finger();
+  ChainEquilibrium solver(model);
+  int              iterations = 0;
+  for (auto _ : state)
+    {
+      const Equilibrium e = solver.solve({0.5 * p_max, {}});
+      require(e);
+      iterations = e.iterations;
+      benchmark::DoNotOptimize(e.angles.data());
+    }
+  report_iterations(state, iterations, 1);
+}
+BENCHMARK(equilibrium_pressure_from_rest);
+
+// Pressure and a tip force: the nonlinear case, ~100 deg of bending.
+static void equilibrium_pressure_and_force_from_rest(benchmark::State &state)
+{
+  const ChainModel model = finger();
+  ChainEquilibrium solver(model);
+  int              iterations = 0;
+  for (auto _ : state)
+    {
+      const Equilibrium e = solver.solve(load(0.5 * p_max));
+      require(e);
+      iterations = e.iterations;
+      benchmark::DoNotOptimize(e.angles.data());
+    }
+  report_iterations(state, iterations, 1);
+}
+BENCHMARK(equilibrium_pressure_and_force_from_rest);
+
+// 100 pressures 0..p_max with the tip force, each from the previous pose.
+static void pressure_sweep_100_warm_start(benchmark::State &state)
+{
+  const ChainModel model = finger();
+  ChainEquilibrium solver(model);
+  int              iterations = 0;
+  for (auto _ : state)
+    {
+      Eigen::VectorXd q = Eigen::VectorXd::Zero(3 * n_joints);
+      iterations        = 0;
+      for (int s = 1; s <= 100; ++s)
+        {
+          const Equilibrium e = solver.solve(load(p_max * s / 100.0), q);
+          require(e);
+          q = e.angles;
+          iterations += e.iterations;
+        }
+      benchmark::DoNotOptimize(q.data());
+    }
+  report_iterations(state, iterations, 100);
+}
+BENCHMARK(pressure_sweep_100_warm_start)->Unit(benchmark::kMicrosecond);
+
+// Five fingers of different stiffness (45 joints), each under pressure and
+// its own tip force, solved from rest.
+static void hand_5_fingers_from_rest(benchmark::State &state)
+{
+  std::vector<ChainModel> fingers;
+  for (int f = 0; f < 5; ++f)
+    fingers.push_back(finger(0.8 + 0.1 * f));
+  std::vector<std::unique_ptr<ChainEquilibrium>> solvers;
+  for (const ChainModel &m : fingers)
+    solvers.push_back(std::make_unique<ChainEquilibrium>(m));
+  for (auto _ : state)
+    for (auto &solver : solvers)
+      {
+        const Equilibrium e = solver->solve(load(0.5 * p_max));
+        require(e);
+        benchmark::DoNotOptimize(e.angles.data());
+      }
+}
+BENCHMARK(hand_5_fingers_from_rest)->Unit(benchmark::kMicrosecond);
+
+// Heap bytes of one finger: model and solver workspace after a solve
+// (glibc's count of allocated bytes, so including allocator overhead).
+static void memory_per_finger(benchmark::State &state)
+{
+  double bytes = 0.0;
+  for (auto _ : state)
+    {
+      const std::size_t before = mallinfo2().uordblks;
+      auto              model  = std::make_unique<ChainModel>(finger());
+      auto              solver = std::make_unique<ChainEquilibrium>(*model);
+      require(solver->solve(load(0.5 * p_max)));
+      bytes = double(mallinfo2().uordblks - before) + sizeof(ChainModel) + sizeof(ChainEquilibrium);
+      benchmark::DoNotOptimize(solver.get());
+    }
+  state.counters["heap_bytes_per_finger"] = bytes;
+}
+BENCHMARK(memory_per_finger)->Iterations(1);
+
+BENCHMARK_MAIN();
