@@ -80,8 +80,8 @@ namespace softchain::reduction
   }
 
   // Fig. 5c (k_phi, every method and b), 5d (k_psi), 7 (k_theta).
-  std::string StiffnessPlots::all_labels_plot(const std::string &name, const std::string &column,
-                                              const std::string &ylabel) const
+  std::string StiffnessPlots::all_labels_plot(const std::string &name,
+                                              const std::string &column) const
   {
     const std::vector<std::string> labels = labels_with(column);
     if (labels.empty())
@@ -89,7 +89,7 @@ namespace softchain::reduction
     std::ostringstream plot;
     plot << "set output \"" << directory_ << "/" << name << ".png\"\n"
          << "set title \"" << column << " at the largest load, every method and b\"\n"
-         << "set ylabel \"" << ylabel << "\"\n"
+         << "set ylabel \"" << column << " (N m/rad)\"\n"
          << "plot ";
     for (std::size_t i = 0; i < labels.size(); ++i)
       plot << (i ? ", " : "") << "\"" << directory_ << "/" << labels[i]
@@ -111,9 +111,8 @@ namespace softchain::reduction
            << "set xlabel \"x (m)\"\n";
     for (const auto &label : labels_)
       script << per_pressure_plot(label);
-    script << all_labels_plot("kphi_methods_and_b", "k_phi", "k_phi (N m/rad)")
-           << all_labels_plot("kpsi", "k_psi", "k_psi (N m/rad)")
-           << all_labels_plot("ktheta", "k_theta", "k_theta (N m/rad)");
+    script << all_labels_plot("kphi_methods_and_b", "k_phi") << all_labels_plot("kpsi", "k_psi")
+           << all_labels_plot("ktheta", "k_theta");
     return script.str();
   }
 

@@ -18,15 +18,14 @@ namespace softchain::reduction
     // `directory`; `spacing`: a.
     StiffnessPlots(std::string directory, std::vector<std::string> labels, double spacing);
 
-    std::string script() const;
     // Writes plots.gp and runs gnuplot on it if installed (its messages go
     // to plots.log). Returns whether gnuplot ran and succeeded.
     bool draw() const;
 
   private:
+    std::string script() const;
     std::string per_pressure_plot(const std::string &label) const;
-    std::string all_labels_plot(const std::string &name, const std::string &column,
-                                const std::string &ylabel) const;
+    std::string all_labels_plot(const std::string &name, const std::string &column) const;
     // Distinct pressures with a finite k_phi in <label>_kphi_vs_pressure.csv.
     std::vector<double> pressures_with_kphi(const std::string &label) const;
     // The labels whose <label>.csv has a finite value in `column`.
