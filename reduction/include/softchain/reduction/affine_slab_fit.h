@@ -18,8 +18,6 @@ namespace softchain::reduction
     AffineSlabFit(const SlabSelection &slab, const std::vector<data::Point3> &X,
                   const std::vector<data::Point3> &x, const std::string &sample);
 
-    const Eigen::Matrix3d &A() const { return A_; }
-    const Eigen::Vector3d &u() const { return u_; }
     const Eigen::Matrix3d &rotation() const { return R_; }
     // Principal stretches of U_i (singular values of A_i), largest first.
     const Eigen::Vector3d &principal_stretches() const { return stretches_; }
