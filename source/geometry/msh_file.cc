@@ -1,7 +1,7 @@
 #include <softchain/data/input_error.h>
 #include <softchain/geometry/msh_file.h>
+#include <softchain/geometry/text_lines.h>
 
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <unordered_map>
@@ -10,51 +10,17 @@ namespace softchain::geometry
 {
   namespace
   {
-    // Line-by-line reader that knows where it is, for the messages.
-    class Lines
+    // Skips to the next "$Section" line.
+    bool next_section(TextLines &lines, std::string &name)
     {
-    public:
-      explicit Lines(const std::string &path)
-        : in_(path)
-        , path_(path)
-      {
-        if (!in_)
-          throw data::InputError(path + ": cannot open the mesh file");
-      }
-
-      std::istringstream next()
-      {
-        std::string line;
-        if (!std::getline(in_, line))
-          fail("unexpected end of file");
-        ++number_;
-        return std::istringstream(line);
-      }
-
-      bool next_section(std::string &name)
-      {
-        for (std::string line; std::getline(in_, line);)
+      for (std::string line; lines.next(line);)
+        if (!line.empty() && line[0] == '$')
           {
-            ++number_;
-            if (!line.empty() && line[0] == '$')
-              {
-                name = line.substr(0, line.find_last_not_of(" \r") + 1);
-                return true;
-              }
+            name = line.substr(0, line.find_last_not_of(' ') + 1);
+            return true;
           }
-        return false;
-      }
-
-      [[noreturn]] void fail(const std::string &what) const
-      {
-        throw data::InputError(path_ + ":" + std::to_string(number_) + ": " + what);
-      }
-
-    private:
-      std::ifstream in_;
-      std::string   path_;
-      int           number_ = 0;
-    };
+      return false;
+    }
 
     // gmsh element type: number of nodes and whether it is a cell (3D), a
     // facet (2D) or skipped (points and lines).
@@ -76,51 +42,51 @@ namespace softchain::geometry
                                                                 {4, {4, Role::cell}},
                                                                 {5, {8, Role::cell}}};
 
-    void read_format(Lines &lines)
+    void read_format(TextLines &lines)
     {
       double version = 0;
       int    file_type = -1;
-      lines.next() >> version >> file_type;
+      lines.next_stream() >> version >> file_type;
       if (version < 2.0 || version >= 3.0 || file_type != 0)
         lines.fail("expected an ASCII msh 2.x file (gmsh -format msh22)");
     }
 
-    void read_physical_names(Lines &lines, MshFile &mesh)
+    void read_physical_names(TextLines &lines, MshFile &mesh)
     {
       std::size_t n = 0;
-      lines.next() >> n;
+      lines.next_stream() >> n;
       for (std::size_t i = 0; i < n; ++i)
         {
           PhysicalGroup group;
           std::string   name;
-          auto          line = lines.next();
+          auto          line = lines.next_stream();
           if (!(line >> group.dimension >> group.tag >> std::quoted(name)))
             lines.fail("malformed physical name");
           mesh.groups[name] = group;
         }
     }
 
-    void read_nodes(Lines &lines, MshFile &mesh, std::unordered_map<std::size_t, std::size_t> &index)
+    void read_nodes(TextLines &lines, MshFile &mesh, std::unordered_map<std::size_t, std::size_t> &index)
     {
       std::size_t n = 0;
-      lines.next() >> n;
+      lines.next_stream() >> n;
       mesh.nodes.resize(n);
       for (std::size_t i = 0; i < n; ++i)
         {
           std::size_t id = 0;
-          auto        line = lines.next();
+          auto        line = lines.next_stream();
           if (!(line >> id >> mesh.nodes[i].x() >> mesh.nodes[i].y() >> mesh.nodes[i].z()))
             lines.fail("malformed node");
           index[id] = i;
         }
     }
 
-    MshElement read_element(Lines &lines, const std::unordered_map<std::size_t, std::size_t> &index,
+    MshElement read_element(TextLines &lines, const std::unordered_map<std::size_t, std::size_t> &index,
                             Role &role)
     {
       MshElement element;
       int        type = 0, n_tags = 0;
-      auto       line = lines.next();
+      auto       line = lines.next_stream();
       line >> element.id >> type >> n_tags;
       const auto known = element_types.find(type);
       if (!line || known == element_types.end())
@@ -142,11 +108,11 @@ namespace softchain::geometry
       return element;
     }
 
-    void read_elements(Lines &lines, MshFile &mesh,
+    void read_elements(TextLines &lines, MshFile &mesh,
                        const std::unordered_map<std::size_t, std::size_t> &index)
     {
       std::size_t n = 0;
-      lines.next() >> n;
+      lines.next_stream() >> n;
       for (std::size_t i = 0; i < n; ++i)
         {
           Role             role;
@@ -163,10 +129,10 @@ namespace softchain::geometry
   {
     MshFile mesh;
     mesh.path = path;
-    Lines                                        lines(path);
+    TextLines                                    lines(path, "mesh file");
     std::unordered_map<std::size_t, std::size_t> index; // node number -> position
     bool                                         has_format = false;
-    for (std::string section; lines.next_section(section);)
+    for (std::string section; next_section(lines, section);)
       {
         if (section == "$MeshFormat")
           {

@@ -1,6 +1,7 @@
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 #include <softchain/geometry/spring_network_file.h>
+#include <softchain/geometry/text_lines.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,49 +13,29 @@ namespace softchain::geometry
   {
     const std::string header = "# SoftChain spring network v1";
 
-    // Reader of the significant lines (not blank, not comments), with numbers.
-    class SignificantLines
+    // The next line that is neither blank nor a comment, as a stream.
+    bool next_significant(TextLines &lines, std::istringstream &stream)
     {
-    public:
-      explicit SignificantLines(const std::string &path)
-        : in_(path)
-        , path_(path)
-      {
-        if (!in_)
-          throw data::InputError(path + ": cannot open the spring network file");
-        std::string first;
-        std::getline(in_, first);
-        number_ = 1;
-        if (first.substr(0, first.find_last_not_of(" \r") + 1) != header)
-          fail("expected the first line '" + header + "'");
-      }
+      for (std::string line; lines.next(line);)
+        {
+          const auto first = line.find_first_not_of(" \t");
+          if (first != std::string::npos && line[first] != '#')
+            {
+              stream = std::istringstream(line);
+              return true;
+            }
+        }
+      return false;
+    }
 
-      bool next(std::istringstream &line)
-      {
-        for (std::string text; std::getline(in_, text);)
-          {
-            ++number_;
-            const auto first = text.find_first_not_of(" \t\r");
-            if (first == std::string::npos || text[first] == '#')
-              continue;
-            line = std::istringstream(text);
-            return true;
-          }
-        return false;
-      }
+    void read_header(TextLines &lines)
+    {
+      std::string first;
+      if (!lines.next(first) || first.substr(0, first.find_last_not_of(' ') + 1) != header)
+        lines.fail("expected the first line '" + header + "'");
+    }
 
-      [[noreturn]] void fail(const std::string &what) const
-      {
-        throw data::InputError(path_ + ":" + std::to_string(number_) + ": " + what);
-      }
-
-    private:
-      std::ifstream in_;
-      std::string   path_;
-      int           number_ = 0;
-    };
-
-    SpringNetwork::Polyline read_polyline(SignificantLines &lines, std::istringstream &line)
+    SpringNetwork::Polyline read_polyline(TextLines &lines, std::istringstream &line)
     {
       std::string kind;
       long        n = -1;
@@ -65,7 +46,7 @@ namespace softchain::geometry
       for (auto &p : polyline.points)
         {
           std::string rest;
-          if (!lines.next(line) || !(line >> p.x() >> p.y() >> p.z()) || (line >> rest))
+          if (!next_significant(lines, line) || !(line >> p.x() >> p.y() >> p.z()) || (line >> rest))
             lines.fail("expected a node 'x y z' (polyline of " + std::to_string(n) + " nodes)");
         }
       return polyline;
@@ -74,9 +55,10 @@ namespace softchain::geometry
 
   std::vector<SpringNetwork> SpringNetworkFile::read(const std::string &path)
   {
-    SignificantLines           lines(path);
+    TextLines lines(path, "spring network file");
+    read_header(lines);
     std::vector<SpringNetwork> networks;
-    for (std::istringstream line; lines.next(line);)
+    for (std::istringstream line; next_significant(lines, line);)
       {
         std::string keyword;
         line >> keyword;

@@ -1,0 +1,28 @@
+#pragma once
+// TextLines: reads a text file line by line and knows where it is, so that
+// every complaint about the file is an InputError "FILE:LINE: what".
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace softchain::geometry
+{
+  class TextLines
+  {
+  public:
+    // Throws InputError "PATH: cannot open the KIND" if the file is missing.
+    TextLines(const std::string &path, const std::string &kind);
+
+    // The next line (false at the end of the file).
+    bool next(std::string &line);
+    // The next line as a stream; fails with "unexpected end of file" at the end.
+    std::istringstream next_stream();
+
+    [[noreturn]] void fail(const std::string &what) const;
+
+  private:
+    std::ifstream in_;
+    std::string   path_;
+    int           number_ = 0;
+  };
+} // namespace softchain::geometry
