@@ -1,6 +1,7 @@
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 #include <softchain/geometry/gmsh_mesher.h>
+#include <softchain/geometry/text_lines.h>
 
 #include <cstdlib>
 #include <deque>
@@ -29,43 +30,34 @@ namespace softchain::geometry
       return quoted + "'";
     }
 
-    void write_file(const fs::path &path, const std::string &content)
-    {
-      std::ofstream out(path, std::ios::binary);
-      out << content;
-      if (!out)
-        throw data::InputError("cannot write " + path.string());
-    }
-
-    // What gmsh said, for the error message: its first error lines (the
-    // cause), or the end of its log if it reported no error.
-    std::string log_summary(const fs::path &path)
+    // What gmsh said: its first error lines (the cause) and the end of its log.
+    struct GmshLog
     {
       std::vector<std::string> errors;
       std::deque<std::string>  tail;
-      std::ifstream            in(path);
-      for (std::string line; std::getline(in, line);)
-        {
-          if (line.rfind("Error", 0) == 0 && errors.size() < 3)
-            errors.push_back(line);
-          tail.push_back(line);
-          if (tail.size() > 8)
-            tail.pop_front();
-        }
-      std::string summary;
-      for (const auto &line : errors.empty() ? std::vector<std::string>(tail.begin(), tail.end()) : errors)
-        summary += "\n  " + line;
-      return summary;
-    }
 
-    bool log_has_error(const fs::path &path)
-    {
-      std::ifstream in(path);
-      for (std::string line; std::getline(in, line);)
-        if (line.rfind("Error", 0) == 0)
-          return true;
-      return false;
-    }
+      explicit GmshLog(const fs::path &path)
+      {
+        std::ifstream in(path);
+        for (std::string line; std::getline(in, line);)
+          {
+            if (line.rfind("Error", 0) == 0 && errors.size() < 3)
+              errors.push_back(line);
+            tail.push_back(line);
+            if (tail.size() > 8)
+              tail.pop_front();
+          }
+      }
+
+      // For the message: the errors, or the end of the log if there were none.
+      std::string summary() const
+      {
+        std::string text;
+        for (const auto &line : errors.empty() ? std::vector<std::string>(tail.begin(), tail.end()) : errors)
+          text += "\n  " + line;
+        return text;
+      }
+    };
   } // namespace
 
   std::string GmshJob::key() const
@@ -81,13 +73,7 @@ namespace softchain::geometry
 
   std::string GmshJob::bundled_script(const std::string &file_name)
   {
-    const fs::path path = fs::path(SOFTCHAIN_MESHES_DIR) / file_name;
-    std::ifstream  in(path);
-    if (!in)
-      throw data::InputError("cannot read the gmsh script " + path.string());
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return TextLines::read_all((fs::path(SOFTCHAIN_MESHES_DIR) / file_name).string(), "gmsh script");
   }
 
   GmshMesher::GmshMesher(std::string cache_dir, std::string gmsh)
@@ -117,10 +103,9 @@ namespace softchain::geometry
 
   void GmshMesher::run(const GmshJob &job, const std::string &directory)
   {
-    fs::create_directories(directory);
-    write_file(fs::path(directory) / script_name, job.script);
+    TextLines::write_all((fs::path(directory) / script_name).string(), job.script, "gmsh script");
     for (const auto &[name, content] : job.files)
-      write_file(fs::path(directory) / name, content);
+      TextLines::write_all((fs::path(directory) / name).string(), content, "gmsh input file");
     // Written under a temporary name (per process) and renamed: an
     // interrupted run never leaves a mesh that looks cached, and two
     // processes meshing the same design do not write into one file.
@@ -132,13 +117,14 @@ namespace softchain::geometry
     command += " -o " + partial + " > " + log_name + " 2>&1";
     ++n_runs_;
     const int status = std::system(command.c_str());
-    const fs::path log = fs::path(directory) / log_name;
-    if (status != 0 || log_has_error(log) || !fs::exists(fs::path(directory) / partial))
+    const fs::path log_path = fs::path(directory) / log_name;
+    const GmshLog  log(log_path);
+    if (status != 0 || !log.errors.empty() || !fs::exists(fs::path(directory) / partial))
       {
         std::error_code ignored; // nothing to remove if gmsh wrote nothing
         fs::remove(fs::path(directory) / partial, ignored);
-        throw data::InputError(job.name + ": gmsh failed (" + gmsh_ + ", log " + log.string() +
-                               "):" + log_summary(log));
+        throw data::InputError(job.name + ": gmsh failed (" + gmsh_ + ", log " +
+                               log_path.string() + "):" + log.summary());
       }
     fs::rename(fs::path(directory) / partial, fs::path(directory) / mesh_name);
   }

@@ -3,8 +3,6 @@
 #include <softchain/geometry/spring_network_file.h>
 #include <softchain/geometry/text_lines.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace softchain::geometry
@@ -97,12 +95,6 @@ namespace softchain::geometry
 
   void SpringNetworkFile::write(const std::string &path, const std::vector<SpringNetwork> &networks)
   {
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty())
-      std::filesystem::create_directories(parent);
-    std::ofstream out(path);
-    out << text(networks);
-    if (!out)
-      throw data::InputError(path + ": cannot write the spring network file");
+    TextLines::write_all(path, text(networks), "spring network file");
   }
 } // namespace softchain::geometry

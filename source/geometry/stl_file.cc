@@ -1,26 +1,17 @@
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 #include <softchain/geometry/stl_file.h>
+#include <softchain/geometry/text_lines.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 namespace softchain::geometry
 {
   namespace
   {
-    std::string file_bytes(const std::string &path)
-    {
-      std::ifstream in(path, std::ios::binary);
-      if (!in)
-        throw data::InputError(path + ": cannot open the STL file");
-      return std::string(std::istreambuf_iterator<char>(in), {});
-    }
-
     // Binary STL: 80-byte header, uint32 count, 50 bytes per facet (normal,
     // three vertices as float32, uint16 attribute).
     bool is_binary(const std::string &bytes)
@@ -76,7 +67,7 @@ namespace softchain::geometry
 
   StlFile StlFile::read(const std::string &path)
   {
-    const std::string bytes = file_bytes(path);
+    const std::string bytes = TextLines::read_all(path, "STL file");
     StlFile           stl;
     stl.triangles = is_binary(bytes) ? binary_triangles(bytes) : ascii_triangles(bytes, path);
     return stl;
@@ -100,10 +91,7 @@ namespace softchain::geometry
 
   void StlFile::write(const std::string &path) const
   {
-    std::ofstream out(path);
-    out << ascii_text();
-    if (!out)
-      throw data::InputError(path + ": cannot write the STL file");
+    TextLines::write_all(path, ascii_text(), "STL file");
   }
 
   StlFile StlFile::subdivided(int levels) const

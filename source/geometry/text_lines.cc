@@ -1,6 +1,8 @@
 #include <softchain/data/input_error.h>
 #include <softchain/geometry/text_lines.h>
 
+#include <filesystem>
+
 namespace softchain::geometry
 {
   TextLines::TextLines(const std::string &path, const std::string &kind)
@@ -27,6 +29,27 @@ namespace softchain::geometry
     if (!next(line))
       fail("unexpected end of file");
     return std::istringstream(line);
+  }
+
+  std::string TextLines::read_all(const std::string &path, const std::string &kind)
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw data::InputError(path + ": cannot open the " + kind);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  void TextLines::write_all(const std::string &path, const std::string &text, const std::string &kind)
+  {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty())
+      std::filesystem::create_directories(parent);
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out)
+      throw data::InputError(path + ": cannot write the " + kind);
   }
 
   void TextLines::fail(const std::string &what) const

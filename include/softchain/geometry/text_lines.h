@@ -1,6 +1,7 @@
 #pragma once
 // TextLines: reads a text file line by line and knows where it is, so that
-// every complaint about the file is an InputError "FILE:LINE: what".
+// every complaint about the file is an InputError "FILE:LINE: what"; and the
+// whole-file reads and writes of the geometry module.
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -19,6 +20,12 @@ namespace softchain::geometry
     std::istringstream next_stream();
 
     [[noreturn]] void fail(const std::string &what) const;
+
+    // The whole file (bytes as they are); InputError "PATH: cannot open the KIND".
+    static std::string read_all(const std::string &path, const std::string &kind);
+    // Writes `text`, creating missing parent directories; InputError
+    // "PATH: cannot write the KIND".
+    static void write_all(const std::string &path, const std::string &text, const std::string &kind);
 
   private:
     std::ifstream in_;
