@@ -1,10 +1,10 @@
 #pragma once
 // Paths and small files for the geometry tests (SOFTCHAIN_SOURCE_DIR and
 // SOFTCHAIN_BINARY_DIR come from the test target's compile definitions).
+#include <softchain/geometry/text_lines.h>
+
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -28,15 +28,7 @@ namespace softchain::geometry::testing
 
   inline void write_text(const std::string &path, const std::string &text)
   {
-    std::ofstream(path) << text;
-  }
-
-  inline std::string read_text(const std::string &path)
-  {
-    std::ifstream      in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    TextLines::write_all(path, text, "test file");
   }
 
   // A copy of a shipped design with some entries of "Finger design" changed,
@@ -44,7 +36,8 @@ namespace softchain::geometry::testing
   inline std::string design_variant(const std::string &design, const std::string &directory,
                                     const std::vector<std::pair<std::string, std::string>> &changes)
   {
-    std::string text = read_text(source_path("parameter_files/" + design + ".prm"));
+    std::string text =
+      TextLines::read_all(source_path("parameter_files/" + design + ".prm"), "design file");
     for (const auto &[name, value] : changes)
       {
         const std::regex entry("set " + name + " *=[^#\n]*");
