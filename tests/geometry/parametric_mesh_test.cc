@@ -35,9 +35,11 @@ namespace
     MshFile         mesh;
   };
 
-  Meshed mesh_design(const std::string &name, const std::string &element_shape)
+  // `test` keeps the scratch directories of test cases apart (ctest -j).
+  Meshed mesh_design(const std::string &test, const std::string &name,
+                     const std::string &element_shape)
   {
-    const std::string dir = scratch_directory("parametric_" + name + "_" + element_shape);
+    const std::string dir = scratch_directory(test + "_" + name + "_" + element_shape);
     const std::string prm =
       design_variant(name, dir, {{"Resolution", "0"}, {"Element shape", element_shape}});
     GmshMesher mesher(dir + "/cache");
@@ -53,7 +55,7 @@ TEST_CASE("parametric designs match their analytic volumes", "[geometry][mesh]")
   const auto name          = GENERATE(as<std::string>{}, "p10", "p13", "parallelepiped");
   const auto element_shape = GENERATE(as<std::string>{}, "tet", "hex");
   CAPTURE(name, element_shape);
-  const Meshed            m = mesh_design(name, element_shape);
+  const Meshed            m = mesh_design("volumes", name, element_shape);
   const FingerDimensions &d = m.design.dimensions;
 
   CHECK(CellGeometry::total_volume(m.mesh) ==
@@ -71,7 +73,7 @@ TEST_CASE("parametric designs match their analytic volumes", "[geometry][mesh]")
 
 TEST_CASE("parametric meshes carry the physical groups", "[geometry][mesh]")
 {
-  const Meshed m = mesh_design("p10", "tet");
+  const Meshed m = mesh_design("groups", "p10", "tet");
   for (const char *name : {"base", "cavity", "tip"})
     CHECK(m.mesh.has_group(name, 2));
   CHECK(m.mesh.has_group("silicone", 3));
@@ -84,7 +86,7 @@ TEST_CASE("parametric meshes carry the physical groups", "[geometry][mesh]")
 
 TEST_CASE("cavity triangles point out of the silicone, into the cavity", "[geometry][mesh]")
 {
-  const Meshed            m = mesh_design("parallelepiped", "tet");
+  const Meshed            m = mesh_design("orientation", "parallelepiped", "tet");
   const FingerDimensions &d = m.design.dimensions;
   const CavitySurface     cavity(m.mesh);
   const Eigen::Vector3d   centre(0.5 * (d.cavity_start() + d.cavity_end()),
@@ -102,7 +104,7 @@ TEST_CASE("every spring node lies inside the silicone of the mesh", "[geometry][
 {
   const auto name = GENERATE(as<std::string>{}, "p10", "p13", "parallelepiped");
   CAPTURE(name);
-  const Meshed m        = mesh_design(name, "tet");
+  const Meshed m        = mesh_design("springs", name, "tet");
   const auto   networks = SpringNetworkFile::read(m.generated.spring_file);
   REQUIRE(networks.size() == 2);
   const PointLocator locator(m.mesh);
