@@ -4,9 +4,8 @@
 #include <softchain/chain/chain_validation.h>
 #include <softchain/chain/mjcf_export.h>
 #include <softchain/chain/stiffness_files.h>
+#include <softchain/chain/tip_pose_fit.h>
 #include <softchain/chain/validation_plot.h>
-
-#include <softchain/data/input_error.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -28,18 +27,6 @@ namespace softchain::chain
           high = high.cwiseMax(x);
         }
       return {low, high};
-    }
-
-    // Tip point: reference centroid of the tip-face nodes.
-    Eigen::Vector3d tip_point(const data::ActuationDatabase &database)
-    {
-      const data::MeshRecord &mesh = database.mesh();
-      if (mesh.tip_nodes.empty())
-        throw data::InputError(database.path() + ": /mesh/tip_nodes is empty: no tip for the chain");
-      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      for (const std::int64_t i : mesh.tip_nodes)
-        sum += Eigen::Vector3d(mesh.X.at(i)[0], mesh.X.at(i)[1], mesh.X.at(i)[2]);
-      return sum / static_cast<double>(mesh.tip_nodes.size());
     }
 
     // M1 and M2 (the selected one required, the other if present).
@@ -115,7 +102,8 @@ namespace softchain::chain
     const std::string stiffness_dir = (std::filesystem::path(output_dir) / "stiffness").string();
     const std::string chain_dir     = (std::filesystem::path(output_dir) / "chain").string();
 
-    std::vector<ChainModel> models = read_models(stiffness_dir, p, tip_point(database));
+    std::vector<ChainModel> models = read_models(
+      stiffness_dir, p, TipPoseFit::of_mesh(mesh, database.path()).reference_centroid());
     const ChainModel        selected =
       *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
     if (export_mjcf)

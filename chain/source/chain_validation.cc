@@ -1,5 +1,4 @@
 #include <softchain/chain/chain_validation.h>
-#include <softchain/data/input_error.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,15 +10,6 @@ namespace softchain::chain
     using data::CsvTable;
 
     Eigen::Vector3d vector_of(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
-
-    std::vector<Eigen::Vector3d> nodes_of(const std::vector<data::Point3>  &x,
-                                          const std::vector<std::int64_t> &indices)
-    {
-      std::vector<Eigen::Vector3d> nodes;
-      for (const std::int64_t i : indices)
-        nodes.push_back(vector_of(x.at(i)));
-      return nodes;
-    }
 
     ChainLoad load_of(const data::Actuation &actuation)
     {
@@ -73,9 +63,7 @@ namespace softchain::chain
     : finger_length_(finger_length)
   {
     const data::MeshRecord &mesh = database.mesh();
-    if (mesh.tip_nodes.empty())
-      throw data::InputError(database.path() + ": /mesh/tip_nodes is empty, no FEM tip pose to compare with");
-    const TipPoseFit fit(nodes_of(mesh.X, mesh.tip_nodes));
+    const TipPoseFit        fit  = TipPoseFit::of_mesh(mesh, database.path());
     for (const std::string &id : database.sample_ids())
       {
         const data::SampleRecord sample = database.read_sample(id);
@@ -83,7 +71,7 @@ namespace softchain::chain
         if (!sample.converged() || std::find(roles.begin(), roles.end(), role) == roles.end())
           continue;
         samples_.push_back({id, role, load_of(sample.actuation),
-                            fit.fit(nodes_of(sample.x, mesh.tip_nodes))});
+                            fit.fit(select_nodes(sample.x, mesh.tip_nodes))});
       }
   }
 

@@ -49,14 +49,6 @@ namespace softchain::chain
         "KinematicChain: the tip must lie beyond the last joint along x");
   }
 
-  double KinematicChain::length_from_first_joint() const
-  {
-    double length = 0.0;
-    for (std::size_t i = 1; i < joint_centres_.size(); ++i)
-      length += (joint_centres_[i] - joint_centres_[i - 1]).norm();
-    return length + (tip_ - joint_centres_.back()).norm();
-  }
-
   int KinematicChain::link_of(const Eigen::Vector3d &X) const
   {
     int link = -1;

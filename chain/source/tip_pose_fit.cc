@@ -1,4 +1,5 @@
 #include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/input_error.h>
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -32,6 +33,27 @@ namespace softchain::chain
     const Eigen::Vector3d s = Eigen::JacobiSVD<Eigen::Matrix3d>(spread).singularValues();
     if (reference_nodes.size() < 3 || !(s[1] > 1e-12 * s[0]))
       throw std::invalid_argument("TipPoseFit: need at least 3 tip nodes, not all on a line");
+  }
+
+  TipPoseFit TipPoseFit::of_mesh(const data::MeshRecord &mesh, const std::string &source)
+  {
+    if (mesh.tip_nodes.empty())
+      throw data::InputError(source + ": /mesh/tip_nodes is empty: no tip face for the chain");
+    return TipPoseFit(select_nodes(mesh.X, mesh.tip_nodes));
+  }
+
+  std::vector<Eigen::Vector3d> select_nodes(const std::vector<data::Point3>  &x,
+                                            const std::vector<std::int64_t> &indices)
+  {
+    std::vector<Eigen::Vector3d> nodes;
+    for (const std::int64_t i : indices)
+      {
+        if (i < 0 || i >= static_cast<std::int64_t>(x.size()))
+          throw data::InputError("node index " + std::to_string(i) + " out of range (" +
+                                 std::to_string(x.size()) + " nodes)");
+        nodes.emplace_back(x[i][0], x[i][1], x[i][2]);
+      }
+    return nodes;
   }
 
   TipPose TipPoseFit::fit(const std::vector<Eigen::Vector3d> &deformed_nodes) const

@@ -4,7 +4,7 @@
 //  2. builds the chain of the selected method from
 //     <output_dir>/stiffness/<M>_b<f>a*.csv (the other method too if its files
 //     exist) with the tip at the reference centroid of the database's tip
-//     nodes (x = L on the joints' line if there are none), and the
+//     nodes (required: they also give the FEM tip pose), and the
 //     beam-theory baseline from the database mesh with the same J_p;
 //  3. compares each with the FEM tip pose of the samples of the validation
 //     roles: <output_dir>/chain/validation.csv, validation_summary.csv and

@@ -35,7 +35,6 @@ namespace softchain::chain
     ChainValidation(const data::ActuationDatabase &database,
                     const std::vector<std::string> &roles, double finger_length);
 
-    std::size_t n_samples() const { return samples_.size(); }
     // Solves every sample with `model` and records the errors.
     void compare(const ChainModel &model, const EquilibriumSettings &settings);
 

@@ -42,8 +42,6 @@ namespace softchain::chain
     int n_angles() const { return 3 * n_joints(); }
     const Eigen::Vector3d &joint_centre(int i) const { return joint_centres_[i]; }
     const Eigen::Vector3d &tip() const { return tip_; }
-    // Reference length from the first joint to the tip.
-    double length_from_first_joint() const;
 
     // Link that carries the material point with reference position X: the
     // last joint i with J_i,x <= X_x, or -1 for the clamped base.

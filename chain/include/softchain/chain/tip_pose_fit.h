@@ -7,6 +7,8 @@
 //   R = V diag(1, 1, det(V U^T)) U^T.
 // The tip nodes are coplanar, so H has rank 2: a rotation is still
 // determined (the sign fix picks the proper one), an affine fit would not be.
+#include <softchain/data/actuation_database.h>
+
 #include <Eigen/Core>
 #include <vector>
 
@@ -23,6 +25,9 @@ namespace softchain::chain
   public:
     // Reference tip nodes: at least 3, not collinear (std::invalid_argument).
     explicit TipPoseFit(const std::vector<Eigen::Vector3d> &reference_nodes);
+    // The tip face of a database mesh (/mesh/tip_nodes); InputError naming
+    // `source` if it has none.
+    static TipPoseFit of_mesh(const data::MeshRecord &mesh, const std::string &source);
 
     const Eigen::Vector3d &reference_centroid() const { return centroid_; }
     // Pose of the same nodes, deformed (same count and order).
@@ -32,6 +37,10 @@ namespace softchain::chain
     Eigen::Vector3d              centroid_;
     std::vector<Eigen::Vector3d> centred_;
   };
+
+  // The nodes `indices` of the positions x (e.g. a sample's tip nodes).
+  std::vector<Eigen::Vector3d> select_nodes(const std::vector<data::Point3>  &x,
+                                            const std::vector<std::int64_t> &indices);
 
   // Angle of the rotation that takes `a` to `b` (rad, in [0, pi]).
   double rotation_angle_between(const Eigen::Matrix3d &a, const Eigen::Matrix3d &b);
