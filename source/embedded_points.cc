@@ -1,0 +1,100 @@
+#include <softchain/data/input_error.h>
+#include <softchain/embedded_points.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+
+#include <limits>
+#include <sstream>
+
+namespace softchain
+{
+  namespace
+  {
+    EmbeddedPoints::Stencil make_stencil(const FiniteElementSpace &space,
+                                         const DoFHandler<3>::active_cell_iterator &cell,
+                                         const Point<3> &unit_point)
+    {
+      const FiniteElement<3> &fe = *space.fe;
+      EmbeddedPoints::Stencil s;
+      s.dof.resize(fe.n_dofs_per_cell());
+      cell->get_dof_indices(s.dof);
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          s.component.push_back(fe.system_to_component_index(i).first);
+          s.weight.push_back(fe.shape_value(i, unit_point));
+        }
+      return s;
+    }
+  } // namespace
+
+  EmbeddedPoints::EmbeddedPoints(const FiniteElementSpace    &space,
+                                 const std::vector<Point<3>> &points,
+                                 const std::string           &what)
+    : reference(points)
+    , owner(points.size())
+    , stencils(points.size())
+    , my_rank(Utilities::MPI::this_mpi_process(space.communicator))
+    , communicator(space.communicator)
+  {
+    const GridTools::Cache<3> cache(space.triangulation, *space.mapping);
+    const unsigned int        none = std::numeric_limits<unsigned int>::max();
+    std::vector<unsigned int> found(points.size(), none);
+    std::vector<Stencil>      local(points.size());
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const auto [cell, unit] = GridTools::find_active_cell_around_point(cache, points[k]);
+        if (cell.state() == IteratorState::valid && cell->is_locally_owned())
+          {
+            found[k] = my_rank;
+            local[k] = make_stencil(space, DoFHandler<3>::active_cell_iterator(
+                                             &space.triangulation, cell->level(),
+                                             cell->index(), &space.dof_handler),
+                                    unit);
+          }
+      }
+    // The lowest rank that found a point owns it.
+    MPI_Allreduce(found.data(), owner.data(), found.size(), MPI_UNSIGNED, MPI_MIN, communicator);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      if (owner[k] == none)
+        {
+          std::ostringstream msg;
+          msg << what << " " << k << " at (" << points[k] << ") lies outside the body";
+          throw data::InputError(msg.str());
+        }
+    // Every rank gets every stencil (a link may join points of two ranks).
+    const auto gathered = Utilities::MPI::all_gather(communicator, local);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      stencils[k] = gathered[owner[k]][k];
+  }
+
+  std::vector<Point<3>>
+  EmbeddedPoints::deformed(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    std::vector<double> flat(3 * size(), 0.0);
+    for (unsigned int k = 0; k < size(); ++k)
+      if (owned(k))
+        {
+          const Stencil &s = stencils[k];
+          for (unsigned int i = 0; i < s.dof.size(); ++i)
+            flat[3 * k + s.component[i]] += s.weight[i] * u[s.dof[i]];
+        }
+    MPI_Allreduce(MPI_IN_PLACE, flat.data(), flat.size(), MPI_DOUBLE, MPI_SUM, communicator);
+    std::vector<Point<3>> x(size());
+    for (unsigned int k = 0; k < size(); ++k)
+      x[k] = reference[k] + Point<3>(flat[3 * k], flat[3 * k + 1], flat[3 * k + 2]);
+    return x;
+  }
+
+  IndexSet EmbeddedPoints::touched_dofs(const types::global_dof_index n_dofs) const
+  {
+    IndexSet set(n_dofs);
+    for (unsigned int k = 0; k < size(); ++k)
+      if (owned(k))
+        for (const auto dof : stencils[k].dof)
+          set.add_index(dof);
+    set.compress();
+    return set;
+  }
+} // namespace softchain

@@ -1,0 +1,155 @@
+#include <softchain/data/input_error.h>
+#include <softchain/embedded_spring_network.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+namespace softchain
+{
+  namespace
+  {
+    double tension(const EmbeddedSpringNetwork::Link &link, const double length)
+    {
+      return length > link.rest_length ?
+               link.axial_rigidity * (length - link.rest_length) / link.rest_length :
+               0.0;
+    }
+  } // namespace
+
+  EmbeddedSpringNetwork::EmbeddedSpringNetwork(
+    const FiniteElementSpace            &space,
+    const std::vector<SpringPolyline>   &polylines,
+    const std::map<std::string, double> &axial_rigidity)
+  {
+    std::vector<Point<3>> all_points;
+    for (const auto &polyline : polylines)
+      {
+        const auto rigidity = axial_rigidity.find(polyline.network);
+        if (rigidity == axial_rigidity.end())
+          throw data::InputError("Springs/Axial rigidity: no value for spring network '" +
+                                 polyline.network + "'");
+        auto name = std::find(network_names.begin(), network_names.end(), polyline.network);
+        if (name == network_names.end())
+          name = network_names.insert(network_names.end(), polyline.network);
+        const unsigned int first = all_points.size();
+        const unsigned int n     = polyline.points.size();
+        all_points.insert(all_points.end(), polyline.points.begin(), polyline.points.end());
+        const unsigned int n_links = polyline.closed ? n : n - 1;
+        for (unsigned int k = 0; k < n_links && n > 1; ++k)
+          {
+            const unsigned int a = first + k, b = first + (k + 1) % n;
+            links.push_back({a, b, all_points[a].distance(all_points[b]), rigidity->second,
+                             static_cast<unsigned int>(name - network_names.begin())});
+          }
+      }
+    nodes = std::make_unique<EmbeddedPoints>(space, all_points, "spring node");
+  }
+
+  EmbeddedSpringNetwork::LinkStencil
+  EmbeddedSpringNetwork::link_stencil(const Link &link) const
+  {
+    LinkStencil result;
+    std::map<types::global_dof_index, unsigned int> position;
+    for (const unsigned int side : {0u, 1u})
+      {
+        const auto &s = nodes->stencil(side == 0 ? link.a : link.b);
+        for (unsigned int i = 0; i < s.dof.size(); ++i)
+          {
+            const auto [it, inserted] = position.emplace(s.dof[i], result.dofs.size());
+            if (inserted)
+              {
+                result.dofs.push_back(s.dof[i]);
+                result.to_coordinate.emplace_back();
+              }
+            result.to_coordinate[it->second].emplace_back(3 * side + s.component[i],
+                                                          s.weight[i]);
+          }
+      }
+    return result;
+  }
+
+  void EmbeddedSpringNetwork::add_couplings(DynamicSparsityPattern &pattern) const
+  {
+    for (const auto &link : links)
+      if (nodes->owned(link.a))
+        {
+          const auto dofs = link_stencil(link).dofs;
+          for (const auto i : dofs)
+            pattern.add_entries(i, dofs.begin(), dofs.end());
+        }
+  }
+
+  IndexSet EmbeddedSpringNetwork::touched_dofs(const types::global_dof_index n_dofs) const
+  {
+    IndexSet set(n_dofs);
+    for (const auto &link : links)
+      if (nodes->owned(link.a))
+        for (const auto dof : link_stencil(link).dofs)
+          set.add_index(dof);
+    set.compress();
+    return set;
+  }
+
+  void EmbeddedSpringNetwork::assemble(const TrilinosWrappers::MPI::Vector &u,
+                                       const AffineConstraints<double>     &constraints,
+                                       TrilinosWrappers::SparseMatrix      *matrix,
+                                       TrilinosWrappers::MPI::Vector       &rhs) const
+  {
+    const auto x = nodes->deformed(u);
+    for (const auto &link : links)
+      {
+        if (!nodes->owned(link.a))
+          continue;
+        const Tensor<1, 3> d = x[link.b] - x[link.a];
+        const double       l = d.norm();
+        const double       T = tension(link, l);
+        if (l < link.rest_length && matrix == nullptr)
+          continue; // slack: no force, and no tangent wanted
+        const Tensor<1, 3> e = d / l;
+
+        // Internal force on (x_a, x_b) and the 6x6 tangent [[H, -H], [-H, H]].
+        double g[6], H[6][6] = {};
+        for (unsigned int c = 0; c < 3; ++c)
+          g[c] = -T * e[c], g[3 + c] = T * e[c];
+        // The axial term is kept at l = L (not only l > L), so that a spring
+        // at rest stiffens the first Newton step (the slack side has none).
+        const double axial = (l >= link.rest_length) ? link.axial_rigidity / link.rest_length : 0.0;
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int d2 = 0; d2 < 3; ++d2)
+            {
+              const double h = axial * e[c] * e[d2] + T / l * ((c == d2) - e[c] * e[d2]);
+              H[c][d2] = H[3 + c][3 + d2] = h;
+              H[c][3 + d2] = H[3 + c][d2] = -h;
+            }
+
+        const LinkStencil  s = link_stencil(link);
+        const unsigned int n = s.dofs.size();
+        Vector<double>     local_rhs(n);
+        FullMatrix<double> local_matrix(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (const auto &[r, w] : s.to_coordinate[i])
+            {
+              local_rhs(i) -= w * g[r];
+              if (matrix)
+                for (unsigned int j = 0; j < n; ++j)
+                  for (const auto &[q, v] : s.to_coordinate[j])
+                    local_matrix(i, j) += w * H[r][q] * v;
+            }
+        if (matrix)
+          constraints.distribute_local_to_global(local_matrix, local_rhs, s.dofs, *matrix, rhs);
+        else
+          constraints.distribute_local_to_global(local_rhs, s.dofs, rhs);
+      }
+  }
+
+  std::vector<double>
+  EmbeddedSpringNetwork::tensions(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    const auto          x = nodes->deformed(u);
+    std::vector<double> result;
+    for (const auto &link : links)
+      result.push_back(tension(link, x[link.a].distance(x[link.b])));
+    return result;
+  }
+} // namespace softchain

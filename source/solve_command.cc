@@ -1,0 +1,56 @@
+// `softchain solve FILE.prm`: one quasi-static solve of the .prm's Loads,
+// written as VTU for ParaView, with a timing summary.
+#include <softchain/boundary_average.h>
+#include <softchain/boundary_ids.h>
+#include <softchain/commands.h>
+#include <softchain/finger_mesh.h>
+#include <softchain/quasi_static_solver.h>
+#include <softchain/solution_output.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <iostream>
+
+namespace softchain
+{
+  int solve_command(const std::string &prm_file)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
+    const Parameters   prm = Parameters::read(prm_file);
+    if (prm.solver.threads > 0)
+      MultithreadInfo::set_thread_limit(prm.solver.threads);
+
+    FingerMesh mesh;
+    FingerMesh::build(prm, mesh);
+    QuasiStaticSolver solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, comm,
+                             out.get_stream());
+    out << "softchain solve: " << prm.design.name << " (" << mesh.description << "), "
+        << prm.mesh.element_type << ", " << solver.space().triangulation.n_global_active_cells()
+        << " cells, " << solver.space().dof_handler.n_dofs() << " DoFs, "
+        << Utilities::MPI::n_mpi_processes(comm) << " rank(s)\n";
+
+    LoadState target;
+    target.pressure       = prm.loads.pressure;
+    target.point_loads    = prm.loads.point_loads;
+    target.gravity_factor = prm.loads.gravity ? 1.0 : 0.0;
+    const auto result     = solver.solve(target);
+
+    const Tensor<1, 3> tip = mean_boundary_displacement(solver.space(), solver.displacement(),
+                                                        boundary::tip);
+    out << (result.converged ? "converged" : "FAILED: " + result.reason) << " after "
+        << result.load_steps << " load steps, " << result.newton_iterations
+        << " Newton iterations, " << result.wall_time << " s\n"
+        << "mean tip displacement [m]: " << tip << '\n';
+    if (prm.output.write_vtu)
+      {
+        TimerOutput::Scope timer_section(solver.timer(), "output");
+        SolutionOutput output(prm.design.output_directory + "/vtu", prm.output.subdivisions);
+        out << "wrote " << prm.design.output_directory << "/vtu/"
+            << output.write(solver, "solution", result.load_factor_reached) << '\n';
+      }
+    solver.timer().print_summary();
+    return result.converged ? 0 : 2;
+  }
+} // namespace softchain

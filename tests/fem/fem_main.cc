@@ -1,0 +1,12 @@
+// Catch2 main of the FEM-tier tests: MPI (and deal.II's thread pool) set up
+// around the test session, so the same tests run under mpirun.
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+
+#include <deal.II/base/mpi.h>
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  return Catch::Session().run(argc, argv);
+}

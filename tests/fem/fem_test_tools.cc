@@ -1,0 +1,71 @@
+#include "fem_test_tools.h"
+
+#include <deal.II/fe/mapping.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <fstream>
+#include <random>
+
+namespace softchain::test
+{
+  Parameters parameters_from_text(const std::string &name, const std::string &text)
+  {
+    const std::string file = name + ".prm";
+    std::ofstream(file) << text;
+    return Parameters::read(file);
+  }
+
+  std::string bender_prm(const std::string &element, const unsigned int cells,
+                         const std::string &extra)
+  {
+    std::ostringstream prm;
+    prm << "subsection Mesh\n  set Source = built-in bender\n  set Element type = " << element
+        << "\n  set Bender cells along length = " << cells << "\nend\n"
+        << "subsection Output\n  set Write VTU = false\n  set Verbose = false\nend\n"
+        << extra;
+    return prm.str();
+  }
+
+  SolverFixture::SolverFixture(const Parameters &p)
+    : prm(p)
+  {
+    FingerMesh::build(prm, mesh);
+    solver = std::make_unique<QuasiStaticSolver>(prm, mesh.triangulation, mesh.material_names,
+                                                 mesh.springs, MPI_COMM_WORLD, log);
+  }
+
+  namespace
+  {
+    class SmoothField : public Function<3>
+    {
+    public:
+      SmoothField(double scale)
+        : Function<3>(3), scale(scale)
+      {}
+      double value(const Point<3> &p, const unsigned int c) const override
+      {
+        const double x = p[0] / 0.08;
+        const double field[3] = {0.3 * x * p[1] / 0.012, -x * x + 0.2 * x * p[2] / 0.018,
+                                 0.4 * x * (p[1] - 0.006) / 0.012};
+        return scale * field[c];
+      }
+      double scale;
+    };
+  } // namespace
+
+  TrilinosWrappers::MPI::Vector smooth_displacement(const QuasiStaticSolver &solver,
+                                                    const double scale, const double noise,
+                                                    const unsigned int seed)
+  {
+    const auto                   &space = solver.space();
+    TrilinosWrappers::MPI::Vector u(space.owned_dofs, space.communicator);
+    VectorTools::interpolate(*space.mapping, space.dof_handler, SmoothField(scale), u);
+    std::mt19937                           random(seed);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    for (const auto dof : space.owned_dofs)
+      u[dof] += noise * scale * uniform(random);
+    u.compress(VectorOperation::insert);
+    space.clamped_base.set_zero(u);
+    return u;
+  }
+} // namespace softchain::test

@@ -1,0 +1,78 @@
+// Finite-difference checks of every tangent contribution: material (both
+// strain energies), follower pressure and embedded springs. The tangent K
+// must equal the directional derivative of the residual,
+//   K v = (R(u + h v) - R(u - h v)) / (2h) + O(h^2).
+#include "fem_test_tools.h"
+
+#include <catch2/catch.hpp>
+
+using namespace softchain;
+
+namespace
+{
+  // Relative error |K v - FD| / |K v| at a random deformed state.
+  double tangent_error(test::SolverFixture &f, const LoadState &load)
+  {
+    QuasiStaticSolver &solver = *f.solver;
+    const auto         u      = test::smooth_displacement(solver, 2e-3, 0.05, 1);
+    const auto         v      = test::smooth_displacement(solver, 1.0, 1.0, 2);
+    solver.set_displacement(u);
+    REQUIRE(solver.assemble(load, true));
+    TrilinosWrappers::MPI::Vector Kv(v);
+    solver.tangent().vmult(Kv, v);
+
+    // Central difference of -R with a step h |v| ~ 1e-7 |u|-scale: the
+    // truncation error O(h^2) and the round-off O(eps/h) are both ~1e-9
+    // relative, well below the 1e-6 bound.
+    const double                  h = 1e-8;
+    TrilinosWrappers::MPI::Vector plus(u), minus(u);
+    plus.add(h, v);
+    minus.add(-h, v);
+    solver.set_displacement(plus);
+    REQUIRE(solver.assemble(load, false));
+    TrilinosWrappers::MPI::Vector fd(solver.negative_residual());
+    solver.set_displacement(minus);
+    REQUIRE(solver.assemble(load, false));
+    fd -= solver.negative_residual();
+    fd *= -1.0 / (2 * h); // K = dR/du = -d(rhs)/du
+    f.solver->space().clamped_base.set_zero(fd);
+    f.solver->space().clamped_base.set_zero(Kv);
+    fd -= Kv;
+    return fd.l2_norm() / Kv.l2_norm();
+  }
+
+  std::string options(const std::string &energy, bool springs)
+  {
+    return "subsection Materials\n  set Strain energy = " + energy +
+           "\nend\nsubsection Springs\n  set Generate for bender = " +
+           (springs ? "true" : "false") + "\nend\n";
+  }
+} // namespace
+
+TEST_CASE("material tangent matches finite differences", "[fem][tangent]")
+{
+  for (const std::string energy : {"log", "split"})
+    for (const std::string element : {"Q1", "P2"})
+      {
+        test::SolverFixture f(test::parameters_from_text(
+          "tangent_material", test::bender_prm(element, 4, options(energy, false))));
+        INFO(energy << " " << element);
+        CHECK(tangent_error(f, LoadState()) < 1e-6);
+      }
+}
+
+TEST_CASE("follower pressure tangent matches finite differences", "[fem][tangent]")
+{
+  test::SolverFixture f(test::parameters_from_text("tangent_pressure",
+                                                   test::bender_prm("Q2", 4, options("log", false))));
+  LoadState load;
+  load.pressure = 5e4;
+  CHECK(tangent_error(f, load) < 1e-6);
+}
+
+TEST_CASE("embedded spring tangent matches finite differences", "[fem][tangent]")
+{
+  test::SolverFixture f(test::parameters_from_text("tangent_springs",
+                                                   test::bender_prm("Q1", 4, options("log", true))));
+  CHECK(tangent_error(f, LoadState()) < 1e-6);
+}
