@@ -103,22 +103,21 @@ namespace softchain::chain
       }
   }
 
-  // H = K - dQ/dq in ChainTangent's form (header): U_j = -A_j^T (B_j + [M_j]x);
-  // D_j = K_j - A_j^T B_j A_j - (strictly lower part of A_j^T [M_j]x A_j),
-  // mirrored to the upper triangle (H is symmetric).
+  // H = K - dQ/dq in ChainTangent's form (header): U_j = -A_j^T (B_j + [M_j]x)
+  // for every (l, beta) before (j, alpha), also within joint j, so the lower
+  // triangle of D_j - K_j is that of U_j A_j. (Directly: the lower triangle of
+  // -A_j^T B_j A_j - strictly lower part of A_j^T [M_j]x A_j, the same since
+  // A^T [M]x A is antisymmetric.) D_j is mirrored from it.
   void ChainEquilibrium::prepare_tangent()
   {
     for (int j = 0; j < model_.chain().n_joints(); ++j)
       {
-        const Eigen::Matrix3d &axes  = pose_.joint_axes[j];
-        const Eigen::Matrix3d  twist = cross_matrix(moment_[j]);
-        tangent_.axes(j)             = axes;
-        tangent_.coupling(j)         = -axes.transpose() * (moment_gradient_[j] + twist);
-        Eigen::Matrix3d lower        = axes.transpose() * moment_gradient_[j] * axes;
-        lower += (axes.transpose() * twist * axes).triangularView<Eigen::StrictlyLower>();
-        Eigen::Matrix3d &d = tangent_.diagonal(j);
-        d                  = lower.selfadjointView<Eigen::Lower>();
-        d                  = -d;
+        const Eigen::Matrix3d &axes = pose_.joint_axes[j];
+        tangent_.axes(j)            = axes;
+        tangent_.coupling(j) = -axes.transpose() * (moment_gradient_[j] + cross_matrix(moment_[j]));
+        const Eigen::Matrix3d lower = tangent_.coupling(j) * axes;
+        Eigen::Matrix3d      &d     = tangent_.diagonal(j);
+        d                           = lower.selfadjointView<Eigen::Lower>();
         d.diagonal() += stiffness_.segment<3>(3 * j);
       }
   }

@@ -1,10 +1,31 @@
 #include <softchain/chain/chain_tangent.h>
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
+#include <cmath>
 
 namespace softchain::chain
 {
+  namespace
+  {
+    // L^-1 for the Cholesky factor L L^T = a of a symmetric 3x3 matrix (lower
+    // triangle read), written out; false if a is not positive definite.
+    bool inverse_cholesky_factor(const Eigen::Matrix3d &a, Eigen::Matrix3d &inverse)
+    {
+      const double l00 = std::sqrt(a(0, 0));
+      const double l10 = a(1, 0) / l00, l20 = a(2, 0) / l00;
+      const double l11 = std::sqrt(a(1, 1) - l10 * l10);
+      const double l21 = (a(2, 1) - l20 * l10) / l11;
+      const double l22 = std::sqrt(a(2, 2) - l20 * l20 - l21 * l21);
+      if (!(l00 > 0.0 && l11 > 0.0 && l22 > 0.0)) // also catches NaN (negative radicands)
+        return false;
+      const double m00 = 1.0 / l00, m11 = 1.0 / l11, m22 = 1.0 / l22;
+      const double m10 = -l10 * m00 * m11;
+      inverse << m00, 0.0, 0.0, //
+        m10, m11, 0.0,          //
+        -(l20 * m00 + l21 * m10) * m22, -l21 * m11 * m22, m22;
+      return true;
+    }
+  } // namespace
+
   ChainTangent::ChainTangent(int n_joints)
     : diagonal_(n_joints, Eigen::Matrix3d::Zero())
     , coupling_(n_joints, Eigen::Matrix3d::Zero())
@@ -19,12 +40,10 @@ namespace softchain::chain
     for (int j = 0; j < n_joints(); ++j)
       {
         const Eigen::Matrix3d &u = coupling_[j];
-        const Eigen::LLT<Eigen::Matrix3d> pivot(diagonal_[j] + shift * Eigen::Matrix3d::Identity() -
-                                                u * sum * u.transpose());
-        if (pivot.info() != Eigen::Success)
+        if (!inverse_cholesky_factor(diagonal_[j] + shift * Eigen::Matrix3d::Identity() -
+                                       u * sum * u.transpose(),
+                                     inverse_pivots_[j]))
           return false;
-        // Explicit 3x3 inverse: all later work is fixed-size products.
-        inverse_pivots_[j] = Eigen::Matrix3d(pivot.matrixL()).inverse();
         generators_[j]     = (axes_[j] - sum * u.transpose()) * inverse_pivots_[j].transpose();
         sum += generators_[j] * generators_[j].transpose();
       }
