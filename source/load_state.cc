@@ -7,6 +7,7 @@ namespace softchain
     LoadState state;
     state.pressure       = (1 - s) * start.pressure + s * target.pressure;
     state.gravity_factor = (1 - s) * start.gravity_factor + s * target.gravity_factor;
+    state.tip_traction   = (1 - s) * start.tip_traction + s * target.tip_traction;
     // Forces at the same point blend; a point present at one end only ramps
     // from or to zero.
     auto add = [&state](const PointLoad &load, const double factor) {

@@ -194,6 +194,8 @@ namespace softchain
     prm.declare_entry("Pressure", "0", Patterns::Double(), "Pa, on the cavity (follower load)");
     prm.declare_entry("Point loads", "", Patterns::Anything(),
                       "x,y,z : fx,fy,fz ; ... (reference point [m] : force [N])");
+    prm.declare_entry("Tip traction", "0,0,0", Patterns::Anything(),
+                      "tx,ty,tz [N/m^2]: dead traction on the tip face");
     prm.declare_entry("Gravity", "false", Patterns::Bool(), "-9.81 m/s^2 along y");
     prm.leave_subsection();
   }
@@ -203,6 +205,8 @@ namespace softchain
     prm.enter_subsection("Loads");
     pressure = prm.get_double("Pressure");
     gravity  = prm.get_bool("Gravity");
+    const auto t = parse_triple(prm.get("Tip traction"), "Loads", "Tip traction");
+    tip_traction = Tensor<1, 3>({t[0], t[1], t[2]});
     point_loads.clear();
     std::stringstream in(prm.get("Point loads"));
     std::string       item;

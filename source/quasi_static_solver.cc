@@ -86,7 +86,8 @@ namespace softchain
                                                          region->second.youngs_modulus,
                                                          region->second.poissons_ratio));
       }
-    pressure = std::make_unique<FollowerPressure>(*fe_space);
+    pressure     = std::make_unique<FollowerPressure>(*fe_space);
+    tip_traction = std::make_unique<DeadSurfaceTraction>(*fe_space, boundary::tip);
     if (!spring_polylines.empty())
       springs = std::make_unique<EmbeddedSpringNetwork>(*fe_space, spring_polylines,
                                                          prm.springs.axial_rigidity);
@@ -234,6 +235,8 @@ namespace softchain
                          with_matrix ? &matrix : nullptr, rhs);
     if (!state.point_loads.empty())
       assemble_point_loads(state.point_loads);
+    if (state.tip_traction.norm() > 0)
+      tip_traction->assemble(state.tip_traction, fe_space->clamped_base, rhs);
     rhs.compress(VectorOperation::add);
     f_ext_norm = rhs.l2_norm();
 

@@ -35,6 +35,7 @@ namespace softchain
     target.pressure       = prm.loads.pressure;
     target.point_loads    = prm.loads.point_loads;
     target.gravity_factor = prm.loads.gravity ? 1.0 : 0.0;
+    target.tip_traction   = prm.loads.tip_traction;
     const auto result     = solver.solve(target);
 
     const Tensor<1, 3> tip = mean_boundary_displacement(solver.space(), solver.displacement(),

@@ -14,6 +14,7 @@ namespace softchain
     double                 pressure = 0.0;
     std::vector<PointLoad> point_loads;
     double                 gravity_factor = 0.0; // 1: full gravity
+    Tensor<1, 3>           tip_traction;         // dead traction on `tip`, N/m^2
 
     // (1 - s) * start + s * target, the point loads matched by position.
     static LoadState interpolate(const LoadState &start, const LoadState &target, double s);

@@ -79,6 +79,7 @@ namespace softchain
   {
     double                 pressure = 0.0; // Pa, follower load on `cavity`
     std::vector<PointLoad> point_loads;
+    Tensor<1, 3>           tip_traction; // N/m^2, dead load on `tip`
     bool                   gravity = false;
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);

@@ -6,6 +6,7 @@
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
 // stepping (cut on divergence or J <= 0, grow after easy steps) and a
 // backtracking line search on |R|.
+#include <softchain/dead_surface_traction.h>
 #include <softchain/embedded_points.h>
 #include <softchain/embedded_spring_network.h>
 #include <softchain/finite_element_space.h>
@@ -66,6 +67,7 @@ namespace softchain
     const TrilinosWrappers::MPI::Vector  &negative_residual() const { return rhs; }
     double                               external_load_norm() const { return f_ext_norm; }
     const FollowerPressure              &pressure_load() const { return *pressure; }
+    const DeadSurfaceTraction           &tip_load() const { return *tip_traction; }
     const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
     const HyperelasticMaterial &material(types::material_id id) const { return *materials.at(id); }
     // Deformed positions of `points` (reference, inside the body).
@@ -78,6 +80,7 @@ namespace softchain
     std::unique_ptr<FiniteElementSpace>                 fe_space;
     std::vector<std::unique_ptr<HyperelasticMaterial>> materials;
     std::unique_ptr<FollowerPressure>                   pressure;
+    std::unique_ptr<DeadSurfaceTraction>                tip_traction;
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     TimerOutput                                         computing_timer;
 
