@@ -2,6 +2,7 @@
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -48,7 +49,8 @@ namespace softchain::chain
       const double k = table.number(row, column);
       if (!(std::isfinite(k) && k > 0.0))
         throw InputError(where(path, row) + column + " = " + table.text(row, column) +
-                         " is not a positive finite stiffness");
+                         " is not a positive finite stiffness" +
+                         (std::isnan(k) ? " (the reduction had no usable sample for this axis)" : ""));
       return k;
     }
 
@@ -77,11 +79,14 @@ namespace softchain::chain
       return PiecewiseLinear(pressures, values);
     }
 
-    void insert_once(std::map<double, double> &table, double pressure, double value,
-                     const std::string &path, std::size_t row)
+    // A second row for the same pressure (e.g. a pressure sample at p = 0
+    // beside the rest row) must repeat the value up to round-off.
+    void insert_consistent(std::map<double, double> &table, double pressure, double value,
+                           const std::string &path, std::size_t row)
     {
-      if (!table.emplace(pressure, value).second)
-        throw InputError(where(path, row) + "joint listed twice at the same pressure");
+      const auto [at, inserted] = table.emplace(pressure, value);
+      if (!inserted && std::abs(at->second - value) > 1e-9 * std::max(std::abs(value), std::abs(at->second)))
+        throw InputError(where(path, row) + "joint listed twice at the same pressure with different values");
     }
 
     struct StiffnessTable
@@ -128,7 +133,7 @@ namespace softchain::chain
           const int joint = joint_index(table, path, row, n);
           if (std::isnan(table.number(row, "k_phi")))
             continue; // no value at this pressure (rotation below threshold)
-          insert_once(per_joint[joint], finite_number(table, path, row, "pressure"),
+          insert_consistent(per_joint[joint], finite_number(table, path, row, "pressure"),
                       positive_stiffness(table, path, row, "k_phi"), path, row);
         }
       std::vector<PiecewiseLinear> result;
@@ -147,7 +152,7 @@ namespace softchain::chain
           const int    joint    = joint_index(table, path, row, n);
           const double pressure = finite_number(table, path, row, "pressure");
           for (int c = 0; c < 3; ++c)
-            insert_once(per_angle[3 * joint + c], pressure,
+            insert_consistent(per_angle[3 * joint + c], pressure,
                         finite_number(table, path, row, components[c]), path, row);
         }
       for (int j = 0; j < 3 * n; ++j)

@@ -119,6 +119,14 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("missing column 'k_phi_fit'"));
     CHECK(error_of("value") == "no error"); // the value columns are all there
   }
+  SECTION("a pressure listed twice for a joint: same value accepted, different value not")
+  {
+    std::ofstream(files.pressure_torque_path(), std::ios::app) << "0,2,0,0,2e-07\n";
+    CHECK(error_of("value") == "no error");
+    std::ofstream(files.pressure_torque_path(), std::ios::app) << "0,2,0,0,3e-07\n";
+    CHECK_THAT(error_of("value"), Catch::Contains(files.pressure_torque_path() + ", row 29") &&
+                                    Catch::Contains("twice"));
+  }
   SECTION("a missing pressure torque file")
   {
     std::filesystem::remove(files.pressure_torque_path());
