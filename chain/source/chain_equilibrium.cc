@@ -137,7 +137,8 @@ namespace softchain::chain
   // shifted step is a descent direction of U), capped at max_step_angle.
   void ChainEquilibrium::newton_direction()
   {
-    for (double shift = 0.0; !tangent_.factor(shift);)
+    shifted_ = false;
+    for (double shift = 0.0; !tangent_.factor(shift); shifted_ = true)
       shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
     tangent_.solve(residual_, direction_);
     direction_ *= -1.0;
@@ -186,6 +187,17 @@ namespace softchain::chain
     return {};
   }
 
+  // An equilibrium reached without a Newton step (the start was one, e.g. a
+  // straight finger under an axial load) or through a shifted tangent may be
+  // unstable: then H is not positive definite there and no finger rests in it.
+  std::string ChainEquilibrium::instability()
+  {
+    prepare_tangent();
+    if (tangent_.factor(0.0))
+      return {};
+    return "unstable equilibrium: the tangent stiffness is not positive definite (buckling)";
+  }
+
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load)
   {
     return solve(load, Eigen::VectorXd::Zero(model_.chain().n_angles()));
@@ -215,6 +227,8 @@ namespace softchain::chain
       }
     if (result.failure.empty())
       result.failure = range_violation(result.angles);
+    if (result.failure.empty() && (result.iterations == 0 || shifted_))
+      result.failure = instability();
     result.converged = result.failure.empty();
     result.residual  = relative_residual();
     return result;

@@ -221,6 +221,19 @@ TEST_CASE("a load the chain cannot equilibrate is a failure with its reason, not
     CHECK_FALSE(e.converged);
     CHECK_THAT(e.failure, Catch::Contains("joint 1: phi") && Catch::Contains("outside"));
   }
+  SECTION("a straight finger under an axial load beyond buckling is unstable, not an answer")
+  {
+    // Critical load of the chain ~ pi^2 k a / (4 L^2) = 0.15 N; 5 N compresses it far beyond.
+    ChainEquilibrium  solver(model);
+    const Equilibrium e = solver.solve({0.0, {tip_force({-5.0, 0.0, 0.0})}});
+    CHECK(e.iterations == 0); // the straight pose balances the load exactly
+    CHECK_FALSE(e.converged);
+    CHECK_THAT(e.failure, Catch::Contains("unstable"));
+    // With a small side force the finger buckles into a stable pose.
+    const Equilibrium buckled = solver.solve({0.0, {tip_force({-5.0, 0.01, 0.0})}});
+    CHECK(buckled.converged);
+    CHECK(solver.pose().tip_position.x() < 0.05); // folded back far from x = L
+  }
   SECTION("a large load without enough Newton iterations is reported as such")
   {
     EquilibriumSettings settings;

@@ -26,8 +26,11 @@
 // |J_p p|_inf + |J^T f|_inf). A load it cannot equilibrate within
 // max_iterations, or whose equilibrium leaves the chain's range of validity
 // (|theta_i| < 90 deg where the Euler convention is regular, |psi_i|, |phi_i|
-// <= 180 deg since the reduction reads angles in that range), is reported as
-// failed with the reason; the pose is then not an answer.
+// <= 180 deg since the reduction reads angles in that range), or that is
+// unstable (H not positive definite there; checked when no Newton step was
+// needed or the last one had to shift H, e.g. a straight finger under an
+// axial compressive load beyond buckling), is reported as failed with the
+// reason; the pose is then not an answer.
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/chain_model.h>
 
@@ -91,6 +94,7 @@ namespace softchain::chain
     void   newton_direction();
     bool   line_search(Eigen::VectorXd &q);
     std::string range_violation(const Eigen::VectorXd &q) const;
+    std::string instability();
 
     const ChainModel   &model_;
     EquilibriumSettings settings_;
@@ -111,5 +115,6 @@ namespace softchain::chain
     double                       energy_magnitude_ = 0.0; // sum of |terms| of U
     ChainTangent                 tangent_;
     Eigen::VectorXd              direction_;
+    bool                         shifted_ = false; // the last Newton step shifted H
   };
 } // namespace softchain::chain
