@@ -76,8 +76,8 @@ namespace softchain::chain
 
     void report(const ChainValidation &validation, const std::string &directory)
     {
-      const data::CsvTable summary = validation.summary_table();
-      std::cout.precision(3);
+      const data::CsvTable summary   = validation.summary_table();
+      const auto           precision = std::cout.precision(3);
       for (std::size_t r = 0; r < summary.n_rows(); ++r)
         std::cout << "chain: " << summary.text(r, "model") << " on " << summary.text(r, "roles")
                   << ": tip error max " << summary.number(r, "max_tip_error_percent_L")
@@ -90,6 +90,28 @@ namespace softchain::chain
           std::cerr << "chain: " << r.model << " failed on sample " << r.sample << ": " << r.status
                     << "\n";
       std::cout << "chain: tables in " << directory << "\n";
+      std::cout.precision(precision);
+    }
+
+    // Every model against the database's FEM tip poses: tables, plot, report;
+    // returns the number of failed chain equilibria.
+    int validate(const std::vector<ChainModel> &models, const data::ActuationDatabase &database,
+                 const ChainParameters &p, const std::string &directory)
+    {
+      const auto      box = bounding_box(database.mesh());
+      ChainValidation validation(database, p.validation_roles, box.second.x() - box.first.x());
+      std::vector<std::string> names;
+      for (const ChainModel &model : models)
+        {
+          validation.compare(model, p.newton);
+          names.push_back(model.name());
+        }
+      validation.per_sample_table().write(directory + "/validation.csv");
+      validation.summary_table().write(directory + "/validation_summary.csv");
+      if (!ValidationPlot(directory, names).draw())
+        std::cout << "chain: gnuplot missing or failed, validation.png not drawn (script validation.gp)\n";
+      report(validation, directory);
+      return validation.n_failed();
     }
   } // namespace
 
@@ -109,19 +131,6 @@ namespace softchain::chain
     if (export_mjcf)
       export_model(selected, database, chain_dir + "/finger.xml");
     models.push_back(baseline_of(selected, mesh, p.baseline_youngs_modulus));
-
-    const auto      box = bounding_box(mesh);
-    ChainValidation validation(database, p.validation_roles, box.second.x() - box.first.x());
-    for (const ChainModel &model : models)
-      validation.compare(model, p.newton);
-    validation.per_sample_table().write(chain_dir + "/validation.csv");
-    validation.summary_table().write(chain_dir + "/validation_summary.csv");
-    std::vector<std::string> names;
-    for (const ChainModel &model : models)
-      names.push_back(model.name());
-    if (!ValidationPlot(chain_dir, names).draw())
-      std::cout << "chain: gnuplot not available, validation.png not drawn (script validation.gp)\n";
-    report(validation, chain_dir);
-    return validation.n_failed() > 0 ? 2 : 0;
+    return validate(models, database, p, chain_dir) > 0 ? 2 : 0;
   }
 } // namespace softchain::chain
