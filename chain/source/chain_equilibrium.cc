@@ -1,4 +1,5 @@
 #include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/angle_units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,8 +17,6 @@ namespace softchain::chain
       m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
       return m;
     }
-
-    double degrees(double radians) { return radians * 180.0 / M_PI; }
 
     // Armijo constant of the backtracking line search (sufficient decrease).
     constexpr double armijo = 1e-4;

@@ -1,4 +1,5 @@
 #include <softchain/chain/chain_validation.h>
+#include <softchain/chain/angle_units.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,8 +27,6 @@ namespace softchain::chain
         sum += p.force.norm();
       return sum;
     }
-
-    double degrees(double radians) { return radians * 180.0 / M_PI; }
 
     // Max and mean of the errors of `records` that converged.
     struct ErrorStatistics
