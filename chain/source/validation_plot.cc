@@ -33,6 +33,7 @@ namespace softchain::chain
       << "set datafile separator \",\"\n"
       << "set datafile columnheaders\n"
       << "set grid\nset key outside right\nset xlabel \"sample\"\n"
+      << "set xtics 1\nset offsets 0.5, 0.5, 0, 0\nset yrange [0:*]\n"
       << "set multiplot layout 2,1\n"
       << "set ylabel \"tip position error (% of L)\"\n"
       << plots[0].str() << "set ylabel \"tip orientation error (deg)\"\n"
