@@ -70,7 +70,9 @@ namespace softchain::chain
       // Capsules as thick as the finger's thinner dimension (height or width).
       options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
       options.max_pressure = max_pressure(database);
-      MjcfExport(model, options).write(path);
+      const ChainModel named(database.design().name + "_" + model.name(), model.chain(),
+                             model.stiffness(), model.actuation());
+      MjcfExport(named, options).write(path);
       std::cout << "chain: MuJoCo model " << path << "\n";
     }
 
