@@ -23,7 +23,8 @@ namespace softchain::chain
   {
   public:
     // One mass per link (kg, >= 0) and one damping per joint angle (N m s,
-    // >= 0, 3 per joint); std::invalid_argument otherwise.
+    // >= 0, 3 per joint); std::invalid_argument otherwise. Keeps a reference
+    // to `model`.
     ChainDynamics(const ChainModel &model, std::vector<double> link_masses,
                   Eigen::VectorXd damping);
 

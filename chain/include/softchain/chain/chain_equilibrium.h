@@ -60,6 +60,7 @@ namespace softchain::chain
   class ChainEquilibrium
   {
   public:
+    // Keeps a reference to `model`, which must outlive the solver.
     explicit ChainEquilibrium(const ChainModel &model, EquilibriumSettings settings = {});
 
     // Equilibrium from rest, or from `start` (warm start, e.g. the previous

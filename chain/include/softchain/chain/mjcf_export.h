@@ -31,6 +31,7 @@ namespace softchain::chain
   class MjcfExport
   {
   public:
+    // Keeps a reference to `model`.
     MjcfExport(const ChainModel &model, MjcfOptions options);
 
     std::string text() const;
