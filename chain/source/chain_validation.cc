@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace softchain::chain
 {
@@ -72,6 +73,11 @@ namespace softchain::chain
         samples_.push_back({id, role, load_of(sample.actuation),
                             fit.fit(select_nodes(sample.x, mesh.tip_nodes))});
       }
+    // Grouped by role, then by increasing load: the order of the table and plot.
+    std::stable_sort(samples_.begin(), samples_.end(), [](const FemSample &a, const FemSample &b) {
+      return std::make_tuple(a.role, a.load.pressure, force_norm(a.load)) <
+             std::make_tuple(b.role, b.load.pressure, force_norm(b.load));
+    });
   }
 
   void ChainValidation::compare(const ChainModel &model, const EquilibriumSettings &settings)
