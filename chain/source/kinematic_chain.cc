@@ -75,8 +75,11 @@ namespace softchain::chain
       {
         const EulerFrame frame  = euler_frame(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
         pose.joint_positions[i] = position;
-        pose.joint_axes[i]      = parent * frame.axes;
-        parent                  = parent * frame.rotation;
+        // a_psi = R_{i-1} e_x, a_theta = R_{i-1} Rx e_y, a_phi = R_{i-1} E e_z = R_i e_z.
+        pose.joint_axes[i].col(0) = parent.col(0);
+        pose.joint_axes[i].col(1) = parent * frame.axes.col(1);
+        parent                    = parent * frame.rotation;
+        pose.joint_axes[i].col(2) = parent.col(2);
         pose.link_rotations[i]  = parent;
         const Eigen::Vector3d &next = i + 1 < n_joints() ? joint_centres_[i + 1] : tip_;
         position += parent * (next - joint_centres_[i]);
