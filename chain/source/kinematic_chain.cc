@@ -8,14 +8,13 @@ namespace softchain::chain
   namespace
   {
     // The shared convention E = Rx(psi) Ry(theta) Rz(phi) (data/joint_angles.h)
-    // multiplied out, and its Euler axes e_x, Rx(psi) e_y, Rx(psi) Ry(theta) e_z
-    // (the columns of dE/dq E^T), from one set of sines and cosines: the hot
-    // loop of every equilibrium evaluation. A test checks E against
-    // data::rotation_from_angles.
+    // multiplied out, and the theta axis Rx(psi) e_y in the parent frame, from
+    // one set of sines and cosines: the hot loop of every equilibrium
+    // evaluation. A test checks E against data::rotation_from_angles.
     struct EulerFrame
     {
       Eigen::Matrix3d rotation;
-      Eigen::Matrix3d axes;
+      Eigen::Vector3d theta_axis;
     };
 
     EulerFrame euler_frame(double psi, double theta, double phi)
@@ -26,9 +25,7 @@ namespace softchain::chain
       f.rotation << cy * cz, -cy * sz, sy,                          //
         cx * sz + sx * sy * cz, cx * cz - sx * sy * sz, -sx * cy, //
         sx * sz - cx * sy * cz, sx * cz + cx * sy * sz, cx * cy;
-      f.axes << 1.0, 0.0, sy, //
-        0.0, cx, -sx * cy,    //
-        0.0, sx, cx * cy;
+      f.theta_axis << 0.0, cx, sx;
       return f;
     }
   } // namespace
@@ -77,7 +74,7 @@ namespace softchain::chain
         pose.joint_positions[i] = position;
         // a_psi = R_{i-1} e_x, a_theta = R_{i-1} Rx e_y, a_phi = R_{i-1} E e_z = R_i e_z.
         pose.joint_axes[i].col(0) = parent.col(0);
-        pose.joint_axes[i].col(1) = parent * frame.axes.col(1);
+        pose.joint_axes[i].col(1) = parent * frame.theta_axis;
         parent                    = parent * frame.rotation;
         pose.joint_axes[i].col(2) = parent.col(2);
         pose.link_rotations[i]  = parent;
