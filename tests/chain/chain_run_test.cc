@@ -114,6 +114,21 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
     }
   const data::CsvTable summary = data::CsvTable::read(out + "/chain/validation_summary.csv");
   CHECK(summary.n_rows() == 9); // 3 models x (pressure, validation, all)
+  // The summary of M1 over all roles against the per-sample rows.
+  double largest = 0, sum = 0;
+  for (std::size_t r = 0; r < table.n_rows(); ++r)
+    if (table.text(r, "model") == "M1")
+      {
+        largest = std::max(largest, table.number(r, "tip_error_mm"));
+        sum += table.number(r, "tip_error_mm");
+      }
+  for (std::size_t r = 0; r < summary.n_rows(); ++r)
+    if (summary.text(r, "model") == "M1" && summary.text(r, "roles") == "all")
+      {
+        CHECK(summary.number(r, "n_samples") == 3);
+        CHECK(summary.number(r, "max_tip_error_mm") == Approx(largest).epsilon(1e-14));
+        CHECK(summary.number(r, "mean_tip_error_mm") == Approx(sum / 3).epsilon(1e-14));
+      }
   std::ifstream     xml(out + "/chain/finger.xml");
   const std::string text((std::istreambuf_iterator<char>(xml)), {});
   CHECK(text.find("joint9_phi") != std::string::npos);
