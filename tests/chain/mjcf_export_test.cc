@@ -52,7 +52,12 @@ TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness an
   CHECK(psi < theta);
   CHECK(theta < phi);
   CHECK(phi != std::string::npos);
-  CHECK(xml.find("stiffness=\"0.042500000000000003\"") != std::string::npos); // k_theta of joint 4
+  // Stiffness and damping of joint 4's theta hinge, written with 17 digits:
+  // they read back exactly.
+  const auto   stiffness = xml.find("stiffness=\"", theta) + 11;
+  const double k_theta   = model.stiffness().joint(3)[1];
+  CHECK(std::stod(xml.substr(stiffness)) == k_theta);
+  CHECK(std::stod(xml.substr(xml.find("damping=\"", theta) + 9)) == 0.01 * k_theta);
   CHECK(count(xml, "coef=") == 27);
   CHECK(xml.find("<motor name=\"pressure\" tendon=\"pressure\"") != std::string::npos);
   CHECK(xml.find("<site name=\"tip\"") != std::string::npos);
