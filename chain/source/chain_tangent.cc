@@ -39,13 +39,13 @@ namespace softchain::chain
     Eigen::Matrix3d sum = Eigen::Matrix3d::Zero(); // S_j
     for (int j = 0; j < n_joints(); ++j)
       {
-        const Eigen::Matrix3d &u = coupling_[j];
-        if (!inverse_cholesky_factor(diagonal_[j] + shift * Eigen::Matrix3d::Identity() -
-                                       u * sum * u.transpose(),
+        const Eigen::Matrix3d &u      = coupling_[j];
+        const Eigen::Matrix3d  s_ut   = sum * u.transpose(); // S_j U_j^T, used twice
+        if (!inverse_cholesky_factor(diagonal_[j] + shift * Eigen::Matrix3d::Identity() - u * s_ut,
                                      inverse_pivots_[j]))
           return false;
-        generators_[j]     = (axes_[j] - sum * u.transpose()) * inverse_pivots_[j].transpose();
-        sum += generators_[j] * generators_[j].transpose();
+        generators_[j].noalias() = (axes_[j] - s_ut) * inverse_pivots_[j].transpose();
+        sum.noalias() += generators_[j] * generators_[j].transpose();
       }
     return true;
   }
@@ -57,14 +57,15 @@ namespace softchain::chain
       {
         const Eigen::Vector3d y = inverse_pivots_[j] * (b.segment<3>(3 * j) - coupling_[j] * carried);
         x.segment<3>(3 * j)     = y;
-        carried += generators_[j] * y;
+        carried.noalias() += generators_[j] * y;
       }
     carried.setZero(); // t_j
     for (int j = n_joints() - 1; j >= 0; --j)
       {
-        const Eigen::Vector3d y = x.segment<3>(3 * j) - generators_[j].transpose() * carried;
-        x.segment<3>(3 * j)     = inverse_pivots_[j].transpose() * y;
-        carried += coupling_[j].transpose() * x.segment<3>(3 * j);
+        const Eigen::Vector3d y  = x.segment<3>(3 * j) - generators_[j].transpose() * carried;
+        const Eigen::Vector3d xj = inverse_pivots_[j].transpose() * y;
+        x.segment<3>(3 * j)      = xj;
+        carried.noalias() += coupling_[j].transpose() * xj;
       }
   }
 
