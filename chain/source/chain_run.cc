@@ -108,6 +108,8 @@ namespace softchain::chain
           validation.compare(model, p.newton);
           names.push_back(model.name());
         }
+      if (validation.records().empty())
+        std::cout << "chain: no converged database sample has one of the validation roles\n";
       validation.per_sample_table().write(directory + "/validation.csv");
       validation.summary_table().write(directory + "/validation_summary.csv");
       if (!ValidationPlot(directory, names).draw())
