@@ -19,9 +19,11 @@ namespace
     "\n"
     "commands:\n"
     "  solve    FEM solve of the .prm's Loads; VTU output for ParaView\n"
+    "  sweep    FEM solves of the .prm's Samples into the database (cached, resumable)\n"
     "  reduce   joint rotations (M1, M2), torques and stiffness CSVs from the database\n"
     "  chain    kinematic-chain finger with the extracted stiffness, validated against\n"
     "           the FEM tip poses; --export-mjcf also writes a MuJoCo model\n"
+    "  run      the whole pipeline: sweep, reduce, chain; lists the output files\n"
     "  help     this text\n"
     "\n"
     "Outputs go to the .prm's Design/Output directory (default output/<name>/):\n"
@@ -41,6 +43,10 @@ namespace
     using namespace softchain;
     if (command == "solve")
       return solve_command(file);
+    if (command == "sweep")
+      return sweep_command(file);
+    if (command == "run")
+      return run_command(file);
     const Parameters  prm       = Parameters::read(file);
     const std::string directory = prm.design.output_directory;
     if (command == "reduce")

@@ -6,4 +6,8 @@
 namespace softchain
 {
   int solve_command(const std::string &prm_file);
+  // The sample sweep into <output dir>/database.h5 (SampleSweep).
+  int sweep_command(const std::string &prm_file);
+  // The whole pipeline: sweep, reduction, chain; lists every output file.
+  int run_command(const std::string &prm_file);
 } // namespace softchain

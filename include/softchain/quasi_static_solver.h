@@ -59,6 +59,13 @@ namespace softchain
     const FiniteElementSpace            &space() const { return *fe_space; }
     const TrilinosWrappers::MPI::Vector &displacement() const { return u_ghosted; }
     void set_displacement(const TrilinosWrappers::MPI::Vector &owned_u);
+    // Restart from a stored equilibrium: `owned_u` balances `state` (the
+    // next solve() continues from there; used by the sample sweep).
+    void set_state(const TrilinosWrappers::MPI::Vector &owned_u, const LoadState &state)
+    {
+      set_displacement(owned_u);
+      load = state;
+    }
     const LoadState &current_load() const { return load; }
     // Assembles rhs = -R(u) (and K = dR/du when with_matrix) at `state`.
     // Returns false if some quadrature point has J <= 0.

@@ -1,0 +1,123 @@
+// `softchain run FILE.prm`: the whole pipeline of the paper's Fig. 2 --
+// FEM sample sweep -> reduction (stiffness CSVs) -> chain validation -- with
+// one progress line per stage and its wall time, then every output file with
+// what it is. The sweep runs on all MPI ranks, the deal.II-free tiers on
+// rank 0.
+#include <softchain/chain/chain_run.h>
+#include <softchain/commands.h>
+#include <softchain/reduction/reduction_run.h>
+#include <softchain/sample_sweep.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace softchain
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    // Runs one stage between two progress lines; returns its exit status.
+    int stage(std::ostream &out, const int k, const std::string &name,
+              const std::function<int()> &body)
+    {
+      out << "== stage " << k << "/3: " << name << std::endl;
+      const auto start  = std::chrono::steady_clock::now();
+      const int  status = body();
+      out << "== stage " << k << "/3: " << name << (status == 0 ? " done" : " done with failures")
+                << " in " << std::fixed << std::setprecision(1)
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+                << " s" << std::defaultfloat << std::endl;
+      return status;
+    }
+
+    // What an output file is, from its place and name.
+    std::string describe(const fs::path &file)
+    {
+      const std::string dir = file.parent_path().filename(), name = file.filename(),
+                        ext = file.extension();
+      if (name == "database.h5")
+        return "actuation-deformation database (HDF5): mesh and every sample's deformed nodes";
+      if (ext == ".stale")
+        return "database of an earlier design, moved aside";
+      if (ext == ".gp")
+        return "gnuplot script of the plot beside it";
+      if (dir == "vtu")
+        return name == "samples.pvd" ? "ParaView series of all samples (open this one)" :
+               name.find("_springs") != std::string::npos ? "spring network of one sample (ParaView)" :
+               ext == ".pvd" ? "ParaView series of one sample" : "deformed finger of one sample (ParaView)";
+      if (dir == "stiffness")
+        return ext == ".png" ? "stiffness plot" :
+               name.find("_samples.csv") != std::string::npos ? "joint angles and torques per sample" :
+               name.find("_kphi_vs_pressure") != std::string::npos ? "k_phi per pressure and joint" :
+               name.find("_pressure_torque") != std::string::npos ? "pressure torque J_p per joint" :
+               ext == ".csv" ? "joint stiffness table k_psi, k_theta, k_phi" : "reduction output";
+      if (dir == "chain")
+        return name == "validation.csv" ? "chain vs FEM tip pose per sample and model" :
+               name == "validation_summary.csv" ? "tip errors per model and role" :
+               ext == ".xml" ? "MuJoCo (MJCF) model of the chain" :
+               ext == ".png" ? "validation plot" : "chain validation output";
+      return "output";
+    }
+
+    // Every file under `directory`; the per-sample files in vtu/ one line
+    // per kind with their count.
+    void list_outputs(const std::string &directory)
+    {
+      std::vector<fs::path> files;
+      for (const auto &entry : fs::recursive_directory_iterator(directory))
+        if (entry.is_regular_file())
+          files.push_back(entry.path());
+      std::sort(files.begin(), files.end());
+      const auto per_sample = [](const fs::path &f) {
+        return f.parent_path().filename() == "vtu" && f.filename() != "samples.pvd";
+      };
+      std::map<std::string, int> count;
+      for (const auto &f : files)
+        if (per_sample(f))
+          ++count[describe(f)];
+      std::set<std::string> shown;
+      std::cout << "outputs:\n";
+      for (const auto &f : files)
+        {
+          const std::string what = describe(f);
+          if (per_sample(f) && !shown.insert(what).second)
+            continue;
+          std::cout << "  " << f.string() << "  " << what
+                    << (per_sample(f) ? " (1 of " + std::to_string(count[what]) + ")" : "") << '\n';
+        }
+    }
+  } // namespace
+
+  int run_command(const std::string &prm_file)
+  {
+    const bool   root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::ostream silent(nullptr);
+    SampleSweep  sweep(prm_file);
+    std::string  directory;
+    std::ostream &out = root ? std::cout : silent;
+    const int     swept = stage(out, 1, "FEM sample sweep", [&] {
+      const auto summary = sweep.run();
+      directory          = fs::path(summary.database).parent_path().string();
+      return summary.report(root ? std::cout : silent, root ? std::cerr : silent);
+    });
+    if (!root)
+      return swept;
+    const std::string database = directory + "/database.h5";
+    stage(out, 2, "reduction", [&] { return reduction::run_reduction(prm_file, database, directory); });
+    const int chained =
+      stage(out, 3, "chain validation",
+            [&] { return chain::run_chain(prm_file, database, directory, false); });
+    list_outputs(directory);
+    return std::max(swept, chained);
+  }
+} // namespace softchain

@@ -1,0 +1,243 @@
+// `softchain sweep` on a tiny bender: database layout, cache, design changes,
+// crash safety, failed samples, bad points, 1 vs 2 MPI ranks.
+#include <softchain/data/actuation_database.h>
+
+#include "tiny_design.h"
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using softchain::data::ActuationDatabase;
+using softchain::data::Point3;
+using softchain::testing::TinyDesign;
+
+namespace
+{
+  // Small loads: each solve is a few Newton iterations on 112 nodes.
+  const std::string samples = "set Pressure sweep = 1e3, 2e3\n"
+                              "set Lateral tip forces = 0.01, 0.02\n"
+                              "set Torsion couples = 0.01\n"
+                              "set Validation samples = 1.5e3 : tip : 0,0,0.01";
+
+  // The tiny bender's cavity: x in [0.002, 0.078], y in [0.002, 0.010],
+  // z in [0.002, 0.016].
+  const Point3 cavity_low{0.002, 0.002, 0.002}, cavity_high{0.078, 0.010, 0.016};
+
+  Point3 minus(const Point3 &a, const Point3 &b)
+  {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  }
+
+  Point3 cross(const Point3 &a, const Point3 &b)
+  {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  }
+
+  double dot(const Point3 &a, const Point3 &b)
+  {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+
+  std::string file_bytes(const std::string &file)
+  {
+    std::ifstream      in(file, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+  }
+
+  std::size_t count(const std::string &text, const std::string &word)
+  {
+    std::size_t n = 0;
+    for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+      ++n;
+    return n;
+  }
+} // namespace
+
+TEST_CASE("sweep writes a database whose layout the data layer reads back")
+{
+  TinyDesign design("sweep_layout", samples, "subsection Output\n  set Write VTU = true\nend\n");
+  const auto outcome = design.run("sweep");
+  INFO(outcome.output);
+  REQUIRE(outcome.status == 0);
+  CHECK(outcome.output.find("[6/6]") != std::string::npos);
+  CHECK(count(outcome.output, "ETA") == 6);
+
+  const auto  database = ActuationDatabase::open(design.database());
+  const auto &mesh     = database.mesh();
+  // Q1 on 6 x 3 x 3 cells less the 4 cavity cells: 7*4*4 vertices, 50 cells.
+  REQUIRE(mesh.X.size() == 112);
+  CHECK(mesh.nodes_per_cell == 8);
+  CHECK(mesh.cells.size() == 50 * 8);
+  CHECK(mesh.tip_nodes.size() == 16);
+  CHECK(mesh.base_nodes.size() == 16);
+  for (const auto n : mesh.tip_nodes)
+    CHECK(mesh.X[n][0] == Approx(0.08).epsilon(1e-12));
+  for (const auto n : mesh.base_nodes)
+    CHECK(mesh.X[n][0] == 0.0);
+
+  // The cavity triangles tile the cavity's walls (area 2(ab + bc + ca)) and
+  // each points into the cavity (towards its centre: the cavity is convex).
+  const Point3 size = minus(cavity_high, cavity_low);
+  const Point3 centre{0.04, 0.006, 0.009};
+  double       area = 0.0;
+  for (const auto &t : mesh.cavity_triangles)
+    {
+      const Point3 n = cross(minus(mesh.X[t[1]], mesh.X[t[0]]), minus(mesh.X[t[2]], mesh.X[t[0]]));
+      area += 0.5 * std::sqrt(dot(n, n));
+      CHECK(dot(n, minus(centre, mesh.X[t[0]])) > 0);
+    }
+  // Only rounding of sums of mm-sized coordinates: 1e-12 relative.
+  CHECK(area == Approx(2 * (size[0] * size[1] + size[1] * size[2] + size[2] * size[0])).epsilon(1e-12));
+
+  REQUIRE(database.sample_ids().size() == 6);
+  for (const auto &id : database.sample_ids())
+    {
+      const auto s = database.read_sample(id);
+      CHECK(s.converged());
+      CHECK(s.load_factor_reached == 1.0);
+      CHECK(s.force_points_deformed.size() == s.actuation.point_forces.size());
+      for (const auto n : mesh.base_nodes) // clamped
+        CHECK(s.x[n] == mesh.X[n]);
+      if (s.actuation.role == "lateral") // a +z force moves its point along +z
+        CHECK(s.force_points_deformed[0][2] > s.actuation.point_forces[0].point[2]);
+      if (s.actuation.role == "torsion") // the couple's points move apart along y
+        CHECK(s.force_points_deformed[0][1] - s.actuation.point_forces[0].point[1] ==
+              Approx(s.actuation.point_forces[1].point[1] - s.force_points_deformed[1][1]));
+    }
+  const std::string series = file_bytes(design.output() + "/vtu/samples.pvd");
+  CHECK(count(series, "<DataSet") == 6);
+}
+
+TEST_CASE("a rerun is all cache hits and rewrites nothing, only a design change invalidates")
+{
+  TinyDesign design("sweep_cache", samples);
+  REQUIRE(design.run("sweep").status == 0);
+  const std::string before = file_bytes(design.database());
+  const auto        time   = std::filesystem::last_write_time(design.database());
+
+  const auto rerun = design.run("sweep");
+  INFO(rerun.output);
+  CHECK(rerun.status == 0);
+  CHECK(rerun.output.find("6 cached, 0 solved") != std::string::npos);
+  CHECK(file_bytes(design.database()) == before);
+  CHECK(std::filesystem::last_write_time(design.database()) == time);
+
+  // Loads are not part of the design: still all cached.
+  design.write(samples, "subsection Loads\n  set Pressure = 5e3\nend\n");
+  CHECK(design.run("sweep").output.find("6 cached, 0 solved") != std::string::npos);
+
+  // A stiffer material is another design: everything is solved again and
+  // the old database is moved aside.
+  const std::string old_hash = ActuationDatabase::open(design.database()).design().design_hash;
+  design.write(samples, "subsection Materials\n  subsection silicone\n"
+                        "    set Young's modulus = 3e5\n  end\nend\n");
+  const auto changed = design.run("sweep");
+  INFO(changed.output);
+  CHECK(changed.output.find("0 cached, 6 solved") != std::string::npos);
+  CHECK(ActuationDatabase::open(design.database()).design().design_hash != old_hash);
+  CHECK(std::filesystem::exists(design.database() + "." + old_hash + ".stale"));
+}
+
+TEST_CASE("a sweep killed with SIGKILL resumes without recomputing and ends as an uninterrupted run")
+{
+  const std::string chains = "set Pressure sweep = 1e3, 2e3, 3e3, 4e3\n"
+                             "set Lateral tip forces = 0.01, 0.02";
+  TinyDesign uninterrupted("sweep_whole", chains);
+  REQUIRE(uninterrupted.run("sweep").status == 0);
+
+  TinyDesign  crashed("sweep_crash", chains);
+  const auto  partial = crashed.sweep_killed_after(2);
+  INFO(partial);
+  const auto  stored  = ActuationDatabase::open(crashed.database());
+  const auto  ids     = stored.sample_ids();
+  REQUIRE(ids.size() >= 2);
+  REQUIRE(ids.size() < 6); // killed in the middle
+  std::vector<softchain::data::SampleRecord> kept;
+  for (const auto &id : ids)
+    kept.push_back(stored.read_sample(id)); // intact: every dataset reads back
+
+  const auto resumed = crashed.run("sweep");
+  INFO(resumed.output);
+  CHECK(resumed.status == 0);
+  CHECK(resumed.output.find(std::to_string(ids.size()) + " cached") != std::string::npos);
+  const auto final_database = ActuationDatabase::open(crashed.database());
+  for (const auto &k : kept) // not recomputed: even the wall time is the stored one
+    CHECK(final_database.read_sample(k.id).wall_time == k.wall_time);
+  CHECK(softchain::testing::sample_difference(
+          final_database, ActuationDatabase::open(uninterrupted.database())) == "");
+}
+
+TEST_CASE("a sample that does not converge is stored as failed and the sweep exits 2 naming it")
+{
+  // 1 MN on a 2 cm silicone finger inverts elements at the smallest load step.
+  TinyDesign design("sweep_failure", "set Lateral tip forces = 0.01, 1e6");
+  const auto outcome = design.run("sweep");
+  INFO(outcome.output);
+  CHECK(outcome.status == 2);
+  CHECK(outcome.output.find("sample failed: lateral 1e+06 N") != std::string::npos);
+  const auto database = ActuationDatabase::open(design.database());
+  REQUIRE(database.sample_ids().size() == 2);
+  int failed = 0;
+  for (const auto &id : database.sample_ids())
+    {
+      const auto s = database.read_sample(id);
+      if (s.converged())
+        continue;
+      ++failed;
+      CHECK(!s.reason.empty());
+      CHECK(s.load_factor_reached < 1.0);
+      CHECK(s.x.size() == database.mesh().X.size()); // the last converged state
+    }
+  CHECK(failed == 1);
+  CHECK(design.run("sweep").status == 2); // cached, still reported
+}
+
+TEST_CASE("force points outside the body or malformed samples fail with exit 1 before any solve")
+{
+  TinyDesign design("sweep_bad_point", "set Pressure sweep = 1e3\n"
+                                       "set Validation samples = 1e3 : 0.5,0,0 : 0,0,0.01");
+  const auto outside = design.run("sweep");
+  INFO(outside.output);
+  CHECK(outside.status == 1);
+  CHECK(outside.output.find("sample 'validation 1': force point 0") != std::string::npos);
+  CHECK(outside.output.find("outside the body") != std::string::npos);
+  CHECK(!std::filesystem::exists(design.database())); // nothing solved, nothing stored
+
+  design.write("set Lateral tip forces = 0.1, abc");
+  const auto malformed = design.run("sweep");
+  CHECK(malformed.status == 1);
+  CHECK(malformed.output.find("'Lateral tip forces'") != std::string::npos);
+}
+
+TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
+{
+  const std::string two_groups = samples + "\nset Sample groups = 2";
+  TinyDesign        serial("sweep_serial", two_groups);
+  TinyDesign        parallel("sweep_parallel", two_groups);
+  REQUIRE(serial.run("sweep").status == 0);
+  const auto outcome = parallel.run("sweep", 2);
+  INFO(outcome.output);
+  REQUIRE(outcome.status == 0);
+  const auto a = ActuationDatabase::open(serial.database());
+  const auto b = ActuationDatabase::open(parallel.database());
+  // One rank per sample group: every sample is the same serial solve.
+  CHECK(softchain::testing::sample_difference(a, b) == "");
+
+  // One group of two ranks: the mesh is partitioned, yet the node numbering
+  // and the reference positions are the same bits.
+  TinyDesign split("sweep_split", samples);
+  REQUIRE(split.run("sweep", 2).status == 0);
+  const auto c = ActuationDatabase::open(split.database());
+  CHECK(c.mesh().X == a.mesh().X);
+  CHECK(c.mesh().cells == a.mesh().cells);
+  CHECK(c.mesh().cavity_triangles == a.mesh().cavity_triangles);
+  CHECK(c.mesh().tip_nodes == a.mesh().tip_nodes);
+  CHECK(c.sample_ids() == a.sample_ids());
+}

@@ -1,0 +1,43 @@
+#pragma once
+// TinyDesign: a built-in bender small enough that each solve takes a few
+// milliseconds (Q1, 4 cells along the length: 112 nodes, 50 cells), in a
+// scratch directory, with helpers that run the softchain executable on it.
+#include <softchain/data/actuation_database.h>
+
+#include "../data/scratch_directory.h"
+
+#include <string>
+
+namespace softchain::testing
+{
+  class TinyDesign
+  {
+  public:
+    // `samples`: the body of subsection Samples; `extra`: more subsections.
+    TinyDesign(const std::string &name, const std::string &samples, const std::string &extra = "");
+
+    void write(const std::string &samples, const std::string &extra = "") const;
+
+    struct Outcome
+    {
+      int         status;
+      std::string output; // stdout and stderr
+    };
+    // `softchain COMMAND FILE.prm`, on `ranks` MPI ranks (mpirun if > 1).
+    Outcome run(const std::string &command, unsigned int ranks = 1) const;
+    // `softchain sweep`, killed with SIGKILL once `lines` progress lines of
+    // solved samples were printed; returns the output until then.
+    std::string sweep_killed_after(int lines) const;
+
+    std::string prm() const { return dir.file("tiny.prm"); }
+    std::string output() const { return dir.file("out"); }
+    std::string database() const { return dir.file("out/database.h5"); }
+
+  private:
+    ScratchDirectory dir;
+  };
+
+  // The first difference between the stored samples of a and b, comparing
+  // everything but the wall times bit for bit; "" if there is none.
+  std::string sample_difference(const data::ActuationDatabase &a, const data::ActuationDatabase &b);
+} // namespace softchain::testing
