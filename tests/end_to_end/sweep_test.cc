@@ -43,6 +43,25 @@ namespace
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   }
 
+  // The cavity triangles tile the cavity's walls (area 2(ab + bc + ca)) and
+  // each points into the cavity (towards its centre: the cavity is convex).
+  void check_cavity_triangles(const softchain::data::MeshRecord &mesh)
+  {
+    const Point3 size = minus(cavity_high, cavity_low);
+    const Point3 centre{0.04, 0.006, 0.009};
+    double       area = 0.0;
+    for (const auto &t : mesh.cavity_triangles)
+      {
+        const Point3 n =
+          cross(minus(mesh.X[t[1]], mesh.X[t[0]]), minus(mesh.X[t[2]], mesh.X[t[0]]));
+        area += 0.5 * std::sqrt(dot(n, n));
+        CHECK(dot(n, minus(centre, mesh.X[t[0]])) > 0);
+      }
+    // Only rounding of sums of mm-sized coordinates: 1e-12 relative.
+    CHECK(area ==
+          Approx(2 * (size[0] * size[1] + size[1] * size[2] + size[2] * size[0])).epsilon(1e-12));
+  }
+
   std::string file_bytes(const std::string &file)
   {
     std::ifstream      in(file, std::ios::binary);
@@ -82,19 +101,7 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
   for (const auto n : mesh.base_nodes)
     CHECK(mesh.X[n][0] == 0.0);
 
-  // The cavity triangles tile the cavity's walls (area 2(ab + bc + ca)) and
-  // each points into the cavity (towards its centre: the cavity is convex).
-  const Point3 size = minus(cavity_high, cavity_low);
-  const Point3 centre{0.04, 0.006, 0.009};
-  double       area = 0.0;
-  for (const auto &t : mesh.cavity_triangles)
-    {
-      const Point3 n = cross(minus(mesh.X[t[1]], mesh.X[t[0]]), minus(mesh.X[t[2]], mesh.X[t[0]]));
-      area += 0.5 * std::sqrt(dot(n, n));
-      CHECK(dot(n, minus(centre, mesh.X[t[0]])) > 0);
-    }
-  // Only rounding of sums of mm-sized coordinates: 1e-12 relative.
-  CHECK(area == Approx(2 * (size[0] * size[1] + size[1] * size[2] + size[2] * size[0])).epsilon(1e-12));
+  check_cavity_triangles(mesh);
 
   REQUIRE(database.sample_ids().size() == 6);
   for (const auto &id : database.sample_ids())
@@ -113,6 +120,30 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
     }
   const std::string series = file_bytes(design.output() + "/vtu/samples.pvd");
   CHECK(count(series, "<DataSet") == 6);
+}
+
+TEST_CASE("Q2 and P2 databases hold the mid-side nodes and the sub-triangles of curved faces")
+{
+  for (const std::string element : {"Q2", "P2"})
+    {
+      INFO(element);
+      TinyDesign design("sweep_" + element, "set Pressure sweep = 1e3",
+                        "subsection Mesh\n  set Element type = " + element + "\nend\n");
+      const auto outcome = design.run("sweep");
+      INFO(outcome.output);
+      REQUIRE(outcome.status == 0);
+      const auto  database = ActuationDatabase::open(design.database());
+      const auto &mesh     = database.mesh();
+      check_cavity_triangles(mesh);
+      CHECK(mesh.nodes_per_cell == (element == "Q2" ? 8 : 4));
+      if (element == "Q2") // 13 x 7 x 7 nodes less the 7 inside the cavity;
+        {                   // tip face: 4 x 4 vertices, edge and face midpoints
+          CHECK(mesh.X.size() == 630);
+          CHECK(mesh.tip_nodes.size() == 49);
+        }
+      for (const auto n : mesh.tip_nodes)
+        CHECK(mesh.X[n][0] == Approx(0.08).epsilon(1e-12));
+    }
 }
 
 TEST_CASE("a rerun is all cache hits and rewrites nothing, only a design change invalidates")
