@@ -69,13 +69,23 @@ namespace softchain
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
 
-    // The clamped DoFs of all ranks are known to every rank, so that spring
+    // The fixed DoFs of all ranks are known to every rank, so that spring
     // and point-load stencils that reach into another rank's cells still
     // see which of their DoFs are fixed.
     AffineConstraints<double> local;
     local.reinit(relevant_dofs);
     VectorTools::interpolate_boundary_values(*mapping, dof_handler, boundary::base,
                                              Functions::ZeroFunction<3>(3), local);
+    const types::boundary_id fixed_component[3] = {boundary::fixed_x, boundary::fixed_y,
+                                                   boundary::fixed_z};
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        ComponentMask component(3, false);
+        component.set(c, true);
+        VectorTools::interpolate_boundary_values(*mapping, dof_handler, fixed_component[c],
+                                                 Functions::ZeroFunction<3>(3), local,
+                                                 component);
+      }
     std::vector<types::global_dof_index> fixed;
     for (const auto &line : local.get_lines())
       fixed.push_back(line.index);

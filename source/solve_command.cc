@@ -10,10 +10,31 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
 
 namespace softchain
 {
+  namespace
+  {
+    // <output directory>/solve_summary.csv, one header and one data row, 17
+    // significant digits (doubles round-trip), written by rank 0: the
+    // machine-readable result that tests compare between runs.
+    void write_summary(const std::string &directory, const QuasiStaticSolver::Result &result,
+                       const Tensor<1, 3> &tip, const double cavity_volume)
+    {
+      std::filesystem::create_directories(directory);
+      std::ofstream csv(directory + "/solve_summary.csv");
+      csv << "converged,load_factor,newton_iterations,load_steps,tip_displacement_x,"
+             "tip_displacement_y,tip_displacement_z,cavity_volume\n"
+          << std::setprecision(17) << result.converged << ',' << result.load_factor_reached
+          << ',' << result.newton_iterations << ',' << result.load_steps << ',' << tip[0] << ','
+          << tip[1] << ',' << tip[2] << ',' << cavity_volume << '\n';
+    }
+  } // namespace
+
   int solve_command(const std::string &prm_file)
   {
     const MPI_Comm     comm = MPI_COMM_WORLD;
@@ -44,6 +65,9 @@ namespace softchain
         << result.load_steps << " load steps, " << result.newton_iterations
         << " Newton iterations, " << result.wall_time << " s\n"
         << "mean tip displacement [m]: " << tip << '\n';
+    const double cavity_volume = solver.pressure_load().cavity_volume(solver.displacement());
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_summary(prm.design.output_directory, result, tip, cavity_volume);
     if (prm.output.write_vtu)
       {
         TimerOutput::Scope timer_section(solver.timer(), "output");

@@ -1,8 +1,9 @@
 #pragma once
 // FiniteElementSpace: the distributed mesh, the vector-valued Lagrange element
 // (Q1/Q2 on hexahedra, P1/P2 on tetrahedra), its mapping and quadratures, the
-// DoF partitioning and the clamped-base constraints. Every physics operator
-// (material, follower pressure, springs, point loads) works on one of these.
+// DoF partitioning and the Dirichlet constraints (clamped base, symmetry
+// faces). Every physics operator (material, follower pressure, springs, point
+// loads) works on one of these.
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
@@ -36,7 +37,8 @@ namespace softchain
     DoFHandler<3>                            dof_handler;
     IndexSet                                 owned_dofs;
     IndexSet                                 relevant_dofs;
-    AffineConstraints<double>                clamped_base; // u = 0 on `base`
+    // u = 0 on `base`; u_x, u_y, u_z = 0 on `fixed_x`, `fixed_y`, `fixed_z`.
+    AffineConstraints<double>                clamped_base;
     bool                                     simplex;
     unsigned int                             degree;
 

@@ -4,6 +4,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <fstream>
+#include <iomanip>
 #include <random>
 
 namespace softchain::test
@@ -24,6 +25,32 @@ namespace softchain::test
         << "subsection Output\n  set Write VTU = false\n  set Verbose = false\nend\n"
         << extra;
     return prm.str();
+  }
+
+  std::string solid_prm(const std::string &element, const std::string &strain_energy,
+                        const double youngs_modulus, const double poissons_ratio,
+                        const std::string &extra)
+  {
+    std::ostringstream prm;
+    prm << std::setprecision(17) << "subsection Mesh\n  set Element type = " << element
+        << "\nend\nsubsection Materials\n  set Strain energy = " << strain_energy
+        << "\n  subsection solid\n    set Young's modulus = " << youngs_modulus
+        << "\n    set Poisson's ratio = " << poissons_ratio << "\n  end\nend\n"
+        << "subsection Output\n  set Write VTU = false\n  set Verbose = false\nend\n"
+        << extra;
+    return prm.str();
+  }
+
+  MeshSolverFixture::MeshSolverFixture(const Parameters &p, const Triangulation<3> &mesh)
+    : prm(p)
+    , solver(std::make_unique<QuasiStaticSolver>(prm, mesh, std::vector<std::string>{"solid"},
+                                                 std::vector<SpringPolyline>(), MPI_COMM_WORLD,
+                                                 log))
+  {}
+
+  Tensor<1, 3> displacement_at(const QuasiStaticSolver &solver, const Point<3> &p)
+  {
+    return solver.deformed_points({p})[0] - p;
   }
 
   SolverFixture::SolverFixture(const Parameters &p)

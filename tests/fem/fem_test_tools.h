@@ -1,6 +1,7 @@
 #pragma once
 // Helpers of the FEM-tier tests: parameters from .prm text, solvers on the
-// built-in bender, random smooth displacement fields.
+// built-in bender or on a mesh made in the test, random smooth displacement
+// fields, displacements at points.
 #include <softchain/finger_mesh.h>
 #include <softchain/parameters.h>
 #include <softchain/quasi_static_solver.h>
@@ -18,6 +19,27 @@ namespace softchain::test
   // appended (later `set` lines override earlier ones per subsection).
   std::string bender_prm(const std::string &element, unsigned int cells,
                          const std::string &extra_subsections = "");
+
+  // A .prm text for a test-built mesh with one material region `solid`:
+  // element type, strain energy ("log" | "split"), E [Pa] and nu, plus
+  // `extra_subsections`.
+  std::string solid_prm(const std::string &element, const std::string &strain_energy,
+                        double youngs_modulus, double poissons_ratio,
+                        const std::string &extra_subsections = "");
+
+  // A solver on a mesh built in the test (material id 0 = region `solid`,
+  // boundary ids of boundary_ids.h), no springs.
+  struct MeshSolverFixture
+  {
+    MeshSolverFixture(const Parameters &p, const Triangulation<3> &mesh);
+    Parameters                         prm;
+    std::ostringstream                 log;
+    std::unique_ptr<QuasiStaticSolver> solver;
+  };
+
+  // Displacement of the solver's current state at reference point `p`
+  // (inside the body or on its boundary), the same on every rank.
+  Tensor<1, 3> displacement_at(const QuasiStaticSolver &solver, const Point<3> &p);
 
   struct SolverFixture
   {

@@ -1,0 +1,35 @@
+#!/bin/bash
+# usage: compare_mpi_solve.sh MPIEXEC SOFTCHAIN FILE.prm
+# Runs `softchain solve FILE.prm` on 1 and on 2 MPI ranks (in ./np1, ./np2;
+# the .prm's output directory is relative) and compares their
+# solve_summary.csv: the converged flag and the counts equal, the load factor
+# and the cavity volume to relative 1e-8, the tip displacement vector to 1e-8
+# of its length (a component that is zero by symmetry is round-off on both
+# runs) (issue 2: one code path in serial and in parallel).
+set -eu
+mpiexec=$1 softchain=$2 prm=$3
+for n in 1 2; do
+  rm -rf "np$n"
+  mkdir "np$n"
+  (cd "np$n" && "$mpiexec" -np "$n" --oversubscribe "$softchain" solve "$prm")
+done
+one=np1/output/solve_summary.csv two=np2/output/solve_summary.csv
+cat "$one" "$two"
+awk -F, 'function abs(x) { return x < 0 ? -x : x }
+         function differs(i, scale) {
+           if (abs($i - a[i]) <= 1e-8 * scale) return 0
+           print "column " i " differs by " abs($i - a[i]) " (scale " scale ")"
+           return 1
+         }
+         NR == 2 { for (i = 1; i <= NF; ++i) a[i] = $i }
+         NR == 4 {
+           if (NF != 8) { print "expected 8 columns, got " NF; exit 1 }
+           bad = ($1 != a[1] || $3 != a[3] || $4 != a[4])
+           if (bad) print "converged flag or counts differ"
+           tip = sqrt(a[5] ^ 2 + a[6] ^ 2 + a[7] ^ 2)
+           bad += differs(2, abs(a[2])) + differs(5, tip) + differs(6, tip) + differs(7, tip)
+           bad += differs(8, abs(a[8]))
+           exit bad > 0
+         }
+         END { if (NR != 4) { print "expected a header and a row in each file"; exit 1 } }' \
+  "$one" "$two"
