@@ -1,18 +1,23 @@
 // `softchain solve` with Write VTU = true on a small pressurised bender with
 // springs: the files are read back. The body (.pvtu record and its .vtu
-// pieces, deal.II's DataOut) must carry displacement (3 components), the
-// Cauchy stress, von_mises, J and material_id; the springs' ASCII VTU one
-// tension per line cell, never negative (tension-only springs) and positive
-// somewhere (the pressure stretches the threads).
+// pieces, deal.II's DataOut: zlib-compressed base64 "binary" arrays) must
+// carry displacement (3 components per point), the Cauchy stress, von_mises,
+// J and material_id with sane values; the springs' ASCII VTU one tension per
+// line cell, never negative (tension-only springs) and positive somewhere
+// (the pressure stretches the threads).
 #include "fem_test_tools.h"
 
 #include <softchain/commands.h>
+
+#include <zlib.h>
 
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <regex>
 
@@ -57,17 +62,97 @@ namespace
     return std::vector<double>(std::istream_iterator<double>(in), std::istream_iterator<double>());
   }
 
-  void check_body_piece(const std::string &xml)
+  std::string base64_decode(const std::string &text)
   {
-    REQUIRE(std::stoul(attribute_values(xml, "NumberOfPoints").at(0)) > 0);
-    const std::string displacement = data_array_tag(xml, "displacement");
-    REQUIRE(!displacement.empty());
-    CHECK(attribute_values(displacement, "NumberOfComponents").at(0) == "3");
+    const std::string alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string  bytes;
+    unsigned int buffer = 0, bits = 0;
+    for (const char c : text)
+      {
+        const auto value = alphabet.find(c);
+        if (value == std::string::npos)
+          continue; // padding
+        buffer = (buffer << 6) | value;
+        bits += 6;
+        if (bits >= 8)
+          {
+            bits -= 8;
+            bytes.push_back(char((buffer >> bits) & 0xff));
+          }
+      }
+    return bytes;
+  }
+
+  // A DataOut "binary" Float32 array: base64 of a header of four uint32
+  // (one block, block size, last block size, compressed size), then base64
+  // of the zlib-compressed little-endian floats.
+  std::vector<float> binary_array(const std::string &xml, const std::string &name)
+  {
+    const std::string tag = data_array_tag(xml, name);
+    REQUIRE(!tag.empty());
+    const auto        begin = xml.find(tag) + tag.size();
+    std::istringstream in(xml.substr(begin, xml.find("</DataArray>", begin) - begin));
+    std::string        text;
+    in >> text;
+    std::uint32_t header[4];
+    const auto    header_bytes = base64_decode(text.substr(0, 24));
+    std::memcpy(header, header_bytes.data(), sizeof(header));
+    REQUIRE(header[0] == 1);
+    const auto   compressed = base64_decode(text.substr(24));
+    std::vector<float> values(header[1] / sizeof(float));
+    uLongf             size = header[1];
+    REQUIRE(uncompress(reinterpret_cast<Bytef *>(values.data()), &size,
+                       reinterpret_cast<const Bytef *>(compressed.data()),
+                       compressed.size()) == Z_OK);
+    REQUIRE(size == header[1]);
+    return values;
+  }
+
+  // Largest |u| over the points of a displacement array (x, y, z per point).
+  double largest_displacement(const std::vector<float> &u)
+  {
+    double largest = 0;
+    for (std::size_t k = 0; k + 2 < u.size(); k += 3)
+      largest = std::max(largest, std::hypot(double(u[k]), double(u[k + 1]), double(u[k + 2])));
+    return largest;
+  }
+
+  // Length of the mean tip displacement in solve_summary.csv.
+  double summary_tip_displacement(const std::string &file)
+  {
+    std::istringstream in(file_text(file));
+    std::string        header, row;
+    std::getline(in, header);
+    std::getline(in, row);
+    std::vector<double> columns;
+    std::istringstream  cells(row);
+    for (std::string cell; std::getline(cells, cell, ',');)
+      columns.push_back(std::stod(cell));
+    REQUIRE(columns.size() == 8);
+    return std::hypot(columns[4], columns[5], columns[6]);
+  }
+
+  // The body's fields: all present, with one value per point (three for
+  // the displacement), J > 0, von Mises >= 0, material id 0 (one region).
+  // Returns the largest |u|.
+  double check_body_piece(const std::string &xml)
+  {
+    const auto n_points = std::stoul(attribute_values(xml, "NumberOfPoints").at(0));
+    REQUIRE(n_points > 0);
+    const auto u = binary_array(xml, "displacement");
+    CHECK(u.size() == 3 * n_points);
     for (const std::string name : {"cauchy_xx", "cauchy_yz", "von_mises", "J", "material_id"})
       {
         INFO(name);
-        CHECK(!data_array_tag(xml, name).empty());
+        CHECK(binary_array(xml, name).size() == n_points);
       }
+    const auto J = binary_array(xml, "J"), von_mises = binary_array(xml, "von_mises"),
+               material = binary_array(xml, "material_id");
+    CHECK(*std::min_element(J.begin(), J.end()) > 0);
+    CHECK(*std::min_element(von_mises.begin(), von_mises.end()) >= 0);
+    CHECK(std::all_of(material.begin(), material.end(), [](float m) { return m == 0; }));
+    return largest_displacement(u);
   }
 } // namespace
 
@@ -86,8 +171,15 @@ TEST_CASE("solve writes VTU files that read back with all fields", "[fem][output
   const std::string vtu    = directory + "/vtu/";
   const auto        pieces = attribute_values(file_text(vtu + "solution_0000.pvtu"), "Source");
   REQUIRE(!pieces.empty());
+  double largest = 0;
   for (const auto &piece : pieces)
-    check_body_piece(file_text(vtu + piece));
+    largest = std::max(largest, check_body_piece(file_text(vtu + piece)));
+  // The mean of u over the tip face is a convex combination of nodal values
+  // (Q1), so it cannot exceed the largest nodal |u| (up to the float32
+  // rounding of the VTU, 6e-8 relative).
+  const double tip = summary_tip_displacement(directory + "/solve_summary.csv");
+  CHECK(tip > 0);
+  CHECK(largest >= tip * (1 - 1e-6));
 
   const std::string springs  = file_text(vtu + "solution_springs_0000.vtu");
   const auto        tensions = ascii_array(springs, "tension");
