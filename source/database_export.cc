@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <set>
@@ -100,6 +101,42 @@ namespace softchain
       std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
       return t;
     }
+
+    // The nodes of face f of `cell` by lattice position; node(b) is the node
+    // of the cell's base-element support point b.
+    std::map<std::pair<int, int>, Index>
+    face_nodes(const Cell &cell, const unsigned int f, const FiniteElement<3> &base,
+               const unsigned int degree, const std::function<Index(unsigned int)> &node)
+    {
+      const auto           &units = base.get_unit_support_points();
+      const auto            face  = cell->face(f);
+      std::vector<Point<3>> u; // the face's vertices in unit cell coordinates
+      for (const unsigned int fv : face->vertex_indices())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex_index(v) == face->vertex_index(fv))
+            u.push_back(units[v]); // vertex support points come first
+      const FaceLattice lattice{u[1] - u[0], u[2] - u[0], u[0], degree};
+      std::map<std::pair<int, int>, Index> nodes;
+      std::pair<int, int>                  ij;
+      for (unsigned int b = 0; b < base.n_dofs_per_cell(); ++b)
+        if (lattice.locate(units[b], ij))
+          nodes[ij] = node(b);
+      return nodes;
+    }
+
+    // The rows of k indices of all ranks, sorted and unique, so that the
+    // order does not depend on the partition.
+    std::vector<std::vector<Index>> gathered_rows(const std::vector<Index> &local,
+                                                  const std::size_t k, const MPI_Comm comm)
+    {
+      const auto all = concatenate(Utilities::MPI::all_gather(comm, local));
+      std::vector<std::vector<Index>> rows;
+      for (std::size_t r = 0; r + k <= all.size(); r += k)
+        rows.emplace_back(all.begin() + r, all.begin() + r + k);
+      std::sort(rows.begin(), rows.end());
+      rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+      return rows;
+    }
   } // namespace
 
   DatabaseExport::DatabaseExport(const FiniteElementSpace &fe_space)
@@ -153,9 +190,9 @@ namespace softchain
     std::unordered_map<types::global_dof_index, Index> node_of;
     for (std::size_t n = 0; n < record.X.size(); ++n)
       node_of[node_dofs[3 * n]] = n;
-    const FiniteElement<3> &base  = space.fe->base_element(0);
-    const auto             &units = base.get_unit_support_points();
-    std::vector<Index>      triangles, tip, clamped, cells;
+    const FiniteElement<3> &base = space.fe->base_element(0);
+    record.nodes_per_cell        = base.reference_cell().n_vertices();
+    std::vector<Index>                   triangles, tip, clamped, cells;
     std::vector<types::global_dof_index> cell_dofs(space.fe->n_dofs_per_cell());
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       {
@@ -170,54 +207,35 @@ namespace softchain
         for (const unsigned int f : cell->face_indices())
           {
             const auto face = cell->face(f);
-            if (!face->at_boundary())
-              continue;
-            const auto id = face->boundary_id();
-            if (id != boundary::cavity && id != boundary::tip && id != boundary::base)
-              continue;
-            // The face's vertices as cell vertices, for their unit positions.
-            std::vector<Point<3>> u;
-            for (const unsigned int fv : face->vertex_indices())
-              for (const unsigned int v : cell->vertex_indices())
-                if (cell->vertex_index(v) == face->vertex_index(fv))
-                  u.push_back(units[v]);
-            const FaceLattice lattice{u[1] - u[0], u[2] - u[0], u[0], space.degree};
-            std::map<std::pair<int, int>, Index> on_face;
-            std::pair<int, int>                  ij;
-            for (unsigned int b = 0; b < base.n_dofs_per_cell(); ++b)
-              if (lattice.locate(units[b], ij))
-                on_face[ij] = node(b);
-            if (id != boundary::cavity)
-              for (const auto &[key, n] : on_face)
+            const auto id   = face->at_boundary() ? face->boundary_id() : boundary::other;
+            if (id == boundary::tip || id == boundary::base)
+              for (const auto &[ij, n] : face_nodes(cell, f, base, space.degree, node))
                 (id == boundary::tip ? tip : clamped).push_back(n);
-            else
-              for (const auto &t : sub_triangles(u.size() == 4, space.degree))
-                {
-                  const auto o = oriented({on_face.at(t[0]), on_face.at(t[1]), on_face.at(t[2])},
-                                          record.X, face->center() - cell->center());
-                  triangles.insert(triangles.end(), o.begin(), o.end());
-                }
+            if (id == boundary::cavity)
+              add_cavity_triangles(face_nodes(cell, f, base, space.degree, node),
+                                   face->n_vertices() == 4, face->center() - cell->center(),
+                                   triangles);
           }
       }
-    record.nodes_per_cell = base.reference_cell().n_vertices();
-    // Gather, then sort so that the order does not depend on the partition.
-    const auto chunks = [&](const std::vector<Index> &local, std::size_t k) {
-      const auto all = concatenate(Utilities::MPI::all_gather(space.communicator, local));
-      std::vector<std::vector<Index>> rows;
-      for (std::size_t r = 0; r + k <= all.size(); r += k)
-        rows.emplace_back(all.begin() + r, all.begin() + r + k);
-      std::sort(rows.begin(), rows.end());
-      rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-      return rows;
-    };
-    for (const auto &t : chunks(triangles, 3))
+    for (const auto &t : gathered_rows(triangles, 3, space.communicator))
       record.cavity_triangles.push_back({t[0], t[1], t[2]});
-    for (const auto &n : chunks(tip, 1))
+    for (const auto &n : gathered_rows(tip, 1, space.communicator))
       record.tip_nodes.push_back(n[0]);
-    for (const auto &n : chunks(clamped, 1))
+    for (const auto &n : gathered_rows(clamped, 1, space.communicator))
       record.base_nodes.push_back(n[0]);
-    for (const auto &c : chunks(cells, record.nodes_per_cell))
+    for (const auto &c : gathered_rows(cells, record.nodes_per_cell, space.communicator))
       record.cells.insert(record.cells.end(), c.begin(), c.end());
+  }
+
+  void DatabaseExport::add_cavity_triangles(const std::map<std::pair<int, int>, Index> &nodes,
+                                            const bool quad, const Tensor<1, 3> &outward,
+                                            std::vector<Index> &triangles) const
+  {
+    for (const auto &t : sub_triangles(quad, space.degree))
+      {
+        const auto o = oriented({nodes.at(t[0]), nodes.at(t[1]), nodes.at(t[2])}, record.X, outward);
+        triangles.insert(triangles.end(), o.begin(), o.end());
+      }
   }
 
   std::vector<data::Point3>

@@ -1,7 +1,7 @@
 #include <softchain/sample_group.h>
 #include <softchain/solution_output.h>
 
-#include <cmath>
+#include <algorithm>
 
 namespace softchain
 {
@@ -24,23 +24,6 @@ namespace softchain
                                     Point<3>(f.force[0], f.force[1], f.force[2])});
       return load;
     }
-
-    // |p| plus the force magnitudes.
-    double load_size(const double pressure, const std::vector<Tensor<1, 3>> &forces)
-    {
-      double size = std::abs(pressure);
-      for (const auto &f : forces)
-        size += f.norm();
-      return size;
-    }
-
-    std::vector<Tensor<1, 3>> forces_of(const data::Actuation &actuation)
-    {
-      std::vector<Tensor<1, 3>> forces;
-      for (const auto &f : actuation.point_forces)
-        forces.push_back(Point<3>(f.force[0], f.force[1], f.force[2]));
-      return forces;
-    }
   } // namespace
 
   SampleGroup::SampleGroup(const Parameters &parameters, const FingerMesh &mesh,
@@ -55,12 +38,13 @@ namespace softchain
   {
     if (!start || start->point_forces.size() != target.point_forces.size())
       return initial_load_step;
-    auto increment = forces_of(target);
-    for (std::size_t k = 0; k < increment.size(); ++k)
-      increment[k] -= forces_of(*start)[k];
-    const double whole = load_size(target.pressure, forces_of(target));
-    const double step  = load_size(target.pressure - start->pressure, increment);
-    return step > 0 ? std::min(1.0, initial_load_step * whole / step) : 1.0;
+    data::Actuation increment = target; // the forces at the same points, in chain order
+    increment.pressure -= start->pressure;
+    for (std::size_t k = 0; k < increment.point_forces.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        increment.point_forces[k].force[c] -= start->point_forces[k].force[c];
+    const double step = load_size(increment);
+    return step > 0 ? std::min(1.0, initial_load_step * load_size(target) / step) : 1.0;
   }
 
   void SampleGroup::check_points(const std::vector<Sample> &samples) const

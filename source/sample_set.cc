@@ -87,14 +87,6 @@ namespace softchain
       return a;
     }
 
-    double load_size(const data::Actuation &a)
-    {
-      double size = std::abs(a.pressure);
-      for (const auto &f : a.point_forces)
-        size += std::hypot(f.force[0], f.force[1], f.force[2]);
-      return size;
-    }
-
     // The chain key: role and force points.
     std::string chain_key(const data::Actuation &a)
     {
@@ -134,6 +126,14 @@ namespace softchain
       return samples;
     }
   } // namespace
+
+  double load_size(const data::Actuation &actuation)
+  {
+    double size = std::abs(actuation.pressure);
+    for (const auto &f : actuation.point_forces)
+      size += std::hypot(f.force[0], f.force[1], f.force[2]);
+    return size;
+  }
 
   SampleSet SampleSet::read(const data::PrmFile &prm, const TipFace &tip,
                             const std::string &design_hash)

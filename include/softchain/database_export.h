@@ -11,6 +11,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace softchain
@@ -36,5 +38,10 @@ namespace softchain
 
     void number_nodes();
     void collect_faces_and_cells();
+    // Appends the oriented linear sub-triangles of one cavity face, given
+    // its nodes by lattice position.
+    void add_cavity_triangles(const std::map<std::pair<int, int>, std::int64_t> &nodes,
+                              bool quad, const Tensor<1, 3> &outward,
+                              std::vector<std::int64_t> &triangles) const;
   };
 } // namespace softchain

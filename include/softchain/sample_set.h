@@ -39,6 +39,10 @@ namespace softchain
     std::string     id;    // data::sample_id(design hash, actuation)
   };
 
+  // |p| + sum |f|: the order of the samples along a chain [mixed units,
+  // compared only within one chain].
+  double load_size(const data::Actuation &actuation);
+
   class SampleSet
   {
   public:
