@@ -31,9 +31,9 @@ TEST_CASE("follower pressure on a closed cavity has zero resultant", "[fem][pres
   for (const std::string element : {"Q1", "Q2", "P2"})
     {
       INFO(element);
-      test::SolverFixture f(test::parameters_from_text(
-        "pressure_resultant",
-        test::bender_prm(element, 4, "subsection Springs\n  set Generate for bender = false\nend\n")));
+      const std::string no_springs = "subsection Springs\n  set Generate for bender = false\nend\n";
+      test::SolverFixture f(
+        test::parameters_from_text("pressure_resultant", test::bender_prm(element, 4, no_springs)));
       const auto &pressure = f.solver->pressure_load();
       // Each of the ~1e3 face-point terms is exact to ~1e-16 of p A: 1e-12
       // leaves a margin of ~1e1 over accumulated round-off and is far below

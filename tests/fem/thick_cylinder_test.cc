@@ -23,6 +23,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 
 using namespace softchain;
@@ -58,26 +59,33 @@ namespace
     return l;
   }
 
-  // The ODE's right-hand side for y = (f, P_r) at R.
-  std::array<double, 2> slope(const Lame &m, const double R, const std::array<double, 2> &y)
+  using State = std::array<double, 2>; // (f, P_r) at R, or their derivatives
+
+  State add(const State &y, const double h, const State &k)
   {
-    const double l_t = y[0] / R, l_r = radial_stretch(m, y[1], l_t);
-    return {l_r, (nominal_stress(m, l_t, l_r * l_t) - y[1]) / R};
+    return {{y[0] + h * k[0], y[1] + h * k[1]}};
   }
 
-  // f(B) and P_r(B) from f(A) = a (RK4, 2000 steps: error ~h^4 ~ 1e-14).
-  std::array<double, 2> integrate(const Lame &m, const double a)
+  // The ODE's right-hand side at R.
+  State slope(const Lame &m, const double R, const State &y)
   {
-    const unsigned int    steps = 2000;
-    const double          h     = (B - A) / steps;
-    std::array<double, 2> y{a, -p * a / A};
+    const double l_t = y[0] / R, l_r = radial_stretch(m, y[1], l_t);
+    return {{l_r, (nominal_stress(m, l_t, l_r * l_t) - y[1]) / R}};
+  }
+
+  // (f(B), P_r(B)) from f(A) = a (RK4, 2000 steps: error ~h^4 ~ 1e-14).
+  State integrate(const Lame &m, const double a)
+  {
+    const unsigned int steps = 2000;
+    const double       h     = (B - A) / steps;
+    State              y{{a, -p * a / A}};
     for (unsigned int k = 0; k < steps; ++k)
       {
         const double R  = A + k * h;
-        const auto   k1 = slope(m, R, y);
-        const auto   k2 = slope(m, R + h / 2, {y[0] + h / 2 * k1[0], y[1] + h / 2 * k1[1]});
-        const auto   k3 = slope(m, R + h / 2, {y[0] + h / 2 * k2[0], y[1] + h / 2 * k2[1]});
-        const auto   k4 = slope(m, R + h, {y[0] + h * k3[0], y[1] + h * k3[1]});
+        const State  k1 = slope(m, R, y);
+        const State  k2 = slope(m, R + h / 2, add(y, h / 2, k1));
+        const State  k3 = slope(m, R + h / 2, add(y, h / 2, k2));
+        const State  k4 = slope(m, R + h, add(y, h, k3));
         for (unsigned int i = 0; i < 2; ++i)
           y[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
       }
@@ -95,27 +103,39 @@ namespace
         a0 = a1, g0 = g1, a1 = a2, g1 = integrate(m, a1)[1];
       }
     REQUIRE(std::abs(g1) <= 1e-12 * p);
-    return {a1 - A, integrate(m, a1)[0] - B};
+    return {{a1 - A, integrate(m, a1)[0] - B}};
+  }
+
+  constexpr double quarter = numbers::PI / 2;
+
+  // Boundary id of a face of the (R, Theta, Z) box with centre c: the cavity
+  // R = A, the free outer face R = B, the symmetry planes Theta = 0 (y = 0)
+  // and Theta = pi/2 (x = 0), the plane-strain faces Z = 0, H.
+  types::boundary_id ring_boundary_id(const Point<3> &c)
+  {
+    if (std::abs(c[0] - A) < 1e-9 * A)
+      return boundary::cavity;
+    if (std::abs(c[0] - B) < 1e-9 * A)
+      return boundary::other;
+    if (c[1] < 1e-9)
+      return boundary::fixed_y;
+    if (std::abs(c[1] - quarter) < 1e-9)
+      return boundary::fixed_x;
+    return boundary::fixed_z;
   }
 
   // A quarter ring of n_r x n_t x 1 cells, its vertices exactly on the circles.
   void quarter_ring(const unsigned int n_r, const unsigned int n_t, Triangulation<3> &mesh)
   {
-    const double quarter = numbers::PI / 2;
     GridGenerator::subdivided_hyper_rectangle(mesh, {n_r, n_t, 1}, Point<3>(A, 0, 0),
                                               Point<3>(B, quarter, H));
     for (const auto &face : mesh.active_face_iterators())
       if (face->at_boundary())
-        {
-          const Point<3> c = face->center(); // (R, Theta, Z)
-          face->set_boundary_id(std::abs(c[0] - A) < 1e-9 * A       ? boundary::cavity :
-                                std::abs(c[0] - B) < 1e-9 * A       ? boundary::other :
-                                c[1] < 1e-9                         ? boundary::fixed_y :
-                                std::abs(c[1] - quarter) < 1e-9     ? boundary::fixed_x :
-                                                                      boundary::fixed_z);
-        }
+        face->set_boundary_id(ring_boundary_id(face->center()));
     GridTools::transform(
-      [](const Point<3> &q) { return Point<3>(q[0] * std::cos(q[1]), q[0] * std::sin(q[1]), q[2]); },
+      [](const Point<3> &q) {
+        return Point<3>(q[0] * std::cos(q[1]), q[0] * std::sin(q[1]), q[2]);
+      },
       mesh);
   }
 
@@ -130,8 +150,8 @@ namespace
     LoadState load;
     load.pressure = p;
     REQUIRE(f.solver->solve(load).converged);
-    return {test::displacement_at(*f.solver, Point<3>(A, 0, 0))[0],
-            test::displacement_at(*f.solver, Point<3>(B, 0, 0))[0]};
+    return {{test::displacement_at(*f.solver, Point<3>(A, 0, 0))[0],
+             test::displacement_at(*f.solver, Point<3>(B, 0, 0))[0]}};
   }
 } // namespace
 
