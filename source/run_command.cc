@@ -34,7 +34,7 @@ namespace softchain
       const auto start  = std::chrono::steady_clock::now();
       const int  status = body();
       out << "== stage " << k << "/3: " << name << (status == 0 ? " done" : " done with failures")
-                << " in " << std::fixed << std::setprecision(1)
+                << " in " << std::fixed << std::setprecision(2)
                 << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
                 << " s" << std::defaultfloat << std::endl;
       return status;
@@ -100,19 +100,18 @@ namespace softchain
 
   int run_command(const std::string &prm_file)
   {
-    const bool   root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    std::ostream silent(nullptr);
-    SampleSweep  sweep(prm_file);
-    std::string  directory;
+    const bool    root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::ostream  silent(nullptr);
     std::ostream &out = root ? std::cout : silent;
+    std::string   database;
     const int     swept = stage(out, 1, "FEM sample sweep", [&] {
-      const auto summary = sweep.run();
-      directory          = fs::path(summary.database).parent_path().string();
-      return summary.report(root ? std::cout : silent, root ? std::cerr : silent);
+      const auto summary = SampleSweep(prm_file).run();
+      database           = summary.database;
+      return summary.report(out, root ? std::cerr : silent);
     });
     if (!root)
       return swept;
-    const std::string database = directory + "/database.h5";
+    const std::string directory = fs::path(database).parent_path().string();
     stage(out, 2, "reduction", [&] { return reduction::run_reduction(prm_file, database, directory); });
     const int chained =
       stage(out, 3, "chain validation",
