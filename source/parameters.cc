@@ -18,14 +18,16 @@ namespace softchain
       throw data::InputError(file + ": parameter '" + parameter + "': " + why);
     }
 
-    // The text deal.II puts after "Additional information:" in its
-    // exceptions: the part a user needs (it names the line and entry).
+    // The text deal.II puts between "Additional information:" and
+    // "Stacktrace:" in its exceptions: the part a user needs (it names the
+    // line and entry), without deal.II's call stack.
     std::string user_message(const std::string &what)
     {
       const std::string marker = "Additional information:";
       const auto        pos    = what.find(marker);
       std::string message =
         (pos == std::string::npos) ? what : what.substr(pos + marker.size());
+      message = message.substr(0, message.find("Stacktrace:"));
       message = std::regex_replace(message, std::regex("\\s+"), " ");
       return std::regex_replace(message, std::regex("^ | $"), "");
     }
