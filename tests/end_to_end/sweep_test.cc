@@ -128,7 +128,18 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
       for (const auto n : mesh.base_nodes) // clamped
         CHECK(s.x[n] == mesh.X[n]);
       if (s.actuation.role == "lateral") // a +z force moves its point along +z
-        CHECK(s.force_points_deformed[0][2] > s.actuation.point_forces[0].point[2]);
+        {
+          // The default force point: the centre of the tip face.
+          const Point3 tip_centre{0.08, 0.006, 0.009};
+          for (int c = 0; c < 3; ++c) // midpoints of mesh vertices: rounding only
+            CHECK(s.actuation.point_forces[0].point[c] == Approx(tip_centre[c]).epsilon(1e-12));
+          CHECK(s.force_points_deformed[0][2] > s.actuation.point_forces[0].point[2]);
+        }
+      if (s.actuation.role == "torsion") // default arm: a quarter of the 18 mm width
+        {
+          CHECK(s.actuation.point_forces[0].point[2] == Approx(0.009 + 0.0045));
+          CHECK(s.actuation.point_forces[1].point[2] == Approx(0.009 - 0.0045));
+        }
       if (s.actuation.role == "torsion") // the couple's points move apart along y
         CHECK(s.force_points_deformed[0][1] - s.actuation.point_forces[0].point[1] ==
               Approx(s.actuation.point_forces[1].point[1] - s.force_points_deformed[1][1]));
