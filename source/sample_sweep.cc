@@ -155,37 +155,41 @@ namespace softchain
                                                              design_record(prm, prm_file, hash),
                                                              group.mesh());
         }
-      const auto   mine   = share_of(pending, color, n_groups);
-      const auto   rounds = Utilities::MPI::max(mine.size(), MPI_COMM_WORLD);
-      const bool   leader = Utilities::MPI::this_mpi_process(group_comm) == 0;
-      std::map<std::string, std::size_t> index_of;
-      for (std::size_t i = 0; i < set.samples.size(); ++i)
-        index_of[set.samples[i].id] = i;
-      // Rounds: each group solves its next sample, then world rank 0 stores
-      // the round's results in sample order.
-      for (std::size_t r = 0; r < rounds; ++r)
-        {
-          std::vector<data::SampleRecord> outcome;
-          if (r < mine.size())
-            {
-              const std::size_t i = mine[r];
-              known[i] = group.solve(set.samples[i], start_of(i, known), i);
-              if (leader)
-                outcome.push_back(known[i]);
-            }
-          auto all = Utilities::MPI::gather(MPI_COMM_WORLD, outcome, 0);
-          for (auto &records : all)
-            for (auto &record : records)
-              {
-                const std::size_t i = index_of.at(record.id);
-                record.actuation    = set.samples[i].actuation;
-                database->store_sample(record);
-                progress.solved(set.samples[i], record);
-                known[i] = std::move(record);
-              }
-        }
+      solve_rounds(group, share_of(pending, color, n_groups), database, known, progress);
     }
     MPI_Comm_free(&group_comm);
+  }
+
+  // Rounds: each group solves its next sample, then world rank 0 stores the
+  // round's results (in group order) and prints their progress lines.
+  void SampleSweep::solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
+                                 std::optional<data::ActuationDatabase> &database, Records &known,
+                                 SweepProgress &progress) const
+  {
+    std::map<std::string, std::size_t> index_of;
+    for (std::size_t i = 0; i < set.samples.size(); ++i)
+      index_of[set.samples[i].id] = i;
+    const auto rounds = Utilities::MPI::max(mine.size(), MPI_COMM_WORLD);
+    for (std::size_t r = 0; r < rounds; ++r)
+      {
+        std::vector<data::SampleRecord> outcome;
+        if (r < mine.size())
+          {
+            const std::size_t i = mine[r];
+            known[i]            = group.solve(set.samples[i], start_of(i, known), i);
+            if (group.leader())
+              outcome.push_back(known[i]);
+          }
+        for (auto &records : Utilities::MPI::gather(MPI_COMM_WORLD, outcome, 0))
+          for (auto &record : records)
+            {
+              const std::size_t i = index_of.at(record.id);
+              record.actuation    = set.samples[i].actuation;
+              database->store_sample(record);
+              progress.solved(set.samples[i], record);
+              known[i] = std::move(record);
+            }
+      }
   }
 
   // Whole chains per group (so that every sample continues from the same

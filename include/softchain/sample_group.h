@@ -19,6 +19,11 @@ namespace softchain
     SampleGroup(const Parameters &prm, const FingerMesh &mesh, MPI_Comm group, std::ostream &log);
 
     const data::MeshRecord &mesh() const { return nodes.mesh(); }
+    // Rank 0 of the group: it sends the group's results to world rank 0.
+    bool leader() const
+    {
+      return Utilities::MPI::this_mpi_process(solver.space().communicator) == 0;
+    }
 
     // Throws data::InputError naming the file and the first sample with a
     // force point outside the body.

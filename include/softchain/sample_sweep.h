@@ -13,6 +13,7 @@
 #include <softchain/sample_set.h>
 
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -55,6 +56,9 @@ namespace softchain
     Records                  read_cached() const;
     void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
                                            SweepProgress &progress, unsigned int n_groups) const;
+    void                     solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
+                                          std::optional<data::ActuationDatabase> &database,
+                                          Records &known, SweepProgress &progress) const;
     std::vector<std::size_t> share_of(const std::vector<std::size_t> &pending, unsigned int group,
                                       unsigned int n_groups) const;
     const data::SampleRecord *start_of(std::size_t sample, const Records &known) const;
