@@ -76,3 +76,17 @@ TEST_CASE("embedded spring tangent matches finite differences", "[fem][tangent]"
                                                    test::bender_prm("Q1", 4, options("log", true))));
   CHECK(tangent_error(f, LoadState()) < 1e-6);
 }
+
+TEST_CASE("full tangent (material, pressure, springs) matches finite differences",
+          "[fem][tangent]")
+{
+  for (const std::string element : {"Q2", "P2"})
+    {
+      test::SolverFixture f(test::parameters_from_text(
+        "tangent_all", test::bender_prm(element, 8, options("log", true))));
+      LoadState load;
+      load.pressure = 2e4;
+      INFO(element);
+      CHECK(tangent_error(f, load) < 1e-6);
+    }
+}
