@@ -20,7 +20,8 @@ using softchain::testing::TinyDesign;
 namespace
 {
   // Small loads: each solve is a few Newton iterations on 112 nodes.
-  const std::string samples = "set Pressure sweep = 1e3, 2e3\n"
+  // Listed out of order: the sweep orders each chain by increasing load.
+  const std::string samples = "set Pressure sweep = 2e3, 1e3\n"
                               "set Lateral tip forces = 0.01, 0.02\n"
                               "set Torsion couples = 0.01\n"
                               "set Validation samples = 1.5e3 : tip : 0,0,0.01";
@@ -102,6 +103,7 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
   REQUIRE(outcome.status == 0);
   CHECK(outcome.output.find("[6/6]") != std::string::npos);
   CHECK(count(outcome.output, "ETA") == 6);
+  CHECK(outcome.output.find("pressure 1000 Pa") < outcome.output.find("pressure 2000 Pa"));
 
   const auto  database = ActuationDatabase::open(design.database());
   const auto &mesh     = database.mesh();
@@ -287,10 +289,19 @@ TEST_CASE("force points outside the body or malformed samples fail with exit 1 b
   CHECK(outside.output.find("outside the body") != std::string::npos);
   CHECK(!std::filesystem::exists(design.database())); // nothing solved, nothing stored
 
-  design.write("set Lateral tip forces = 0.1, abc");
-  const auto malformed = design.run("sweep");
-  CHECK(malformed.status == 1);
-  CHECK(malformed.output.find("'Lateral tip forces'") != std::string::npos);
+  const std::pair<const char *, const char *> bad[] = {
+    {"set Lateral tip forces = 0.1, abc", "'Lateral tip forces'"},
+    {"set Validation samples = 1e3 : tip", "sample 'validation 1': '1e3 : tip' needs 'p'"},
+    {"set Pressure sweep = 1e3\nset Validation samples = 1e3",
+     "sample 'validation 1' repeats the actuation of sample 'pressure 1000 Pa'"}};
+  for (const auto &[entry, message] : bad)
+    {
+      design.write(entry);
+      const auto malformed = design.run("sweep");
+      INFO(malformed.output);
+      CHECK(malformed.status == 1);
+      CHECK(malformed.output.find(message) != std::string::npos);
+    }
 }
 
 TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
