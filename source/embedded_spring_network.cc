@@ -9,18 +9,26 @@ namespace softchain
 {
   namespace
   {
-    double tension(const EmbeddedSpringNetwork::Link &link, const double length)
+    // Tension T and dT/dl of a link at current length l (smoothed law).
+    std::pair<double, double>
+    tension(const EmbeddedSpringNetwork::Link &link, const double l, const double d)
     {
-      return length > link.rest_length ?
-               link.axial_rigidity * (length - link.rest_length) / link.rest_length :
-               0.0;
+      const double eps = (l - link.rest_length) / link.rest_length;
+      const double EA  = link.axial_rigidity;
+      if (eps <= 0)
+        return {0.0, 0.0};
+      if (eps < d)
+        return {EA * eps * eps / (2 * d), EA * eps / d / link.rest_length};
+      return {EA * (eps - d / 2), EA / link.rest_length};
     }
   } // namespace
 
   EmbeddedSpringNetwork::EmbeddedSpringNetwork(
     const FiniteElementSpace            &space,
     const std::vector<SpringPolyline>   &polylines,
-    const std::map<std::string, double> &axial_rigidity)
+    const std::map<std::string, double> &axial_rigidity,
+    const double                         smoothing_strain)
+    : smoothing(smoothing_strain)
   {
     std::vector<Point<3>> all_points;
     for (const auto &polyline : polylines)
@@ -44,6 +52,10 @@ namespace softchain
           }
       }
     nodes = std::make_unique<EmbeddedPoints>(space, all_points, "spring node");
+    owned_stencils.resize(links.size());
+    for (unsigned int k = 0; k < links.size(); ++k)
+      if (nodes->owned(links[k].a))
+        owned_stencils[k] = link_stencil(links[k]);
   }
 
   EmbeddedSpringNetwork::LinkStencil
@@ -71,22 +83,17 @@ namespace softchain
 
   void EmbeddedSpringNetwork::add_couplings(DynamicSparsityPattern &pattern) const
   {
-    for (const auto &link : links)
-      if (nodes->owned(link.a))
-        {
-          const auto dofs = link_stencil(link).dofs;
-          for (const auto i : dofs)
-            pattern.add_entries(i, dofs.begin(), dofs.end());
-        }
+    for (const auto &stencil : owned_stencils)
+      for (const auto i : stencil.dofs)
+        pattern.add_entries(i, stencil.dofs.begin(), stencil.dofs.end());
   }
 
   IndexSet EmbeddedSpringNetwork::touched_dofs(const types::global_dof_index n_dofs) const
   {
     IndexSet set(n_dofs);
-    for (const auto &link : links)
-      if (nodes->owned(link.a))
-        for (const auto dof : link_stencil(link).dofs)
-          set.add_index(dof);
+    for (const auto &stencil : owned_stencils)
+      for (const auto dof : stencil.dofs)
+        set.add_index(dof);
     set.compress();
     return set;
   }
@@ -97,33 +104,31 @@ namespace softchain
                                        TrilinosWrappers::MPI::Vector       &rhs) const
   {
     const auto x = nodes->deformed(u);
-    for (const auto &link : links)
+    for (unsigned int k = 0; k < links.size(); ++k)
       {
+        const Link &link = links[k];
         if (!nodes->owned(link.a))
           continue;
         const Tensor<1, 3> d = x[link.b] - x[link.a];
-        const double       l = d.norm();
-        const double       T = tension(link, l);
-        if (l < link.rest_length && matrix == nullptr)
-          continue; // slack: no force, and no tangent wanted
+        const double       l       = d.norm();
+        const auto [T, dT_dl]      = tension(link, l, smoothing);
+        if (T == 0.0)
+          continue; // slack: no force, no stiffness
         const Tensor<1, 3> e = d / l;
 
         // Internal force on (x_a, x_b) and the 6x6 tangent [[H, -H], [-H, H]].
         double g[6], H[6][6] = {};
         for (unsigned int c = 0; c < 3; ++c)
           g[c] = -T * e[c], g[3 + c] = T * e[c];
-        // The axial term is kept at l = L (not only l > L), so that a spring
-        // at rest stiffens the first Newton step (the slack side has none).
-        const double axial = (l >= link.rest_length) ? link.axial_rigidity / link.rest_length : 0.0;
         for (unsigned int c = 0; c < 3; ++c)
           for (unsigned int d2 = 0; d2 < 3; ++d2)
             {
-              const double h = axial * e[c] * e[d2] + T / l * ((c == d2) - e[c] * e[d2]);
+              const double h = dT_dl * e[c] * e[d2] + T / l * ((c == d2) - e[c] * e[d2]);
               H[c][d2] = H[3 + c][3 + d2] = h;
               H[c][3 + d2] = H[3 + c][d2] = -h;
             }
 
-        const LinkStencil  s = link_stencil(link);
+        const LinkStencil &s = owned_stencils[k];
         const unsigned int n = s.dofs.size();
         Vector<double>     local_rhs(n);
         FullMatrix<double> local_matrix(n, n);
@@ -149,7 +154,7 @@ namespace softchain
     const auto          x = nodes->deformed(u);
     std::vector<double> result;
     for (const auto &link : links)
-      result.push_back(tension(link, x[link.a].distance(x[link.b])));
+      result.push_back(tension(link, x[link.a].distance(x[link.b]), smoothing).first);
     return result;
   }
 } // namespace softchain

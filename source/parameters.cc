@@ -175,6 +175,9 @@ namespace softchain
                       "Built-in bender: fabric grid in the bottom wall and "
                       "thread rings in the side walls.");
     prm.declare_entry("Thread pitch", "0.004", Patterns::Double(0));
+    prm.declare_entry("Tension smoothing strain", "1e-3", Patterns::Double(1e-12, 1e-2),
+                      "Strain band over which the tension-only law is rounded "
+                      "(C1), so that Newton does not cycle between slack and taut.");
     prm.leave_subsection();
   }
 
@@ -187,6 +190,7 @@ namespace softchain
     axial_rigidity.insert(map.begin(), map.end());
     generate_for_bender = prm.get_bool("Generate for bender");
     thread_pitch        = prm.get_double("Thread pitch");
+    smoothing_strain    = prm.get_double("Tension smoothing strain");
     prm.leave_subsection();
   }
 
@@ -234,7 +238,7 @@ namespace softchain
     prm.declare_entry("Displacement tolerance", "1e-8", Patterns::Double(0),
                       "... and |du| <= tol * |u|.");
     prm.declare_entry("Maximum Newton iterations", "12", Patterns::Integer(1));
-    prm.declare_entry("Initial load step", "0.25", Patterns::Double(0, 1));
+    prm.declare_entry("Initial load step", "0.125", Patterns::Double(0, 1));
     prm.declare_entry("Minimum load step", "1e-4", Patterns::Double(0, 1));
     prm.declare_entry("Maximum load step", "1", Patterns::Double(0, 1));
     prm.declare_entry("Linear solver", "auto", Patterns::Selection("auto|direct|iterative"),

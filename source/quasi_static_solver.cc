@@ -90,7 +90,8 @@ namespace softchain
     tip_traction = std::make_unique<DeadSurfaceTraction>(*fe_space, boundary::tip);
     if (!spring_polylines.empty())
       springs = std::make_unique<EmbeddedSpringNetwork>(*fe_space, spring_polylines,
-                                                         prm.springs.axial_rigidity);
+                                                         prm.springs.axial_rigidity,
+                                                         prm.springs.smoothing_strain);
     setup_system();
   }
 
@@ -354,36 +355,50 @@ namespace softchain
     return {false, false, prm.solver.max_newton_iterations};
   }
 
+  // Load stepping along s in [0, 1] from the current state to `target`. Each
+  // step starts from the secant extrapolation of the last two converged
+  // states (a first-order continuation predictor), which leaves Newton only
+  // the correction; a failed step is retried from the last converged state
+  // with a quarter of the increment.
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target)
   {
     const auto start_time = std::chrono::steady_clock::now();
     Result     result;
     const LoadState start = load;
-    double     s = 0.0, step = prm.solver.initial_load_step;
+    double     s = 0.0, s_previous = 0.0, step = prm.solver.initial_load_step;
     bool       last_inverted = false;
     // (pressure, cavity volume) of converged states, to tell a limit point.
     std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};
-    TrilinosWrappers::MPI::Vector          u_saved(u_owned);
+    TrilinosWrappers::MPI::Vector          u_converged(u_owned), u_before(u_owned);
     while (s < 1.0)
       {
         const double    s_try = std::min(1.0, s + step);
         const LoadState state = LoadState::interpolate(start, target, s_try);
-        u_saved               = u_owned;
-        const auto outcome    = newton(state, result);
+        if (s > s_previous) // predictor: u + (ds / ds_previous) (u - u_before)
+          {
+            u_owned.add((s_try - s) / (s - s_previous), u_converged);
+            u_owned.add(-(s_try - s) / (s - s_previous), u_before);
+            u_ghosted = u_owned;
+          }
+        const auto outcome = newton(state, result);
         result.newton_iterations += outcome.iterations;
         if (outcome.converged)
           {
-            s = s_try;
-            load = state;
+            s_previous  = s;
+            s           = s_try;
+            load        = state;
+            u_before    = u_converged;
+            u_converged = u_owned;
             ++result.load_steps;
             pv.emplace_back(state.pressure, pressure->cavity_volume(u_ghosted));
             log << "    load step " << result.load_steps << ": factor " << s << ", "
                 << outcome.iterations << " Newton iterations\n";
-            if (outcome.iterations <= 4)
+            if (outcome.iterations <= 5)
               step = std::min(prm.solver.max_load_step, 2 * step);
             continue;
           }
-        set_displacement(u_saved);
+        set_displacement(u_converged);
+        s_previous    = s; // no predictor right after a failure
         last_inverted = outcome.inverted;
         step *= 0.25;
         log << "    load factor " << s_try << " failed ("
@@ -391,7 +406,7 @@ namespace softchain
             << "); cutting the step to " << step << '\n';
         if (step < prm.solver.min_load_step)
           {
-            result.reason = classify_failure(pv, last_inverted);
+            result.reason      = classify_failure(pv, last_inverted);
             result.limit_point = result.reason.rfind("limit point", 0) == 0;
             break;
           }

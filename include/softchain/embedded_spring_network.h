@@ -35,7 +35,8 @@ namespace softchain
     // `axial_rigidity` or a node lies outside the body.
     EmbeddedSpringNetwork(const FiniteElementSpace            &space,
                           const std::vector<SpringPolyline>   &polylines,
-                          const std::map<std::string, double> &axial_rigidity);
+                          const std::map<std::string, double> &axial_rigidity,
+                          double                               smoothing_strain);
 
     bool empty() const { return links.empty(); }
 
@@ -60,6 +61,7 @@ namespace softchain
     std::unique_ptr<EmbeddedPoints> nodes;
     std::vector<Link>               links;
     std::vector<std::string>        network_names;
+    double                          smoothing; // d
 
     // Union of both nodes' stencil DoFs of a link, and for each the weights
     // that map it to the six coordinates (x_a, x_b).
@@ -69,5 +71,7 @@ namespace softchain
       std::vector<std::vector<std::pair<unsigned int, double>>> to_coordinate;
     };
     LinkStencil link_stencil(const Link &link) const;
+    // link_stencil() of each link this rank assembles (empty for the others).
+    std::vector<LinkStencil> owned_stencils;
   };
 } // namespace softchain

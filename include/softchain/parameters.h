@@ -64,6 +64,7 @@ namespace softchain
     std::map<std::string, double> axial_rigidity;
     bool                          generate_for_bender = true;
     double                        thread_pitch        = 0.004; // m
+    double                        smoothing_strain    = 1e-3;  // d of the tension law
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);
   };
