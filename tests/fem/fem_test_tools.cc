@@ -1,5 +1,6 @@
 #include "fem_test_tools.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -9,11 +10,18 @@
 
 namespace softchain::test
 {
-  Parameters parameters_from_text(const std::string &name, const std::string &text)
+  std::string write_prm(const std::string &name, const std::string &text)
   {
     const std::string file = name + ".prm";
-    std::ofstream(file) << text;
-    return Parameters::read(file);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(file) << text;
+    MPI_Barrier(MPI_COMM_WORLD);
+    return file;
+  }
+
+  Parameters parameters_from_text(const std::string &name, const std::string &text)
+  {
+    return Parameters::read(write_prm(name, text));
   }
 
   std::string bender_prm(const std::string &element, const unsigned int cells,

@@ -12,7 +12,11 @@
 
 namespace softchain::test
 {
-  // Writes `text` to a file named after `name` in the test directory and reads it.
+  // Writes `text` to `name`.prm in the test directory (rank 0 writes, all
+  // ranks wait for it) and returns the file name.
+  std::string write_prm(const std::string &name, const std::string &text);
+
+  // Writes `text` as with write_prm and reads it.
   Parameters parameters_from_text(const std::string &name, const std::string &text);
 
   // A .prm text for the built-in bender with the given element and options

@@ -5,13 +5,14 @@
 // stresses
 //     P_i = dW/dl_i = mu (l_i - 1 / l_i) + lambda ln(J) / l_i,  J = l_r l_t,
 // from W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2. Radial equilibrium in
-// the reference configuration (Ogden, Non-linear Elastic Deformations,
-// Sec. 5.3; Div P = 0 in cylindrical coordinates) is
+// the reference configuration, Div P = 0 in cylindrical coordinates for the
+// diagonal P = diag(P_r, P_t, P_z) (R. W. Ogden, Non-linear Elastic
+// Deformations, Dover 1997, Ch. 5, inflation of a compressible tube), is
 //     dP_r/dR = (P_t - P_r) / R,
 // with P_r(A) = -p f(A) / A (the Cauchy traction -p on the deformed inner
 // surface, sigma_r = P_r / l_t) and P_r(B) = 0. No closed form exists for the
 // compressible solid, so the test integrates this ODE (RK4, shooting on f(A))
-// to ~1e-12 and compares the FEM radial displacements of a quarter ring
+// to ~1e-12 (relative) and compares the FEM radial displacements of a quarter ring
 // (symmetry faces u_x = 0, u_y = 0; u_z = 0 on both flat faces).
 #include "fem_test_tools.h"
 

@@ -160,13 +160,14 @@ TEST_CASE("solve writes VTU files that read back with all fields", "[fem][output
 {
   const std::string directory = "vtu_output_test";
   std::filesystem::remove_all(directory);
-  const std::string prm = "vtu_output.prm";
-  std::ofstream(prm) << test::bender_prm("Q1", 4,
-                                         "subsection Output\n  set Write VTU = true\nend\n"
-                                         "subsection Loads\n  set Pressure = 5000\nend\n"
-                                         "subsection Design\n  set Output directory = " +
-                                           directory + "\nend\n");
+  const std::string prm = test::write_prm(
+    "vtu_output", test::bender_prm("Q1", 4,
+                                   "subsection Output\n  set Write VTU = true\nend\n"
+                                   "subsection Loads\n  set Pressure = 5000\nend\n"
+                                   "subsection Design\n  set Output directory = " +
+                                     directory + "\nend\n"));
   REQUIRE(solve_command(prm) == 0);
+  MPI_Barrier(MPI_COMM_WORLD); // every rank's piece written
 
   const std::string vtu    = directory + "/vtu/";
   const auto        pieces = attribute_values(file_text(vtu + "solution_0000.pvtu"), "Source");
