@@ -61,14 +61,16 @@ namespace
       mesh);
   }
 
-  std::unique_ptr<test::MeshSolverFixture> cook_solver(const std::string &element,
+  // `prm_name` names the .prm file, one per test case (safe under ctest -j).
+  std::unique_ptr<test::MeshSolverFixture> cook_solver(const std::string &prm_name,
+                                                       const std::string &element,
                                                        const unsigned int n,
                                                        const std::string &solver_options = "")
   {
     Triangulation<3> mesh;
     cook_mesh(n, mesh);
     return std::make_unique<test::MeshSolverFixture>(
-      test::parameters_from_text("cook_" + element + std::to_string(n),
+      test::parameters_from_text(prm_name,
                                  test::solid_prm(element, "split", 2 * mu * (1 + nu), nu,
                                                  solver_options)),
       mesh);
@@ -84,7 +86,7 @@ namespace
   // Vertical displacement [mm] of the traction face's midpoint.
   double midpoint_displacement(const std::string &element, const unsigned int n)
   {
-    auto       f      = cook_solver(element, n);
+    auto       f      = cook_solver("cook_" + element, element, n);
     const auto result = f->solver->solve(cook_load());
     REQUIRE(result.converged);
     return test::displacement_at(*f->solver, Point<3>(48 * mm, 52 * mm, 0))[1] / mm;
@@ -136,7 +138,7 @@ TEST_CASE("Cook's membrane Q2 matches the deal.II code gallery", "[fem][cook]")
 // 7e-13 |R_0|; 1e-11 |R_0| here) show no rate and are left out.
 TEST_CASE("Newton converges quadratically (Cook's membrane in one step)", "[fem][newton]")
 {
-  auto f = cook_solver("Q2", 4,
+  auto f = cook_solver("cook_newton", "Q2", 4,
                        "subsection Solver\n  set Initial load step = 1\n"
                        "  set Residual tolerance = 1e-12\n  set Displacement tolerance = 1e-12\n"
                        "  set Maximum Newton iterations = 20\nend\n");

@@ -96,13 +96,15 @@ namespace
     return all;
   }
 
-  std::unique_ptr<test::MeshSolverFixture> block_solver(const std::string &element,
+  // `prm_name` names the .prm file, one per test case (safe under ctest -j).
+  std::unique_ptr<test::MeshSolverFixture> block_solver(const std::string &prm_name,
+                                                        const std::string &element,
                                                         const std::string &energy)
   {
     Triangulation<3> mesh;
     distorted_block(element[0] == 'P', mesh);
     return std::make_unique<test::MeshSolverFixture>(
-      test::parameters_from_text("patch_" + element + energy,
+      test::parameters_from_text(prm_name,
                                  test::solid_prm(element, energy, E, nu)),
       mesh);
   }
@@ -116,7 +118,7 @@ TEST_CASE("patch test: a homogeneous deformation is in equilibrium inside", "[fe
     for (const std::string element : {"Q1", "Q2", "P1", "P2"})
       {
         INFO(element << ", " << energy << " strain energy");
-        auto       f        = block_solver(element, energy);
+        auto       f        = block_solver("patch_homogeneous", element, energy);
         const auto r        = residual(*f->solver, grad_u, shift);
         const auto boundary = boundary_dofs(f->solver->space());
         // The boundary DoFs carry the traction P N dA of the homogeneous
@@ -143,7 +145,7 @@ TEST_CASE("patch test: a rigid rotation has zero stress", "[fem][patch]")
     for (const std::string element : {"Q1", "Q2", "P1", "P2"})
       {
         INFO(element << ", " << energy << " strain energy");
-        auto       f = block_solver(element, energy);
+        auto       f = block_solver("patch_rotation", element, energy);
         const auto r = residual(*f->solver, rotation - unit_symmetric_tensor<3>(), shift);
         // R R^T = I to ~1e-16, so the stress is ~1e-15 mu and each nodal
         // force (a few cells of area h^2) ~1e-15 mu h^2 (measured: <= 5e-14
