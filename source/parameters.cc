@@ -245,6 +245,9 @@ namespace softchain
                       "direct: MUMPS; iterative: GMRES + AMG; auto: direct "
                       "below 'Direct solver maximum DoFs'.");
     prm.declare_entry("Direct solver maximum DoFs", "200000", Patterns::Integer(0));
+    prm.declare_entry("Direct solver package", "Amesos_Klu",
+                      Patterns::Selection("Amesos_Mumps|Amesos_Klu"),
+                      "Trilinos Amesos direct solver; KLU measured 2x faster than MUMPS on the demo finger (5K DoFs, Q2)");
     prm.declare_entry("Krylov tolerance", "1e-10", Patterns::Double(0));
     prm.declare_entry("Line search", "true", Patterns::Bool());
     prm.declare_entry("Threads", "0", Patterns::Integer(0), "0: all cores");
@@ -262,6 +265,7 @@ namespace softchain
     max_load_step          = prm.get_double("Maximum load step");
     linear_solver          = prm.get("Linear solver");
     direct_solver_max_dofs = prm.get_integer("Direct solver maximum DoFs");
+    direct_solver_package  = prm.get("Direct solver package");
     krylov_tolerance       = prm.get_double("Krylov tolerance");
     line_search            = prm.get_bool("Line search");
     threads                = prm.get_integer("Threads");

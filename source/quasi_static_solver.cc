@@ -250,7 +250,7 @@ namespace softchain
     return valid;
   }
 
-  void QuasiStaticSolver::solve_linear()
+  bool QuasiStaticSolver::solve_linear()
   {
     TimerOutput::Scope timer_section(computing_timer, "linear solve");
     const FiniteElementSpace &s      = *fe_space;
@@ -262,7 +262,8 @@ namespace softchain
     if (direct)
       {
         TrilinosWrappers::SolverDirect solver(
-          control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false, prm.solver.direct_solver_package));
         solver.solve(matrix, du, rhs);
       }
     else
@@ -278,9 +279,19 @@ namespace softchain
         preconditioner.initialize(matrix, amg);
         TrilinosWrappers::SolverGMRES solver(
           control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
-        solver.solve(matrix, du, rhs, preconditioner);
+        try
+          {
+            solver.solve(matrix, du, rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &failure)
+          {
+            log << "      GMRES did not converge in " << failure.last_step
+                << " iterations (residual " << failure.last_residual << ")\n";
+            return false;
+          }
       }
     s.clamped_base.distribute(du);
+    return std::isfinite(du.l2_norm());
   }
 
   bool QuasiStaticSolver::converged(const double residual, const double update) const
@@ -339,11 +350,12 @@ namespace softchain
         result.residual_history.push_back(residual);
         if (!std::isfinite(residual))
           return {false, false, it};
-        if (it > 0 && converged(residual, du.l2_norm()))
+        if (residual == 0.0 || (it > 0 && converged(residual, du.l2_norm())))
           return {true, false, it};
         if (it == prm.solver.max_newton_iterations)
           break;
-        solve_linear();
+        if (!solve_linear())
+          return {false, false, it};
         s0 = -(du * rhs);
         if (prm.output.verbose)
           log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
@@ -393,8 +405,10 @@ namespace softchain
             pv.emplace_back(state.pressure, pressure->cavity_volume(u_ghosted));
             log << "    load step " << result.load_steps << ": factor " << s << ", "
                 << outcome.iterations << " Newton iterations\n";
-            if (outcome.iterations <= 5)
-              step = std::min(prm.solver.max_load_step, 2 * step);
+            // Grow after steps that took at most two thirds of the allowed
+            // iterations (a hard but converging problem still speeds up).
+            if (3 * outcome.iterations <= 2 * prm.solver.max_newton_iterations)
+              step = std::min(prm.solver.max_load_step, 1.5 * step);
             continue;
           }
         set_displacement(u_converged);

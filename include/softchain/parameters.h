@@ -97,6 +97,7 @@ namespace softchain
     double       max_load_step;
     std::string  linear_solver; // auto | direct | iterative
     unsigned int direct_solver_max_dofs;
+    std::string  direct_solver_package;
     double       krylov_tolerance;
     bool         line_search;
     unsigned int threads;

@@ -103,7 +103,7 @@ namespace softchain
     void setup_system();
     bool assemble_cells(bool with_matrix, double gravity_factor);
     void assemble_point_loads(const std::vector<PointLoad> &point_loads);
-    void solve_linear();
+    bool solve_linear(); // false if the linear solver failed
 
     struct NewtonOutcome
     {
