@@ -233,9 +233,9 @@ namespace softchain
   void SolverParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    prm.declare_entry("Residual tolerance", "1e-8", Patterns::Double(0),
+    prm.declare_entry("Residual tolerance", "1e-6", Patterns::Double(0),
                       "Newton stops when |R| <= tol * |external load| ...");
-    prm.declare_entry("Displacement tolerance", "1e-8", Patterns::Double(0),
+    prm.declare_entry("Displacement tolerance", "1e-6", Patterns::Double(0),
                       "... and |du| <= tol * |u|.");
     prm.declare_entry("Maximum Newton iterations", "12", Patterns::Integer(1));
     prm.declare_entry("Initial load step", "0.125", Patterns::Double(0, 1));
@@ -250,6 +250,9 @@ namespace softchain
                       "Trilinos Amesos direct solver; KLU measured 2x faster than MUMPS on the demo finger (5K DoFs, Q2)");
     prm.declare_entry("Krylov tolerance", "1e-10", Patterns::Double(0));
     prm.declare_entry("Line search", "true", Patterns::Bool());
+    prm.declare_entry("Secant predictor", "true", Patterns::Bool(),
+                      "Start each load step from the extrapolation of the last two "
+                      "converged states.");
     prm.declare_entry("Threads", "0", Patterns::Integer(0), "0: all cores");
     prm.leave_subsection();
   }
@@ -268,6 +271,7 @@ namespace softchain
     direct_solver_package  = prm.get("Direct solver package");
     krylov_tolerance       = prm.get_double("Krylov tolerance");
     line_search            = prm.get_bool("Line search");
+    secant_predictor       = prm.get_bool("Secant predictor");
     threads                = prm.get_integer("Threads");
     prm.leave_subsection();
   }

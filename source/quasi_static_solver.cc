@@ -386,7 +386,7 @@ namespace softchain
       {
         const double    s_try = std::min(1.0, s + step);
         const LoadState state = LoadState::interpolate(start, target, s_try);
-        if (s > s_previous) // predictor: u + (ds / ds_previous) (u - u_before)
+        if (prm.solver.secant_predictor && s > s_previous) // predictor: u + (ds / ds_previous) (u - u_before)
           {
             u_owned.add((s_try - s) / (s - s_previous), u_converged);
             u_owned.add(-(s_try - s) / (s - s_previous), u_before);

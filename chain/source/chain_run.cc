@@ -6,6 +6,7 @@
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/chain/tip_pose_fit.h>
 #include <softchain/chain/validation_plot.h>
+#include <softchain/data/input_error.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -37,10 +38,19 @@ namespace softchain::chain
       for (const std::string method : {"M1", "M2"})
         {
           const StiffnessFiles files(directory, method, p.half_width_fraction);
-          if (method == p.method || files.exist())
+          if (method == p.method)
             models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure));
-          else
+          else if (!files.exist())
             std::cout << "chain: no " << files.stiffness_path() << ", " << method << " skipped\n";
+          else
+            try // the other method is a comparison only: unusable files skip it
+              {
+                models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure));
+              }
+            catch (const data::InputError &e)
+              {
+                std::cout << "chain: " << method << " skipped: " << e.what() << '\n';
+              }
         }
       return models;
     }

@@ -100,6 +100,7 @@ namespace softchain
     std::string  direct_solver_package;
     double       krylov_tolerance;
     bool         line_search;
+    bool         secant_predictor;
     unsigned int threads;
     static void declare(ParameterHandler &prm);
     void        parse(ParameterHandler &prm);
