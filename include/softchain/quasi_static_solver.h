@@ -66,15 +66,12 @@ namespace softchain
       set_displacement(owned_u);
       load = state;
     }
-    const LoadState &current_load() const { return load; }
     // Assembles rhs = -R(u) (and K = dR/du when with_matrix) at `state`.
     // Returns false if some quadrature point has J <= 0.
     bool assemble(const LoadState &state, bool with_matrix);
     const TrilinosWrappers::SparseMatrix &tangent() const { return matrix; }
     const TrilinosWrappers::MPI::Vector  &negative_residual() const { return rhs; }
-    double                               external_load_norm() const { return f_ext_norm; }
     const FollowerPressure              &pressure_load() const { return *pressure; }
-    const DeadSurfaceTraction           &tip_load() const { return *tip_traction; }
     const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
     const HyperelasticMaterial &material(types::material_id id) const { return *materials.at(id); }
     // Deformed positions of `points` (reference, inside the body).
