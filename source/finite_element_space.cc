@@ -89,12 +89,12 @@ namespace softchain
     std::vector<types::global_dof_index> fixed;
     for (const auto &line : local.get_lines())
       fixed.push_back(line.index);
-    clamped_base.clear();
+    fixed_dofs.clear();
     for (const auto &rank_fixed : Utilities::MPI::all_gather(communicator, fixed))
       for (const auto dof : rank_fixed)
-        if (!clamped_base.is_constrained(dof))
-          clamped_base.add_line(dof);
-    clamped_base.close();
+        if (!fixed_dofs.is_constrained(dof))
+          fixed_dofs.add_line(dof);
+    fixed_dofs.close();
     if (Utilities::MPI::sum(fixed.size(), communicator) == 0)
       throw data::InputError("the mesh has no face in the physical group 'base': "
                              "nothing is clamped");

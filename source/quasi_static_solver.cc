@@ -103,7 +103,7 @@ namespace softchain
       writable_dofs.add_indices(springs->touched_dofs(s.dof_handler.n_dofs()));
 
     DynamicSparsityPattern pattern(writable_dofs);
-    DoFTools::make_sparsity_pattern(s.dof_handler, pattern, s.clamped_base, false);
+    DoFTools::make_sparsity_pattern(s.dof_handler, pattern, s.fixed_dofs, false);
     if (springs)
       springs->add_couplings(pattern);
     SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
@@ -195,9 +195,9 @@ namespace softchain
       if (copy.inverted)
         inverted = true;
       else if (with_matrix)
-        s.clamped_base.distribute_local_to_global(copy.matrix, copy.rhs, copy.dofs, matrix, rhs);
+        s.fixed_dofs.distribute_local_to_global(copy.matrix, copy.rhs, copy.dofs, matrix, rhs);
       else
-        s.clamped_base.distribute_local_to_global(copy.rhs, copy.dofs, rhs);
+        s.fixed_dofs.distribute_local_to_global(copy.rhs, copy.dofs, rhs);
     };
 
     using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
@@ -220,7 +220,7 @@ namespace softchain
           Vector<double> local(stencil.dof.size());
           for (unsigned int i = 0; i < stencil.dof.size(); ++i)
             local(i) = stencil.weight[i] * point_loads[k].force[stencil.component[i]];
-          fe_space->clamped_base.distribute_local_to_global(local, stencil.dof, rhs);
+          fe_space->fixed_dofs.distribute_local_to_global(local, stencil.dof, rhs);
         }
   }
 
@@ -232,18 +232,18 @@ namespace softchain
     rhs = 0;
     // External loads first: their norm scales the convergence test.
     if (state.pressure != 0.0 && pressure->has_cavity())
-      pressure->assemble(u_ghosted, state.pressure, fe_space->clamped_base,
+      pressure->assemble(u_ghosted, state.pressure, fe_space->fixed_dofs,
                          with_matrix ? &matrix : nullptr, rhs);
     if (!state.point_loads.empty())
       assemble_point_loads(state.point_loads);
     if (state.tip_traction.norm() > 0)
-      tip_traction->assemble(state.tip_traction, fe_space->clamped_base, rhs);
+      tip_traction->assemble(state.tip_traction, fe_space->fixed_dofs, rhs);
     rhs.compress(VectorOperation::add);
     f_ext_norm = rhs.l2_norm();
 
     const bool valid = assemble_cells(with_matrix, state.gravity_factor);
     if (springs)
-      springs->assemble(u_ghosted, fe_space->clamped_base, with_matrix ? &matrix : nullptr, rhs);
+      springs->assemble(u_ghosted, fe_space->fixed_dofs, with_matrix ? &matrix : nullptr, rhs);
     if (with_matrix)
       matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
@@ -290,7 +290,7 @@ namespace softchain
             return false;
           }
       }
-    s.clamped_base.distribute(du);
+    s.fixed_dofs.distribute(du);
     return std::isfinite(du.l2_norm());
   }
 

@@ -38,7 +38,7 @@ namespace softchain
     IndexSet                                 owned_dofs;
     IndexSet                                 relevant_dofs;
     // u = 0 on `base`; u_x, u_y, u_z = 0 on `fixed_x`, `fixed_y`, `fixed_z`.
-    AffineConstraints<double>                clamped_base;
+    AffineConstraints<double>                fixed_dofs;
     bool                                     simplex;
     unsigned int                             degree;
 

@@ -100,7 +100,7 @@ namespace softchain::test
     for (const auto dof : space.owned_dofs)
       u[dof] += noise * scale * uniform(random);
     u.compress(VectorOperation::insert);
-    space.clamped_base.set_zero(u);
+    space.fixed_dofs.set_zero(u);
     return u;
   }
 } // namespace softchain::test
