@@ -19,13 +19,6 @@ namespace softchain::chain
       section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
       section.declare("Maximum Newton iterations", "50", "per equilibrium");
     }
-
-    void require(bool ok, const data::PrmSection &section, const std::string &name,
-                 const std::string &what)
-    {
-      if (!ok)
-        throw data::InputError(section.describe(name) + ": " + what);
-    }
   } // namespace
 
   ChainParameters ChainParameters::read(const std::string &prm_path)
@@ -36,21 +29,21 @@ namespace softchain::chain
 
     ChainParameters p;
     p.method = section.get("Stiffness method");
-    require(p.method == "M1" || p.method == "M2", section, "Stiffness method",
+    section.require(p.method == "M1" || p.method == "M2", "Stiffness method",
             "'" + p.method + "' is neither M1 nor M2");
     p.half_width_fraction = section.get_double("Slab half-width");
-    require(p.half_width_fraction > 0, section, "Slab half-width", "must be positive");
+    section.require(p.half_width_fraction > 0, "Slab half-width", "must be positive");
     p.stiffness_column = section.get("Stiffness column");
-    require(p.stiffness_column == "value" || p.stiffness_column == "fit", section,
+    section.require(p.stiffness_column == "value" || p.stiffness_column == "fit",
             "Stiffness column", "'" + p.stiffness_column + "' is neither value nor fit");
     p.in_pressure      = section.get_bool("Interpolate k_phi in pressure");
     p.validation_roles = section.get_list("Validation roles");
     p.baseline_youngs_modulus = section.get_double("Baseline Young's modulus");
-    require(p.baseline_youngs_modulus > 0, section, "Baseline Young's modulus", "must be positive");
+    section.require(p.baseline_youngs_modulus > 0, "Baseline Young's modulus", "must be positive");
     p.newton.tolerance = section.get_double("Newton tolerance");
-    require(p.newton.tolerance > 0, section, "Newton tolerance", "must be positive");
+    section.require(p.newton.tolerance > 0, "Newton tolerance", "must be positive");
     p.newton.max_iterations = section.get_integer("Maximum Newton iterations");
-    require(p.newton.max_iterations >= 1, section, "Maximum Newton iterations", "must be >= 1");
+    section.require(p.newton.max_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
     return p;
   }
 } // namespace softchain::chain

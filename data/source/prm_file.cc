@@ -154,6 +154,12 @@ namespace softchain::data
     return it->second.value;
   }
 
+  void PrmSection::require(const bool ok, const std::string &name, const std::string &what) const
+  {
+    if (!ok)
+      throw InputError(describe(name) + ": " + what);
+  }
+
   std::string PrmSection::describe(const std::string &name) const
   {
     const int line = entries.count(name) ? entries.at(name).line : 0;

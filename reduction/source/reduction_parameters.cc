@@ -21,24 +21,17 @@ namespace softchain::reduction
       section.declare("Plots", "true", "PNG plots via gnuplot when it is installed");
     }
 
-    void require(bool ok, const data::PrmSection &section, const std::string &name,
-                 const std::string &what)
-    {
-      if (!ok)
-        throw data::InputError(section.describe(name) + ": " + what);
-    }
-
     std::vector<RotationMethod> read_methods(const data::PrmSection &section)
     {
       std::vector<RotationMethod> result;
       for (const auto &name : section.get_list("Methods"))
         {
-          require(name == "M1" || name == "M2", section, "Methods",
+          section.require(name == "M1" || name == "M2", "Methods",
                   "unknown method '" + name + "' (M1 or M2)");
           result.push_back(name == "M1" ? RotationMethod::bounding_box :
                                           RotationMethod::affine_fit);
         }
-      require(!result.empty(), section, "Methods", "no method given");
+      section.require(!result.empty(), "Methods", "no method given");
       return result;
     }
   } // namespace
@@ -56,16 +49,16 @@ namespace softchain::reduction
 
     ReductionParameters p;
     p.joint_spacing = section.get_double("Joint spacing");
-    require(p.joint_spacing > 0, section, "Joint spacing", "must be positive");
+    section.require(p.joint_spacing > 0, "Joint spacing", "must be positive");
     p.n_joints = section.get_integer("Number of joints");
-    require(p.n_joints >= 0, section, "Number of joints", "must be >= 0");
+    section.require(p.n_joints >= 0, "Number of joints", "must be >= 0");
     p.slab_half_width_fractions = section.get_double_list("Slab half-widths");
-    require(!p.slab_half_width_fractions.empty(), section, "Slab half-widths", "no value given");
+    section.require(!p.slab_half_width_fractions.empty(), "Slab half-widths", "no value given");
     for (const double f : p.slab_half_width_fractions)
-      require(f > 0, section, "Slab half-widths", "fractions must be positive");
+      section.require(f > 0, "Slab half-widths", "fractions must be positive");
     p.methods            = read_methods(section);
     p.rotation_threshold = section.get_double("Rotation threshold");
-    require(p.rotation_threshold >= 0, section, "Rotation threshold", "must be >= 0");
+    section.require(p.rotation_threshold >= 0, "Rotation threshold", "must be >= 0");
     p.pressure_roles = section.get_list("Pressure roles");
     p.lateral_roles  = section.get_list("Lateral roles");
     p.torsion_roles  = section.get_list("Torsion roles");

@@ -29,6 +29,8 @@ namespace softchain::data
     // Added: "FILE[:LINE]: parameter 'NAME' in subsection 'TITLE'", the prefix
     // of every InputError about that entry (LINE only if the file set it).
     std::string describe(const std::string &name) const;
+    // Throws InputError "describe(name): what" unless ok.
+    void require(bool ok, const std::string &name, const std::string &what) const;
 
     std::string file;  // for messages
     std::string title; // subsection name
