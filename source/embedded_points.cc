@@ -1,9 +1,8 @@
 #include <softchain/data/input_error.h>
+#include <softchain/cell_locator.h>
 #include <softchain/embedded_points.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/grid_tools_cache.h>
 
 #include <limits>
 #include <sstream>
@@ -32,30 +31,50 @@ namespace softchain
   EmbeddedPoints::EmbeddedPoints(const FiniteElementSpace    &space,
                                  const std::vector<Point<3>> &points,
                                  const std::string           &what)
+    : EmbeddedPoints(space, points, points, what)
+  {}
+
+  EmbeddedPoints::EmbeddedPoints(const FiniteElementSpace    &space,
+                                 const std::vector<Point<3>> &points,
+                                 const std::vector<Point<3>> &locators,
+                                 const std::string           &what)
     : reference(points)
     , owner(points.size())
     , stencils(points.size())
     , my_rank(Utilities::MPI::this_mpi_process(space.communicator))
     , communicator(space.communicator)
   {
-    const GridTools::Cache<3> cache(space.triangulation, *space.mapping);
-    const unsigned int        none = std::numeric_limits<unsigned int>::max();
-    std::vector<unsigned int> found(points.size(), none);
+    const CellLocator         locator(space.triangulation, *space.mapping);
+    const unsigned int        none    = std::numeric_limits<unsigned int>::max();
+    const unsigned int        n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    // Each rank's best find per point: rank r in the locator's cell scores r,
+    // in the point's own cell (the fallback) n_ranks + r; the lowest wins.
+    std::vector<unsigned int> score(points.size(), none);
     std::vector<Stencil>      local(points.size());
+    const auto use = [&](const unsigned int k, const CellLocator::Cell &cell, const Point<3> &unit,
+                         const unsigned int rank_score) {
+      score[k] = rank_score;
+      local[k] = make_stencil(space, DoFHandler<3>::active_cell_iterator(
+                                       &space.triangulation, cell->level(), cell->index(),
+                                       &space.dof_handler),
+                              unit);
+    };
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto [cell, unit] = GridTools::find_active_cell_around_point(cache, points[k]);
+        const auto cell = locator.locate(locators[k]).first;
         if (cell.state() == IteratorState::valid && cell->is_locally_owned())
-          {
-            found[k] = my_rank;
-            local[k] = make_stencil(space, DoFHandler<3>::active_cell_iterator(
-                                             &space.triangulation, cell->level(),
-                                             cell->index(), &space.dof_handler),
-                                    unit);
-          }
+          if (const auto unit = locator.unit_point(cell, points[k], 0.1))
+            {
+              use(k, cell, *unit, my_rank);
+              continue;
+            }
+        const auto [own_cell, unit] = locator.locate(points[k]);
+        if (own_cell.state() == IteratorState::valid && own_cell->is_locally_owned())
+          use(k, own_cell, unit, n_ranks + my_rank);
       }
-    // The lowest rank that found a point owns it.
-    MPI_Allreduce(found.data(), owner.data(), found.size(), MPI_UNSIGNED, MPI_MIN, communicator);
+    MPI_Allreduce(MPI_IN_PLACE, score.data(), score.size(), MPI_UNSIGNED, MPI_MIN, communicator);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      owner[k] = score[k] == none ? none : score[k] % n_ranks;
     for (unsigned int k = 0; k < points.size(); ++k)
       if (owner[k] == none)
         {

@@ -30,7 +30,9 @@ namespace softchain
     const double                         smoothing_strain)
     : smoothing(smoothing_strain)
   {
-    std::vector<Point<3>> all_points;
+    // Two embedded nodes per link, both evaluated in the cell around the
+    // link's midpoint (cell_conforming_polylines() puts each link in one cell).
+    std::vector<Point<3>> ends, midpoints;
     for (const auto &polyline : polylines)
       {
         const auto rigidity = axial_rigidity.find(polyline.network);
@@ -40,18 +42,24 @@ namespace softchain
         auto name = std::find(network_names.begin(), network_names.end(), polyline.network);
         if (name == network_names.end())
           name = network_names.insert(network_names.end(), polyline.network);
-        const unsigned int first = all_points.size();
-        const unsigned int n     = polyline.points.size();
-        all_points.insert(all_points.end(), polyline.points.begin(), polyline.points.end());
-        const unsigned int n_links = polyline.closed ? n : n - 1;
-        for (unsigned int k = 0; k < n_links && n > 1; ++k)
+        const auto        &p       = polyline.points;
+        const unsigned int n       = p.size();
+        const unsigned int n_links = n < 2 ? 0 : (polyline.closed ? n : n - 1);
+        for (unsigned int k = 0; k < n_links; ++k)
           {
-            const unsigned int a = first + k, b = first + (k + 1) % n;
-            links.push_back({a, b, all_points[a].distance(all_points[b]), rigidity->second,
+            const Point<3> &a = p[k], &b = p[(k + 1) % n];
+            if (a.distance(b) < 1e-12) // a repeated node: no link
+              continue;
+            links.push_back({static_cast<unsigned int>(ends.size()),
+                             static_cast<unsigned int>(ends.size() + 1), a.distance(b),
+                             rigidity->second,
                              static_cast<unsigned int>(name - network_names.begin())});
+            ends.insert(ends.end(), {a, b});
+            const Point<3> middle = a + 0.5 * (b - a);
+            midpoints.insert(midpoints.end(), {middle, middle});
           }
       }
-    nodes = std::make_unique<EmbeddedPoints>(space, all_points, "spring node");
+    nodes = std::make_unique<EmbeddedPoints>(space, ends, midpoints, "spring node");
     owned_stencils.resize(links.size());
     for (unsigned int k = 0; k < links.size(); ++k)
       if (nodes->owned(links[k].a))
@@ -81,11 +89,11 @@ namespace softchain
     return result;
   }
 
-  void EmbeddedSpringNetwork::add_couplings(DynamicSparsityPattern &pattern) const
+  void EmbeddedSpringNetwork::add_couplings(const AffineConstraints<double> &constraints,
+                                            DynamicSparsityPattern          &pattern) const
   {
     for (const auto &stencil : owned_stencils)
-      for (const auto i : stencil.dofs)
-        pattern.add_entries(i, stencil.dofs.begin(), stencil.dofs.end());
+      constraints.add_entries_local_to_global(stencil.dofs, pattern, false);
   }
 
   IndexSet EmbeddedSpringNetwork::touched_dofs(const types::global_dof_index n_dofs) const

@@ -1,6 +1,7 @@
 #include <softchain/boundary_ids.h>
 #include <softchain/data/input_error.h>
 #include <softchain/quasi_static_solver.h>
+#include <softchain/cell_conforming_polylines.h>
 
 #include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -89,7 +90,10 @@ namespace softchain
     pressure     = std::make_unique<FollowerPressure>(*fe_space);
     tip_traction = std::make_unique<DeadSurfaceTraction>(*fe_space, boundary::tip);
     if (!spring_polylines.empty())
-      springs = std::make_unique<EmbeddedSpringNetwork>(*fe_space, spring_polylines,
+      springs = std::make_unique<EmbeddedSpringNetwork>(*fe_space,
+                                                         cell_conforming_polylines(
+                                                           spring_polylines, serial_mesh,
+                                                           *fe_space->mapping),
                                                          prm.springs.axial_rigidity,
                                                          prm.springs.smoothing_strain);
     setup_system();
@@ -105,7 +109,7 @@ namespace softchain
     DynamicSparsityPattern pattern(writable_dofs);
     DoFTools::make_sparsity_pattern(s.dof_handler, pattern, s.fixed_dofs, false);
     if (springs)
-      springs->add_couplings(pattern);
+      springs->add_couplings(s.fixed_dofs, pattern);
     SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
                                                writable_dofs);
     matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
@@ -259,11 +263,21 @@ namespace softchain
                          s.dof_handler.n_dofs() <= prm.solver.direct_solver_max_dofs);
     SolverControl control(1000, prm.solver.krylov_tolerance * rhs.l2_norm());
     du = 0;
-    if (direct)
+    if (direct && prm.solver.direct_solver_package == "UMFPACK" &&
+        Utilities::MPI::n_mpi_processes(s.communicator) == 1)
       {
+        if (!serial_direct)
+          serial_direct = std::make_unique<SerialDirectSolver>(matrix);
+        serial_direct->solve(matrix, du, rhs);
+      }
+    else if (direct)
+      {
+        const std::string package = prm.solver.direct_solver_package == "UMFPACK" ?
+                                      std::string("Amesos_Mumps") :
+                                      prm.solver.direct_solver_package;
         TrilinosWrappers::SolverDirect solver(
           control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false, prm.solver.direct_solver_package));
+          TrilinosWrappers::SolverDirect::AdditionalData(false, package));
         solver.solve(matrix, du, rhs);
       }
     else

@@ -37,6 +37,14 @@ namespace softchain
     EmbeddedPoints(const FiniteElementSpace    &space,
                    const std::vector<Point<3>> &reference_points,
                    const std::string           &what);
+    // Point k is evaluated in the cell around `locators[k]`: points on a
+    // cell face then use the cell their link lies in. A point may lie
+    // outside that cell by 10 % of the unit cell (the shape functions are
+    // smooth polynomials there).
+    EmbeddedPoints(const FiniteElementSpace    &space,
+                   const std::vector<Point<3>> &reference_points,
+                   const std::vector<Point<3>> &locators,
+                   const std::string           &what);
 
     unsigned int size() const { return reference.size(); }
     // Whether this rank assembles the contributions of point k (each point has

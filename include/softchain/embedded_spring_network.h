@@ -40,8 +40,10 @@ namespace softchain
 
     bool empty() const { return links.empty(); }
 
-    // DoF couplings of this rank's links, and the DoFs they write to.
-    void     add_couplings(DynamicSparsityPattern &pattern) const;
+    // DoF couplings of this rank's links (condensed by `constraints`, as
+    // DoFTools::make_sparsity_pattern does), and the DoFs they write to.
+    void     add_couplings(const AffineConstraints<double> &constraints,
+                           DynamicSparsityPattern          &pattern) const;
     IndexSet touched_dofs(types::global_dof_index n_dofs) const;
 
     // rhs -= f_int, matrix += K (if given) for this rank's links.

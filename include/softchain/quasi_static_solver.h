@@ -14,6 +14,7 @@
 #include <softchain/hyperelastic_material.h>
 #include <softchain/load_state.h>
 #include <softchain/parameters.h>
+#include <softchain/serial_direct_solver.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -87,6 +88,7 @@ namespace softchain
     std::unique_ptr<DeadSurfaceTraction>                tip_traction;
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     TimerOutput                                         computing_timer;
+    std::unique_ptr<SerialDirectSolver>                 serial_direct; // UMFPACK, one rank
 
     TrilinosWrappers::SparseMatrix matrix;
     TrilinosWrappers::MPI::Vector  rhs;       // writable ghosts
