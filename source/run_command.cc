@@ -64,6 +64,7 @@ namespace softchain
       if (dir == "chain")
         return name == "validation.csv" ? "chain vs FEM tip pose per sample and model" :
                name == "validation_summary.csv" ? "tip errors per model and role" :
+               name == "fem_tip_poses.csv" ? "FEM tip position and bending angle per sample" :
                ext == ".xml" ? "MuJoCo (MJCF) model of the chain" :
                ext == ".png" ? "validation plot" : "chain validation output";
       return "output";

@@ -124,6 +124,23 @@ namespace softchain::chain
     return table;
   }
 
+  CsvTable ChainValidation::fem_tip_table() const
+  {
+    CsvTable table({"sample", "role", "pressure", "force_norm", "tip_x_mm", "tip_y_mm",
+                    "tip_z_mm", "tip_bending_angle_deg", "tip_rotation_angle_deg"});
+    for (const FemSample &s : samples_)
+      {
+        const Eigen::Matrix3d &R = s.tip.rotation;
+        table.add_row({s.id, s.role, CsvTable::cell(s.load.pressure),
+                       CsvTable::cell(force_norm(s.load)), CsvTable::cell(1e3 * s.tip.position.x()),
+                       CsvTable::cell(1e3 * s.tip.position.y()),
+                       CsvTable::cell(1e3 * s.tip.position.z()),
+                       CsvTable::cell(degrees(std::atan2(R(1, 0), R(0, 0)))),
+                       CsvTable::cell(degrees(rotation_angle_between(Eigen::Matrix3d::Identity(), R)))});
+      }
+    return table;
+  }
+
   CsvTable ChainValidation::summary_table() const
   {
     CsvTable table({"model", "roles", "n_samples", "n_failed", "max_tip_error_mm",

@@ -129,6 +129,22 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
         CHECK(summary.number(r, "max_tip_error_mm") == Approx(largest).epsilon(1e-14));
         CHECK(summary.number(r, "mean_tip_error_mm") == Approx(sum / 3).epsilon(1e-14));
       }
+  // FEM tip poses: one row per validated sample. A pressure-only sample
+  // bends the symmetric chain in the x-y plane, so the bending angle about z
+  // is, up to its sign, the total rotation angle (two formulas: atan2 of R
+  // and the rotation's trace), and the tip moves to the side it turns to.
+  // The angle lies in (-180, 180] deg.
+  const data::CsvTable tips = data::CsvTable::read(out + "/chain/fem_tip_poses.csv");
+  REQUIRE(tips.n_rows() == 3);
+  for (std::size_t r = 0; r < tips.n_rows(); ++r)
+    if (tips.text(r, "role") == "pressure")
+      {
+        const double bending = tips.number(r, "tip_bending_angle_deg");
+        CHECK(std::abs(bending) > 1.0);
+        CHECK(std::abs(bending) == Approx(tips.number(r, "tip_rotation_angle_deg")).epsilon(1e-9));
+        if (tips.number(r, "pressure") == 3e4) // 86 deg; 60 kPa curls to 220 deg, wrapped to -140
+          CHECK(bending * tips.number(r, "tip_y_mm") > 0);
+      }
   std::ifstream     xml(out + "/chain/finger.xml");
   const std::string text((std::istreambuf_iterator<char>(xml)), {});
   CHECK(text.find("joint9_phi") != std::string::npos);

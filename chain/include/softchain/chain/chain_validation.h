@@ -42,6 +42,10 @@ namespace softchain::chain
     int                                  n_failed() const;
     data::CsvTable                       per_sample_table() const;
     data::CsvTable                       summary_table() const;
+    // The FEM tip pose of every sample: position [mm] and the tip bending
+    // angle about z, atan2(R_yx, R_xx) [deg] (negative: toward -y, the fabric
+    // side), plus the total rotation angle [deg].
+    data::CsvTable                       fem_tip_table() const;
 
   private:
     struct FemSample
