@@ -8,6 +8,9 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <unistd.h>
+
+#include <csignal>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -24,11 +27,55 @@ namespace
     "  chain    kinematic-chain finger with the extracted stiffness, validated against\n"
     "           the FEM tip poses; --export-mjcf also writes a MuJoCo model\n"
     "  run      the whole pipeline: sweep, reduce, chain; lists the output files\n"
-    "  help     this text\n"
+    "  help     this text; help COMMAND (or COMMAND --help): that command in detail\n"
     "\n"
     "Outputs go to the .prm's Design/Output directory (default output/<name>/):\n"
     "database.h5, vtu/, stiffness/, chain/.\n"
     "Exit status: 0 success, 1 bad input, 2 a solve or sample did not converge.\n";
+
+  // `softchain help COMMAND` / `softchain COMMAND --help`.
+  const char *command_help(const std::string &command)
+  {
+    if (command == "solve")
+      return "softchain solve FILE.prm\n"
+             "  One quasi-static FEM solve of subsection Loads (Pressure, Point loads,\n"
+             "  Tip traction, Gravity) on the mesh of subsection Mesh. Writes\n"
+             "  <output>/vtu/solution.pvd (open in ParaView) and <output>/solve_summary.csv.\n"
+             "  Runs unchanged under mpirun -np N.\n";
+    if (command == "sweep")
+      return "softchain sweep FILE.prm\n"
+             "  Every sample of subsection Samples (pressure sweep, lateral and torsion\n"
+             "  force sweeps, validation samples) into <output>/database.h5. Samples\n"
+             "  already stored for this design are not solved again; Ctrl-C or a crash\n"
+             "  keeps the completed samples and a rerun resumes. Exit 2 names failed samples.\n";
+    if (command == "reduce")
+      return "softchain reduce FILE.prm\n"
+             "  Joint rotations (M1, M2 for each slab half-width b), torques and the\n"
+             "  per-joint stiffness from <output>/database.h5 into <output>/stiffness/\n"
+             "  (CSV and PNG). Subsection Reduction; see reduction/README.md.\n";
+    if (command == "chain")
+      return "softchain chain FILE.prm [--export-mjcf]\n"
+             "  The kinematic-chain finger with the stiffness of subsection Chain, solved\n"
+             "  for every database sample and compared with the FEM tip pose:\n"
+             "  <output>/chain/validation*.csv, validation.png, fem_tip_poses.csv;\n"
+             "  --export-mjcf writes a MuJoCo model. See chain/README.md.\n";
+    if (command == "run")
+      return "softchain run FILE.prm\n"
+             "  sweep, reduce and chain in one go, one progress line per stage and sample,\n"
+             "  and the list of every output file with what it is.\n";
+    return nullptr;
+  }
+
+  // Ctrl-C stops at once: every stored sample was written atomically (copy,
+  // fsync, rename; data/README), so the database is consistent and a rerun
+  // resumes from the samples it holds. Only async-signal-safe calls here.
+  extern "C" void on_interrupt(int)
+  {
+    const char message[] = "\nsoftchain: interrupted; the database keeps every completed "
+                           "sample, run the same command again to resume\n";
+    [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
+    ::_exit(130);
+  }
 
   bool has_flag(int argc, char **argv, const char *flag)
   {
@@ -62,8 +109,20 @@ namespace
 int main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::signal(SIGINT, on_interrupt);
   const std::string command = argc > 1 ? argv[1] : "help";
   const bool        help    = command == "help" || command == "--help" || command == "-h";
+  const std::string second  = argc > 2 ? argv[2] : "";
+  if (help && command_help(second))
+    {
+      std::cout << command_help(second);
+      return 0;
+    }
+  if (command_help(command) && (second == "--help" || second == "-h"))
+    {
+      std::cout << command_help(command);
+      return 0;
+    }
   if (help || argc < 3)
     {
       std::cout << usage;

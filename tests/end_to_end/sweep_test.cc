@@ -233,6 +233,24 @@ TEST_CASE("a sweep killed with SIGKILL resumes without recomputing and ends as a
           final_database, ActuationDatabase::open(uninterrupted.database())) == "");
 }
 
+TEST_CASE("Ctrl-C (SIGINT) stops a sweep with status 130, the database intact, a rerun resumes")
+{
+  TinyDesign  design("sweep_interrupt", "set Pressure sweep = 1e3, 2e3, 3e3, 4e3");
+  int         status  = 0;
+  const auto  partial = design.sweep_killed_after(1, SIGINT, &status);
+  INFO(partial);
+  CHECK(status == 130);
+  const auto stored = ActuationDatabase::open(design.database());
+  const auto ids    = stored.sample_ids();
+  REQUIRE(!ids.empty());
+  for (const auto &id : ids)
+    CHECK(stored.read_sample(id).converged()); // only whole samples were stored
+  const auto resumed = design.run("sweep");
+  INFO(resumed.output);
+  CHECK(resumed.status == 0);
+  CHECK(resumed.output.find(std::to_string(ids.size()) + " cached") != std::string::npos);
+}
+
 TEST_CASE("continuation from the converged neighbour takes fewer load steps than solves from rest")
 {
   const std::string sweep = "set Pressure sweep = 1e3, 2e3, 3e3, 4e3\n"

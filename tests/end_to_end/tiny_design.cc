@@ -87,7 +87,8 @@ namespace softchain::testing
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(log)};
   }
 
-  std::string TinyDesign::sweep_killed_after(const int lines) const
+  std::string TinyDesign::sweep_killed_after(const int lines, const int signal,
+                                            int *const exit_status) const
   {
     int pipe_ends[2];
     if (::pipe(pipe_ends) != 0)
@@ -114,8 +115,11 @@ namespace softchain::testing
         if (line.find("load steps") != std::string::npos)
           ++solved;
       }
-    ::kill(child, SIGKILL);
-    ::waitpid(child, nullptr, 0);
+    ::kill(child, signal);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    if (exit_status)
+      *exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     ::close(pipe_ends[0]);
     return output;
   }

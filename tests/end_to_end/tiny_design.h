@@ -6,6 +6,7 @@
 
 #include "../data/scratch_directory.h"
 
+#include <csignal>
 #include <string>
 
 namespace softchain::testing
@@ -25,9 +26,10 @@ namespace softchain::testing
     };
     // `softchain COMMAND FILE.prm`, on `ranks` MPI ranks (mpirun if > 1).
     Outcome run(const std::string &command, unsigned int ranks = 1) const;
-    // `softchain sweep`, killed with SIGKILL once `lines` progress lines of
-    // solved samples were printed; returns the output until then.
-    std::string sweep_killed_after(int lines) const;
+    // `softchain sweep`, sent `signal` once `lines` progress lines of solved
+    // samples were printed; returns the output until then (and the exit
+    // status, 128 + signal if the signal killed it).
+    std::string sweep_killed_after(int lines, int signal = SIGKILL, int *exit_status = nullptr) const;
 
     std::string prm() const { return dir.file("tiny.prm"); }
     std::string output() const { return dir.file("out"); }
