@@ -198,7 +198,7 @@ namespace softchain
               const std::size_t i = index_of.at(record.id);
               record.actuation    = set.samples[i].actuation;
               database->store_sample(record);
-              progress.solved(set.samples[i], record);
+              progress.solved(set.samples[i], record, database->mesh());
               known[i] = std::move(record);
             }
       }

@@ -24,7 +24,8 @@ namespace softchain
     start_line(sample) << " cached (" << record.status << ")" << std::endl;
   }
 
-  void SweepProgress::solved(const Sample &sample, const data::SampleRecord &record)
+  void SweepProgress::solved(const Sample &sample, const data::SampleRecord &record,
+                             const data::MeshRecord &mesh)
   {
     ++n_solved;
     solve_time += record.wall_time;
@@ -33,6 +34,16 @@ namespace softchain
                        << record.load_steps << " load steps" << std::setw(4)
                        << record.newton_iterations << " Newton it. " << std::fixed
                        << std::setprecision(2) << std::setw(7) << record.wall_time << " s  ETA "
-                       << eta << " s" << std::defaultfloat << std::endl;
+                       << eta << " s";
+    if (record.x.size() == mesh.X.size() && !mesh.tip_nodes.empty())
+      {
+        double u[3] = {0, 0, 0};
+        for (const auto node : mesh.tip_nodes)
+          for (unsigned int d = 0; d < 3; ++d)
+            u[d] += (record.x[node][d] - mesh.X[node][d]) / mesh.tip_nodes.size();
+        out << "  tip u = (" << std::setprecision(2) << 1e3 * u[0] << ", " << 1e3 * u[1] << ", "
+            << 1e3 * u[2] << ") mm";
+      }
+    out << std::defaultfloat << std::endl;
   }
 } // namespace softchain
