@@ -3,10 +3,11 @@
 # Resolution 0, P2) at 40 kPa converges and bends toward -y (the fabric
 # side), and P13 (6 mm walls) bends less than P10 (2.5 mm walls).
 #   designs_bend_toward_fabric.sh SOFTCHAIN PARAMETER_DIR
-# The Newton tolerance is relaxed to 1e-4: the assertions are about the sign
-# and the order of tip displacements of 10+ mm, which a 1e-4 relative
-# residual moves by far less than 0.1 mm (measured: 40 kPa P10 tip u_y
-# differs by < 1e-3 mm between tolerances 1e-4 and 1e-6).
+# The Newton tolerances are relaxed to 1e-4 (relative residual and update):
+# the converged update |du| <= 1e-4 |u| bounds the displacement error by
+# about 1e-4 * 60 mm = 0.006 mm, while the assertions separate displacements
+# of tens of mm (measured: tip u_y P10 -58.2 mm, P13 -18.6 mm,
+# parallelepiped -66.1 mm; 76-330 s per solve with other jobs running).
 set -euo pipefail
 softchain=$1
 parameters=$2
