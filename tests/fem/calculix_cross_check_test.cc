@@ -1,0 +1,218 @@
+// Cross-check with an independent FEM code (issue 7): CalculiX (ccx 2.20,
+// Debian calculix-ccx) and SoftChain solve the same large-deflection
+// cantilever -- a 100 x 10 x 10 mm neo-Hookean block, E = 2.6e5 Pa,
+// nu = 0.48, clamped at x = 0, a dead tip load along y -- on the same mesh
+// of trilinear hexahedra (SoftChain Q1 with 2x2x2 Gauss points, CalculiX
+// C3D8, also full 2x2x2 integration). Strain energies: SoftChain's `split`
+// W = mu/2 (I1bar - 3) + kappa/4 (J^2 - 1 - 2 ln J) against CalculiX's NEO
+// HOOKE W = C10 (I1bar - 3) + (J - 1)^2 / D1 with C10 = mu/2, D1 = 2/kappa:
+// the volumetric terms agree to O((J - 1)^3), below 1e-6 here (|J - 1| <
+// 1e-2). The mean tip deflections must agree within 0.5 % (the issue's goal).
+#include "fem_test_tools.h"
+
+#include <softchain/boundary_average.h>
+#include <softchain/boundary_ids.h>
+#include <softchain/hyperelastic_material.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+using namespace softchain;
+
+namespace
+{
+  constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.48;
+
+  void cantilever_mesh(Triangulation<3> &mesh)
+  {
+    GridGenerator::subdivided_hyper_rectangle(mesh, {20, 2, 2}, Point<3>(), Point<3>(L, h, h));
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary())
+        face->set_boundary_id(face->center()[0] < 1e-9 * L       ? boundary::base :
+                              face->center()[0] > L * (1 - 1e-9) ? boundary::tip :
+                                                                   boundary::other);
+  }
+
+  // Tip-face nodes with their share of the face area (the consistent nodal
+  // forces of a uniform traction on bilinear faces are t times these).
+  std::map<unsigned int, double> tip_area_shares(const Triangulation<3> &mesh)
+  {
+    std::map<unsigned int, double> share;
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == boundary::tip)
+        for (unsigned int v = 0; v < 4; ++v)
+          share[face->vertex_index(v)] += face->measure() / 4;
+    return share;
+  }
+
+  // The load of a case: a dead tip traction t_y [N/m^2] or a follower
+  // pressure p [Pa] on the cavity.
+  struct Load
+  {
+    double tip_traction_y = 0, pressure = 0;
+  };
+
+  // CalculiX input: nodes, C3D8 elements (deal.II's lexicographic vertex
+  // order to Abaqus' counter-clockwise one), clamped base, the tip traction
+  // as consistent nodal loads or the cavity pressure as face loads (follower
+  // loads under NLGEOM), a nonlinear static step with tight tolerances.
+  void write_calculix_input(const std::string &file, const Triangulation<3> &mesh,
+                            const Load &load)
+  {
+    const ElasticConstants c(E, nu);
+    const double           kappa = c.lambda + 2 * c.mu / 3;
+    std::ofstream          inp(file);
+    inp.precision(12); // CalculiX reads fields of at most 20 characters
+    inp << "*NODE, NSET=NALL\n";
+    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+      inp << v + 1 << ", " << mesh.get_vertices()[v][0] << ", " << mesh.get_vertices()[v][1]
+          << ", " << mesh.get_vertices()[v][2] << '\n';
+    inp << "*ELEMENT, TYPE=C3D8, ELSET=EALL\n";
+    for (const auto &cell : mesh.active_cell_iterators())
+      {
+        inp << cell->active_cell_index() + 1;
+        for (const unsigned int v : {0, 1, 3, 2, 4, 5, 7, 6})
+          inp << ", " << cell->vertex_index(v) + 1;
+        inp << '\n';
+      }
+    std::set<unsigned int> base;
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == boundary::base)
+        for (unsigned int v = 0; v < 4; ++v)
+          base.insert(face->vertex_index(v));
+    inp << "*NSET, NSET=BASE\n";
+    for (const unsigned int v : base)
+      inp << v + 1 << ",\n";
+    const auto shares = tip_area_shares(mesh);
+    inp << "*NSET, NSET=TIP\n";
+    for (const auto &[v, a] : shares)
+      inp << v + 1 << ",\n";
+    inp << "*MATERIAL, NAME=SILICONE\n*HYPERELASTIC, NEO HOOKE\n"
+        << c.mu / 2 << ", " << 2 / kappa << '\n'
+        << "*SOLID SECTION, ELSET=EALL, MATERIAL=SILICONE\n"
+        << "*BOUNDARY\nBASE, 1, 3\n"
+        << "*STEP, NLGEOM, INC=1000\n*STATIC\n0.1, 1.0, 1e-5, 0.25\n"
+        << "*CONTROLS, PARAMETERS=FIELD\n1e-9, 1e-9\n";
+    if (load.tip_traction_y != 0)
+      {
+        inp << "*CLOAD\n";
+        for (const auto &[v, a] : shares)
+          inp << v + 1 << ", 2, " << load.tip_traction_y * a << '\n';
+      }
+    if (load.pressure != 0)
+      {
+        // deal.II face f of a hexahedron is CalculiX face P<ccx_face[f]>.
+        const unsigned int ccx_face[6] = {6, 4, 3, 5, 1, 2};
+        inp << "*DLOAD\n";
+        for (const auto &cell : mesh.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary::cavity)
+              inp << cell->active_cell_index() + 1 << ", P" << ccx_face[f] << ", " << load.pressure
+                  << '\n';
+      }
+    inp << "*NODE PRINT, NSET=TIP\nU\n*END STEP\n";
+  }
+
+  // Area-weighted mean tip displacement component `d` from the last
+  // displacement block of the .dat.
+  double calculix_tip_displacement(const std::string &dat, const std::map<unsigned int, double> &shares,
+                                   const unsigned int d)
+  {
+    std::ifstream in(dat);
+    std::string   line;
+    std::map<unsigned int, Tensor<1, 3>> u;
+    while (std::getline(in, line))
+      {
+        std::istringstream words(line);
+        unsigned int       node;
+        Tensor<1, 3>       value;
+        if (words >> node >> value[0] >> value[1] >> value[2])
+          u[node - 1] = value; // later blocks (increments) overwrite earlier ones
+      }
+    double sum = 0, area = 0;
+    for (const auto &[v, a] : shares)
+      {
+        REQUIRE(u.count(v) == 1);
+        sum += a * u.at(v)[d];
+        area += a;
+      }
+    return sum / area;
+  }
+
+  double seconds_since(const std::chrono::steady_clock::time_point t)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+
+  // Mean tip displacement component `d` (CalculiX, SoftChain) of `mesh`
+  // under `load`, with `solver` (built on `mesh`); prints both and the wall
+  // times.
+  std::pair<double, double> both_codes(const std::string &name, const Triangulation<3> &mesh,
+                                       QuasiStaticSolver &solver, const Load &load,
+                                       const unsigned int d)
+  {
+    auto start = std::chrono::steady_clock::now();
+    write_calculix_input(name + ".inp", mesh, load);
+    REQUIRE(std::system(("ccx -i " + name + " > " + name + ".log 2>&1").c_str()) == 0);
+    const double ccx      = calculix_tip_displacement(name + ".dat", tip_area_shares(mesh), d);
+    const double ccx_time = seconds_since(start);
+
+    start = std::chrono::steady_clock::now();
+    LoadState state;
+    state.tip_traction[1] = load.tip_traction_y;
+    state.pressure        = load.pressure;
+    REQUIRE(solver.solve(state).converged);
+    const double ours =
+      mean_boundary_displacement(solver.space(), solver.displacement(), boundary::tip)[d];
+    WARN(name << ": SoftChain tip u_" << "xyz"[d] << " = " << ours << " m, CalculiX " << ccx
+              << " m, relative difference " << ours / ccx - 1 << "; wall time SoftChain "
+              << seconds_since(start) << " s, CalculiX " << ccx_time << " s");
+    return {ccx, ours};
+  }
+} // namespace
+
+TEST_CASE("the cantilever agrees with CalculiX on the same mesh", "[fem][calculix]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return;
+  REQUIRE(std::system("command -v ccx > /dev/null 2>&1") == 0); // scripts/setup installs calculix-ccx
+  Triangulation<3> mesh;
+  cantilever_mesh(mesh);
+  for (const double force : {0.05, 0.2}) // N: tip deflection 40 % and 75 % of L
+    {
+      const std::string       name = "cantilever_" + std::to_string(int(1000 * force)) + "mN";
+      test::MeshSolverFixture f(test::parameters_from_text(name, test::solid_prm("Q1", "split", E, nu)),
+                                mesh);
+      const auto [ccx, ours] = both_codes(name, mesh, *f.solver, Load{force / (h * h), 0}, 1);
+      CHECK(std::abs(ours / ccx - 1) < 5e-3); // measured: 9e-6 and 2.3e-5
+    }
+}
+
+TEST_CASE("the hollow bender under follower pressure agrees with CalculiX", "[fem][calculix]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return;
+  REQUIRE(std::system("command -v ccx > /dev/null 2>&1") == 0);
+  // The built-in demo bender (80 x 18 x 12 mm box, 2 mm walls, Q1, 8 cells
+  // along x) without its springs (CalculiX has no embedded tension-only
+  // springs), at 1 kPa: below the unreinforced walls' balloon limit. Without
+  // the fabric it does not bend; the pressure on the end cap stretches it:
+  // the tip's axial displacement u_x is compared. Measured relative
+  // differences 4.4e-4, 1.4e-3 and 3.8e-3 at 0.3, 1 and 3 kPa: they grow with
+  // the (strongly nonlinear) ballooning of the flat walls, while the
+  // cantilever agrees to 2e-5; the issue's goal 0.5 % holds up to 3 kPa.
+  const std::string prm = test::bender_prm("Q1", 8,
+                                           "subsection Springs\n  set Generate for bender = false\nend\n"
+                                           "subsection Materials\n  set Strain energy = split\nend\n");
+  test::SolverFixture f(test::parameters_from_text("bender_ccx", prm));
+  const auto [ccx, ours] = both_codes("bender_ccx", f.mesh.triangulation, *f.solver, Load{0, 1e3}, 0);
+  CHECK(std::abs(ours / ccx - 1) < 5e-3);
+}
