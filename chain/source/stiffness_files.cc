@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <map>
 
 namespace softchain::chain
@@ -95,6 +96,34 @@ namespace softchain::chain
       std::vector<Eigen::Vector3d> stiffness;
     };
 
+    // A joint axis without a stiffness (NaN: no usable sample, e.g. a joint in
+    // the solid base fill that transmits no pressure torque) is held rigid,
+    // k = 1e6 x the largest stiffness of that axis, with a warning. An axis
+    // with no stiffness at any joint is an error (no sample fed it).
+    void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
+                                  const std::vector<std::string> &columns)
+    {
+      for (int axis = 0; axis < 3; ++axis)
+        {
+          double largest = 0;
+          for (const auto &k : stiffness)
+            if (std::isfinite(k[axis]))
+              largest = std::max(largest, k[axis]);
+          if (largest == 0)
+            throw InputError(path + ": " + columns[axis] +
+                             " has no value at any joint (the reduction had no usable sample "
+                             "for this axis)");
+          for (std::size_t joint = 0; joint < stiffness.size(); ++joint)
+            if (std::isnan(stiffness[joint][axis]))
+              {
+                stiffness[joint][axis] = 1e6 * largest;
+                std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": no "
+                          << columns[axis] << " (no usable sample); the joint is held rigid about "
+                          << "this axis\n";
+              }
+        }
+    }
+
     StiffnessTable read_stiffness(const std::string &path, const std::string &column)
     {
       if (column != "value" && column != "fit")
@@ -117,14 +146,21 @@ namespace softchain::chain
                                             finite_number(table, path, row, "Jz"));
           if (row > 0 && !(result.joint_centres[row].x() > result.joint_centres[row - 1].x()))
             throw InputError(where(path, row) + "Jx must increase from joint to joint");
-          result.stiffness.emplace_back(positive_stiffness(table, path, row, k_columns[0]),
-                                        positive_stiffness(table, path, row, k_columns[1]),
-                                        positive_stiffness(table, path, row, k_columns[2]));
+          Eigen::Vector3d k;
+          for (int axis = 0; axis < 3; ++axis)
+            k[axis] = std::isnan(table.number(row, k_columns[axis])) ?
+                        NAN :
+                        positive_stiffness(table, path, row, k_columns[axis]);
+          result.stiffness.push_back(k);
         }
+      hold_rigid_where_missing(result.stiffness, path, k_columns);
       return result;
     }
 
-    std::vector<PiecewiseLinear> read_bending_in_pressure(const std::string &path, int n)
+    // k_phi(p) per joint; a joint without any value keeps `fallback` (its
+    // rigid k_phi from the stiffness table).
+    std::vector<PiecewiseLinear> read_bending_in_pressure(const std::string &path, int n,
+                                                          const std::vector<Eigen::Vector3d> &fallback)
     {
       const CsvTable table = read_table(path, {"pressure", "joint", "k_phi"});
       std::vector<std::map<double, double>> per_joint(n);
@@ -138,7 +174,9 @@ namespace softchain::chain
         }
       std::vector<PiecewiseLinear> result;
       for (int i = 0; i < n; ++i)
-        result.push_back(in_pressure(per_joint[i], path, "k_phi for joint " + std::to_string(i + 1)));
+        result.push_back(per_joint[i].empty() ?
+                           PiecewiseLinear({0.0}, {fallback[i][2]}) :
+                           in_pressure(per_joint[i], path, "k_phi for joint " + std::to_string(i + 1)));
       return result;
     }
 
@@ -202,9 +240,10 @@ namespace softchain::chain
     const int      n     = static_cast<int>(table.stiffness.size());
     if (!(tip.x() > table.joint_centres.back().x()))
       throw InputError(stiffness_path_ + ": the last joint lies beyond the finger's tip");
-    JointStiffness stiffness(std::move(table.stiffness));
+    JointStiffness stiffness(table.stiffness);
     if (in_pressure)
-      stiffness.set_bending_in_pressure(read_bending_in_pressure(bending_in_pressure_path_, n));
+      stiffness.set_bending_in_pressure(
+        read_bending_in_pressure(bending_in_pressure_path_, n, table.stiffness));
     return ChainModel(name, KinematicChain(std::move(table.joint_centres), tip),
                       std::move(stiffness),
                       actuation_from(read_pressure_torque(pressure_torque_path_, n), in_pressure));

@@ -89,7 +89,8 @@ namespace softchain::reduction
       std::cerr << "softchain reduce: warning: " << summary.n_below_threshold
                 << " (sample, joint, axis) rotations over all methods and b are below "
                    "Reduction/Rotation threshold = "
-                << parameters.rotation_threshold << " rad and give no stiffness (nan)\n";
+                << parameters.rotation_threshold
+                << " rad or carry no torque, and give no stiffness (nan)\n";
     if (parameters.plots)
       summary.plots_drawn = draw_plots(directory, labels, parameters.joint_spacing);
     return summary;

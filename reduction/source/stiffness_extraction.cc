@@ -51,6 +51,16 @@ namespace softchain::reduction
     const double       angle  = angle_about(result.angles, axis);
     if (!(std::abs(angle) >= threshold_) || angle == 0)
       return no_value;
+    // A joint that transmits no torque has no measurable stiffness: e.g. a
+    // section through the solid base fill, distal to which lies the whole
+    // closed cavity, whose pressure has no net moment. "No torque" is below
+    // 1e-6 of the sample's largest joint torque (the geometric torques are
+    // exact up to round-off, 1e-12 relative).
+    double largest = 0;
+    for (const JointResult &other : sample.joints())
+      largest = std::max(largest, std::abs(other.torque(axis)));
+    if (!(std::abs(result.torque(axis)) > 1e-6 * largest))
+      return no_value;
     return result.torque(axis) / angle;
   }
 

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <sstream>
 
 using namespace softchain::chain;
 using softchain::chain::testing::UniformReduction;
@@ -16,6 +17,37 @@ using softchain::data::InputError;
 namespace
 {
   const Eigen::Vector3d tip(0.09, 0.0, 0.0);
+}
+
+namespace softchain::chain::testing::CsvEdit
+{
+  // Sets field `column` (0-based) of the row that starts with `key` + "," in
+  // the CSV file `path`.
+  void row_field(const std::string &path, const std::string &key, int column,
+                 const std::string &value)
+  {
+    std::ifstream in(path);
+    std::string   text((std::istreambuf_iterator<char>(in)), {}), line, result;
+    std::istringstream lines(text);
+    while (std::getline(lines, line))
+      {
+        if (line.rfind(key + ",", 0) == 0)
+          {
+            std::size_t start = 0;
+            for (int c = 0; c < column; ++c)
+              start = line.find(',', start) + 1;
+            const std::size_t end = line.find(',', start);
+            line.replace(start, (end == std::string::npos ? line.size() : end) - start, value);
+          }
+        result += line + "\n";
+      }
+    in.close();
+    std::ofstream(path) << result;
+  }
+}
+
+namespace
+{
 
   // Replaces the stiffness file by the uniform table with `edit` applied to its text.
   template <typename Edit>
@@ -44,6 +76,30 @@ TEST_CASE("the file label is the method and b as a fraction of a with two decima
   CHECK(StiffnessFiles::label("M1", 1.0 / 3.0) == "M1_b0.33a");
   const StiffnessFiles files("out/stiffness", "M1", 1.0);
   CHECK(files.pressure_torque_path() == "out/stiffness/M1_b1.00a_pressure_torque.csv");
+}
+
+TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
+{
+  // E.g. P10's joint 1 lies in the solid base fill: the whole closed cavity
+  // is distal to it, so the pressure transmits no torque and the reduction
+  // writes no k_phi there.
+  softchain::testing::ScratchDirectory dir("chain_rigid_joint");
+  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const UniformReduction               r;
+  testing::write_reduction(files, r);
+  // Joint 1: k_phi (8th column) nan in the stiffness table, and no k_phi(p).
+  testing::CsvEdit::row_field(files.stiffness_path(), "1", 7, "nan");
+  for (const char *pressure : {"40000", "80000"})
+    testing::CsvEdit::row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "nan");
+  for (const bool in_pressure : {false, true})
+    {
+      const ChainModel model = files.read_model("M2", tip, "value", in_pressure);
+      INFO("k_phi interpolated in pressure: " << in_pressure);
+      // Rigid: 1e6 x the largest k_phi of the table; joint 2 as written.
+      CHECK(model.stiffness().diagonal(r.p_max)[2] == Approx(1e6 * r.k[2]).epsilon(1e-12));
+      CHECK(model.stiffness().diagonal(r.p_max)[5] ==
+            Approx(r.k[2] * (in_pressure ? 1 - r.k_phi_drop : 1)).epsilon(1e-12));
+    }
 }
 
 TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
@@ -106,12 +162,12 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     testing::stiffness_table(r).write(path);
     CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 1") && Catch::Contains("k_theta = -0.05"));
   }
-  SECTION("a NaN stiffness")
+  SECTION("no stiffness about an axis at any joint")
   {
     UniformReduction r;
     r.k_fit[0] = NAN;
     testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("fit"), Catch::Contains(path + ", row 1") && Catch::Contains("k_psi_fit = nan"));
+    CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("k_psi_fit has no value at any joint"));
   }
   SECTION("a missing column")
   {

@@ -67,6 +67,22 @@ TEST_CASE("a rotation below the threshold gives NaN stiffness, counted, never in
   CHECK(r.samples()[1].joints()[2].torque(2) != 0);
 }
 
+TEST_CASE("a joint that transmits no torque gives NaN stiffness, not 0 or a tiny number")
+{
+  // Solid base up to x = 1.5 cm: the whole closed cavity is distal to joint 1
+  // (x = 0.5 cm), so the pressure's moment about it vanishes (a closed
+  // surface's pressure has no net moment); joints 2.. carry torque.
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50), 15);
+  const MethodReduction r      = reduce(finger, {bent(finger, 2e4, 0.2)});
+  const auto           &joints = r.stiffness().joints();
+  CHECK(std::abs(r.samples()[0].joints()[0].torque(2)) <
+        1e-9 * std::abs(r.samples()[0].joints()[2].torque(2)));
+  CHECK(std::isnan(joints[0].at_largest_load(2)));
+  CHECK(std::isnan(joints[0].fit(2)));
+  for (std::size_t j = 2; j < joints.size(); ++j) // (the arc's sign is arbitrary here)
+    CHECK((std::isfinite(joints[j].at_largest_load(2)) && joints[j].at_largest_load(2) != 0));
+}
+
 TEST_CASE("k at the largest load and the least-squares fit over the usable samples")
 {
   const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50));

@@ -71,7 +71,7 @@ namespace softchain::testing
     return planes;
   }
 
-  SyntheticFinger hollow_box(const std::vector<double> &planes)
+  SyntheticFinger hollow_box(const std::vector<double> &planes, const std::size_t first_cavity_plane)
   {
     SyntheticFinger finger;
     finger.planes            = planes;
@@ -80,17 +80,18 @@ namespace softchain::testing
     for (const double x : planes)
       for (const auto &p : cs.points)
         finger.mesh.X.push_back({x, p(0), p(1)});
-    const Eigen::Vector3d inside(0.5 * (planes.front() + planes.back()), cavity_centroid_y, 0);
+    const Eigen::Vector3d inside(0.5 * (planes[first_cavity_plane] + planes.back()),
+                                 cavity_centroid_y, 0);
     const auto node = [&](std::size_t plane, int corner) {
       return std::int64_t(plane) * n_cs + cs.cavity_corners[corner % 4];
     };
-    for (std::size_t k = 0; k + 1 < planes.size(); ++k)
+    for (std::size_t k = first_cavity_plane; k + 1 < planes.size(); ++k)
       for (int c = 0; c < 4; ++c)
         {
           add_triangle(finger.mesh, node(k, c), node(k + 1, c), node(k + 1, c + 1), inside);
           add_triangle(finger.mesh, node(k, c), node(k + 1, c + 1), node(k, c + 1), inside);
         }
-    for (const std::size_t end : {std::size_t(0), planes.size() - 1})
+    for (const std::size_t end : {first_cavity_plane, planes.size() - 1})
       {
         add_triangle(finger.mesh, node(end, 0), node(end, 1), node(end, 2), inside);
         add_triangle(finger.mesh, node(end, 0), node(end, 2), node(end, 3), inside);

@@ -31,7 +31,9 @@ namespace softchain::testing
     double node_centroid_y() const;
   };
 
-  SyntheticFinger hollow_box(const std::vector<double> &planes);
+  // The cavity runs from plane `first_cavity_plane` to the last (a solid
+  // base section before it, like P10's base fill).
+  SyntheticFinger hollow_box(const std::vector<double> &planes, std::size_t first_cavity_plane = 0);
   std::vector<double> uniform_planes(double length, int n_intervals);
 
   using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d &)>;
