@@ -107,11 +107,9 @@ namespace softchain::chain
 
     // Every model against the database's FEM tip poses: tables, plot, report;
     // returns the number of failed chain equilibria.
-    int validate(const std::vector<ChainModel> &models, const data::ActuationDatabase &database,
+    int validate(const std::vector<ChainModel> &models, ChainValidation &validation,
                  const ChainParameters &p, const std::string &directory)
     {
-      const auto      box = bounding_box(database.mesh());
-      ChainValidation validation(database, p.validation_roles, box.second.x() - box.first.x());
       std::vector<std::string> names;
       for (const ChainModel &model : models)
         {
@@ -122,7 +120,6 @@ namespace softchain::chain
         std::cout << "chain: no converged database sample has one of the validation roles\n";
       validation.per_sample_table().write(directory + "/validation.csv");
       validation.summary_table().write(directory + "/validation_summary.csv");
-      validation.fem_tip_table().write(directory + "/fem_tip_poses.csv");
       if (!ValidationPlot(directory, names).draw())
         std::cout << "chain: gnuplot missing or failed, validation.png not drawn (script validation.gp)\n";
       report(validation, directory);
@@ -139,6 +136,12 @@ namespace softchain::chain
     const std::string stiffness_dir = (std::filesystem::path(output_dir) / "stiffness").string();
     const std::string chain_dir     = (std::filesystem::path(output_dir) / "chain").string();
 
+    // The FEM tip poses first: they need no chain model.
+    const auto      box = bounding_box(mesh);
+    ChainValidation validation(database, p.validation_roles, box.second.x() - box.first.x());
+    std::filesystem::create_directories(chain_dir);
+    validation.fem_tip_table().write(chain_dir + "/fem_tip_poses.csv");
+
     std::vector<ChainModel> models = read_models(
       stiffness_dir, p, TipPoseFit::of_mesh(mesh, database.path()).reference_centroid());
     const ChainModel        selected =
@@ -146,6 +149,6 @@ namespace softchain::chain
     if (export_mjcf)
       export_model(selected, database, chain_dir + "/finger.xml");
     models.push_back(baseline_of(selected, mesh, p.baseline_youngs_modulus));
-    return validate(models, database, p, chain_dir) > 0 ? 2 : 0;
+    return validate(models, validation, p, chain_dir) > 0 ? 2 : 0;
   }
 } // namespace softchain::chain
