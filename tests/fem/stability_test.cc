@@ -1,0 +1,93 @@
+// Numerical-stability scenarios (issue 7), each small enough for CI: every
+// run must end converged or stopped with a named reason -- never NaN, a
+// crash or a silent wrong state.
+#include "fem_test_tools.h"
+
+#include <softchain/boundary_average.h>
+#include <softchain/boundary_ids.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+
+using namespace softchain;
+
+namespace
+{
+  // The demo bender (Q1, 4 cells along x) with the given spring rigidities.
+  test::SolverFixture bender(const double fabric_EA, const double thread_EA)
+  {
+    return test::SolverFixture(test::parameters_from_text(
+      "stability", test::bender_prm("Q1", 4,
+                                    "subsection Springs\n  set Axial rigidity = fabric: " +
+                                      std::to_string(fabric_EA) + ", thread: " +
+                                      std::to_string(thread_EA) + "\nend\n")));
+  }
+
+  double tip_uy(const QuasiStaticSolver &solver)
+  {
+    return mean_boundary_displacement(solver.space(), solver.displacement(), boundary::tip)[1];
+  }
+} // namespace
+
+TEST_CASE("spring rigidity from 1e2 to 1e6 times the silicone's: converged, no Newton cycling",
+          "[fem][stability]")
+{
+  // The silicone's axial rigidity over a wall cell: E h^2 = 2.6e5 Pa x
+  // (2 mm)^2 ~ 1 N. The springs' EA from 1e2 to 1e6 N spans the issue's
+  // range; the tension-only law (C1-rounded) must not make Newton cycle
+  // between slack and taut: each load step converges within the iteration
+  // limit (12). Physically the fabric becomes inextensible: from 1e4 N on the
+  // tip deflection saturates (measured -9.235, -9.191, -9.193 mm: within
+  // 0.5 %, so 1 % is asserted), and the soft 1e2 N fabric stretches and bends
+  // the finger less (measured -7.91 mm). Cost: 21 Newton iterations at 1e2 N,
+  // 154 at 1e6 N (more load-step cuts as the springs' stiffness grows).
+  std::map<double, double> uy_of;
+  for (const double EA : {1e2, 1e3, 1e4, 1e5, 1e6})
+    {
+      auto      f = bender(EA, EA / 4);
+      LoadState load;
+      load.pressure     = 1e4;
+      const auto result = f.solver->solve(load);
+      INFO("EA = " << EA << " N: " << result.reason);
+      REQUIRE(result.converged);
+      CHECK(result.newton_iterations <= 12 * result.load_steps);
+      const double uy = tip_uy(*f.solver);
+      WARN("EA = " << EA << " N: tip u_y = " << uy << " m, " << result.load_steps
+                   << " load steps, " << result.newton_iterations << " Newton iterations");
+      CHECK(std::isfinite(uy));
+      CHECK(uy < 0); // toward the fabric
+      uy_of[EA] = uy;
+    }
+  for (const double EA : {1e4, 1e5})
+    CHECK(std::abs(uy_of[EA] / uy_of[1e6] - 1) < 0.01);
+  CHECK(uy_of[1e2] > 1.05 * uy_of[1e4]); // less bending (u_y < 0)
+}
+
+TEST_CASE("lateral tip forces up to 2 N: the solver follows or stops with a named reason",
+          "[fem][stability]")
+{
+  // The paper saw the P10 buckle above 0.7 N; on the demo bender a 2 N
+  // lateral (z) force at the tip is far past its linear range.
+  auto         f = bender(2000, 500);
+  const double L = 0.08, W = 0.018, H = 0.012;
+  for (const double force : {0.5, 1.0, 2.0})
+    {
+      LoadState load;
+      load.point_loads.push_back({Point<3>(L - 0.001, H / 2, W / 2), Tensor<1, 3>({0, 0, force})});
+      const auto result = f.solver->solve(load);
+      INFO(force << " N: " << result.reason);
+      const double uz =
+        mean_boundary_displacement(f.solver->space(), f.solver->displacement(), boundary::tip)[2];
+      WARN("lateral " << force << " N: converged " << result.converged << ", load factor "
+                      << result.load_factor_reached << ", tip u_z " << uz << " m "
+                      << result.reason);
+      CHECK(std::isfinite(uz));
+      if (result.converged)
+        CHECK(uz > 0);
+      else
+        CHECK(!result.reason.empty());
+      f.solver->reset();
+    }
+}
