@@ -13,6 +13,9 @@ namespace softchain::chain
       section.declare("Stiffness column", "value", "value (largest load) or fit (least squares)");
       section.declare("Interpolate k_phi in pressure", "true",
                       "k_phi and J_p follow their pressure tables");
+      section.declare("Missing stiffness", "rigid",
+                      "a joint axis whose k is NaN in the CSV (no usable sample, e.g. a joint "
+                      "in the solid base fill): rigid (held, k = 1e6 x the largest) or error");
       section.declare("Validation roles", "validation, pressure",
                       "roles of the database samples compared with the chain");
       section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");
@@ -37,6 +40,10 @@ namespace softchain::chain
     section.require(p.stiffness_column == "value" || p.stiffness_column == "fit",
             "Stiffness column", "'" + p.stiffness_column + "' is neither value nor fit");
     p.in_pressure      = section.get_bool("Interpolate k_phi in pressure");
+    const std::string missing = section.get("Missing stiffness");
+    section.require(missing == "rigid" || missing == "error", "Missing stiffness",
+                    "'" + missing + "' is neither rigid nor error");
+    p.rigid_where_missing = missing == "rigid";
     p.validation_roles = section.get_list("Validation roles");
     p.baseline_youngs_modulus = section.get_double("Baseline Young's modulus");
     section.require(p.baseline_youngs_modulus > 0, "Baseline Young's modulus", "must be positive");

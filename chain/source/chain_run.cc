@@ -39,13 +39,13 @@ namespace softchain::chain
         {
           const StiffnessFiles files(directory, method, p.half_width_fraction);
           if (method == p.method)
-            models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure));
+            models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing));
           else if (!files.exist())
             std::cout << "chain: no " << files.stiffness_path() << ", " << method << " skipped\n";
           else
             try // the other method is a comparison only: unusable files skip it
               {
-                models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure));
+                models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing));
               }
             catch (const data::InputError &e)
               {

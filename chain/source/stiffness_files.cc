@@ -101,7 +101,7 @@ namespace softchain::chain
     // k = 1e6 x the largest stiffness of that axis, with a warning. An axis
     // with no stiffness at any joint is an error (no sample fed it).
     void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
-                                  const std::vector<std::string> &columns)
+                                  const std::vector<std::string> &columns, const bool rigid)
     {
       for (int axis = 0; axis < 3; ++axis)
         {
@@ -116,6 +116,11 @@ namespace softchain::chain
           for (std::size_t joint = 0; joint < stiffness.size(); ++joint)
             if (std::isnan(stiffness[joint][axis]))
               {
+                if (!rigid)
+                  throw InputError(where(path, joint) + columns[axis] +
+                                   " = nan is not a positive finite stiffness (the reduction had "
+                                   "no usable sample for this axis; Chain/Missing stiffness = rigid "
+                                   "holds such joints rigid)");
                 stiffness[joint][axis] = 1e6 * largest;
                 std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": no "
                           << columns[axis] << " (no usable sample); the joint is held rigid about "
@@ -124,7 +129,8 @@ namespace softchain::chain
         }
     }
 
-    StiffnessTable read_stiffness(const std::string &path, const std::string &column)
+    StiffnessTable read_stiffness(const std::string &path, const std::string &column,
+                                  const bool rigid_where_missing)
     {
       if (column != "value" && column != "fit")
         throw std::invalid_argument("StiffnessFiles: column must be 'value' or 'fit'");
@@ -153,7 +159,7 @@ namespace softchain::chain
                         positive_stiffness(table, path, row, k_columns[axis]);
           result.stiffness.push_back(k);
         }
-      hold_rigid_where_missing(result.stiffness, path, k_columns);
+      hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
       return result;
     }
 
@@ -234,9 +240,10 @@ namespace softchain::chain
   bool StiffnessFiles::exist() const { return std::filesystem::exists(stiffness_path_); }
 
   ChainModel StiffnessFiles::read_model(const std::string &name, const Eigen::Vector3d &tip,
-                                        const std::string &column, bool in_pressure) const
+                                        const std::string &column, bool in_pressure,
+                                        bool rigid_where_missing) const
   {
-    StiffnessTable table = read_stiffness(stiffness_path_, column);
+    StiffnessTable table = read_stiffness(stiffness_path_, column, rigid_where_missing);
     const int      n     = static_cast<int>(table.stiffness.size());
     if (!(tip.x() > table.joint_centres.back().x()))
       throw InputError(stiffness_path_ + ": the last joint lies beyond the finger's tip");

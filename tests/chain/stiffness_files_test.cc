@@ -96,6 +96,17 @@ TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
       const ChainModel model = files.read_model("M2", tip, "value", in_pressure);
       INFO("k_phi interpolated in pressure: " << in_pressure);
       // Rigid: 1e6 x the largest k_phi of the table; joint 2 as written.
+      // With Chain/Missing stiffness = error it is an error naming the row.
+      try
+        {
+          files.read_model("M2", tip, "value", in_pressure, false);
+          FAIL("no error");
+        }
+      catch (const InputError &e)
+        {
+          CHECK_THAT(e.what(), Catch::Contains(files.stiffness_path() + ", row 1") &&
+                                 Catch::Contains("k_phi = nan"));
+        }
       CHECK(model.stiffness().diagonal(r.p_max)[2] == Approx(1e6 * r.k[2]).epsilon(1e-12));
       CHECK(model.stiffness().diagonal(r.p_max)[5] ==
             Approx(r.k[2] * (in_pressure ? 1 - r.k_phi_drop : 1)).epsilon(1e-12));
