@@ -7,16 +7,16 @@ namespace softchain
 {
   namespace
   {
-    bool inside(const CellLocator &locator, const CellLocator::Cell &cell, const Point<3> &p)
+    using Cell = CellLocator::Cell;
+
+    bool inside(const CellLocator &locator, const Cell &cell, const Point<3> &p)
     {
       return locator.unit_point(cell, p).has_value();
     }
 
-    using Cell = CellLocator::Cell;
-
     // The cell the segment at(t) runs through just after t: the first cell
-    // found at t + step (step growing) that is not `current`. Returns the cell and the parameter found inside it; an
-    // invalid cell if the segment leaves the body.
+    // found at t + step (step growing) that is not `current`. Returns the
+    // cell and that parameter; an invalid cell if the segment leaves the body.
     template <class Segment>
     std::pair<Cell, double> next_cell(const CellLocator &locator,
                                       const Segment &at, const double t, const Cell &current)

@@ -50,8 +50,7 @@ namespace softchain::chain
       const double k = table.number(row, column);
       if (!(std::isfinite(k) && k > 0.0))
         throw InputError(where(path, row) + column + " = " + table.text(row, column) +
-                         " is not a positive finite stiffness" +
-                         (std::isnan(k) ? " (the reduction had no usable sample for this axis)" : ""));
+                         " is not a positive finite stiffness");
       return k;
     }
 

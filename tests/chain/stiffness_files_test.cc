@@ -17,49 +17,49 @@ using softchain::data::InputError;
 namespace
 {
   const Eigen::Vector3d tip(0.09, 0.0, 0.0);
-}
 
-namespace softchain::chain::testing::CsvEdit
-{
-  // Sets field `column` (0-based) of the row that starts with `key` + "," in
-  // the CSV file `path`.
-  void row_field(const std::string &path, const std::string &key, int column,
-                 const std::string &value)
+  // Rewrites the file `path` with `edit` applied to its text.
+  template <typename Edit>
+  void rewrite_file(const std::string &path, Edit edit)
   {
-    std::ifstream in(path);
-    std::string   text((std::istreambuf_iterator<char>(in)), {}), line, result;
-    std::istringstream lines(text);
-    while (std::getline(lines, line))
-      {
-        if (line.rfind(key + ",", 0) == 0)
-          {
-            std::size_t start = 0;
-            for (int c = 0; c < column; ++c)
-              start = line.find(',', start) + 1;
-            const std::size_t end = line.find(',', start);
-            line.replace(start, (end == std::string::npos ? line.size() : end) - start, value);
-          }
-        result += line + "\n";
-      }
-    in.close();
-    std::ofstream(path) << result;
+    std::string text;
+    {
+      std::ifstream in(path);
+      text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    edit(text);
+    std::ofstream(path) << text;
   }
-}
-
-namespace
-{
 
   // Replaces the stiffness file by the uniform table with `edit` applied to its text.
   template <typename Edit>
   void rewrite_stiffness(const StiffnessFiles &files, Edit edit)
   {
-    std::string text;
-    {
-      std::ifstream in(files.stiffness_path());
-      text.assign(std::istreambuf_iterator<char>(in), {});
-    }
-    edit(text);
-    std::ofstream(files.stiffness_path()) << text;
+    rewrite_file(files.stiffness_path(), edit);
+  }
+
+  // Sets field `column` (0-based) of the row of CSV file `path` that starts
+  // with `key` + ",".
+  void set_row_field(const std::string &path, const std::string &key, int column,
+                     const std::string &value)
+  {
+    rewrite_file(path, [&](std::string &text) {
+      std::istringstream lines(text);
+      std::string        line, result;
+      while (std::getline(lines, line))
+        {
+          if (line.rfind(key + ",", 0) == 0)
+            {
+              std::size_t start = 0;
+              for (int c = 0; c < column; ++c)
+                start = line.find(',', start) + 1;
+              const std::size_t end = line.find(',', start);
+              line.replace(start, (end == std::string::npos ? line.size() : end) - start, value);
+            }
+          result += line + "\n";
+        }
+      text = result;
+    });
   }
 
   void replace(std::string &text, const std::string &from, const std::string &to)
@@ -88,9 +88,9 @@ TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
   const UniformReduction               r;
   testing::write_reduction(files, r);
   // Joint 1: k_phi (8th column) nan in the stiffness table, and no k_phi(p).
-  testing::CsvEdit::row_field(files.stiffness_path(), "1", 7, "nan");
+  set_row_field(files.stiffness_path(), "1", 7, "nan");
   for (const char *pressure : {"40000", "80000"})
-    testing::CsvEdit::row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "nan");
+    set_row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "nan");
   for (const bool in_pressure : {false, true})
     {
       const ChainModel model = files.read_model("M2", tip, "value", in_pressure);
