@@ -187,8 +187,9 @@ namespace softchain
         std::vector<data::SampleRecord> outcome;
         if (r < mine.size())
           {
-            const std::size_t i = mine[r];
-            known[i]            = group.solve(set.samples[i], start_of(i, known), i);
+            const std::size_t i    = mine[r];
+            const auto       *stop = stopped_before(i, known);
+            known[i] = stop ? beyond_limit_point(i, *stop) : group.solve(set.samples[i], start_of(i, known), i);
             if (group.leader())
               outcome.push_back(known[i]);
           }
@@ -255,6 +256,50 @@ namespace softchain
           }
       }
     return nullptr;
+  }
+
+  // The nearest sample before `sample` in its chain with a result, if that
+  // result is a stop at a limit point (or a sample beyond one), else nullptr.
+  const data::SampleRecord *SampleSweep::stopped_before(const std::size_t sample,
+                                                        const Records    &known) const
+  {
+    for (const auto &chain : set.chains)
+      {
+        const auto at = std::find(chain.begin(), chain.end(), sample);
+        if (at == chain.end())
+          continue;
+        for (auto before = std::make_reverse_iterator(at); before != chain.rend(); ++before)
+          {
+            const auto record = known.find(*before);
+            if (record != known.end())
+              return !record->second.converged() &&
+                         record->second.reason.find("limit point") != std::string::npos ?
+                       &record->second :
+                       nullptr;
+          }
+      }
+    return nullptr;
+  }
+
+  // A chain loads proportionally, so a sample further along it than a limit
+  // point has no equilibrium on that load path either (pressure control cannot
+  // pass a limit point): it is stored as failed without a solve, holding the
+  // state at the limit.
+  data::SampleRecord SampleSweep::beyond_limit_point(const std::size_t         sample,
+                                                     const data::SampleRecord &stop) const
+  {
+    data::SampleRecord record = stop;
+    record.id                 = set.samples[sample].id;
+    record.actuation          = set.samples[sample].actuation;
+    record.reason             = stop.reason.rfind("not solved", 0) == 0 ?
+                                  stop.reason :
+                                  "not solved: beyond the limit point of sample " + stop.id + " (" +
+                                    stop.reason + ")";
+    record.load_factor_reached = 0.0;
+    record.newton_iterations   = 0;
+    record.load_steps          = 0;
+    record.wall_time           = 0.0;
+    return record;
   }
 
   // vtu/samples.pvd: the samples' VTU files in sample order (time = index).

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using softchain::data::ActuationDatabase;
@@ -294,6 +295,33 @@ TEST_CASE("a sample that does not converge is stored as failed and the sweep exi
     }
   CHECK(failed == 1);
   CHECK(design.run("sweep").status == 2); // cached, still reported
+}
+
+TEST_CASE("samples beyond a limit point of their chain are stored as failed without a solve")
+{
+  // The tiny bender has no thread rings: its walls balloon and pressure
+  // control stops at a limit point near 25 kPa (measured 25.3 kPa), so the
+  // 40 kPa sample fails there and the 80 kPa sample is past it.
+  TinyDesign design("sweep_limit_point", "set Pressure sweep = 10e3, 40e3, 80e3");
+  const auto outcome = design.run("sweep");
+  INFO(outcome.output);
+  CHECK(outcome.status == 2);
+  const auto database = ActuationDatabase::open(design.database());
+  std::map<double, softchain::data::SampleRecord> by_pressure;
+  for (const auto &id : database.sample_ids())
+    {
+      auto s = database.read_sample(id);
+      by_pressure[s.actuation.pressure] = s;
+    }
+  REQUIRE(by_pressure.size() == 3);
+  CHECK(by_pressure[10e3].converged());
+  const auto &stop = by_pressure[40e3], &beyond = by_pressure[80e3];
+  CHECK(stop.reason.rfind("limit point", 0) == 0);
+  CHECK(stop.newton_iterations > 0);
+  CHECK(!beyond.converged());
+  CHECK(beyond.reason.find("beyond the limit point of sample " + stop.id) != std::string::npos);
+  CHECK(beyond.newton_iterations == 0); // not solved
+  CHECK(beyond.x == stop.x);            // the state at the limit
 }
 
 TEST_CASE("force points outside the body or malformed samples fail with exit 1 before any solve")
