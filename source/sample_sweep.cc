@@ -168,6 +168,7 @@ namespace softchain
                                                              group.mesh());
         }
       solve_rounds(group, share_of(pending, color, n_groups), database, known, progress);
+      group.print_timing();
     }
     MPI_Comm_free(&group_comm);
   }

@@ -36,6 +36,10 @@ namespace softchain
     data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
                              unsigned int index);
 
+    // Wall time of assembly and linear solves over all samples solved so
+    // far, to the log (Output/Verbose).
+    void print_timing() { solver.timer().print_summary(); }
+
   private:
     // The solver reads its parameters from here; solve() sets the initial
     // load step of each sample (see first_step()).
