@@ -5,6 +5,7 @@
 #include <softchain/data/input_error.h>
 #include <softchain/parameters.h>
 #include <softchain/reduction/reduction_run.h>
+#include <softchain/report/report_run.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -26,11 +27,12 @@ namespace
     "  reduce   joint rotations (M1, M2), torques and stiffness CSVs from the database\n"
     "  chain    kinematic-chain finger with the extracted stiffness, validated against\n"
     "           the FEM tip poses; --export-mjcf also writes a MuJoCo model\n"
-    "  run      the whole pipeline: sweep, reduce, chain; lists the output files\n"
+    "  run      the whole pipeline: sweep, reduce, chain, report; lists the output files\n"
+    "  report   report.html (one self-contained page) from the outputs of a run\n"
     "  help     this text; help COMMAND (or COMMAND --help): that command in detail\n"
     "\n"
     "Outputs go to the .prm's Design/Output directory (default output/<name>/):\n"
-    "database.h5, vtu/, stiffness/, chain/.\n"
+    "database.h5, vtu/, stiffness/, chain/, report.html.\n"
     "Exit status: 0 success, 1 bad input, 2 a solve or sample did not converge.\n";
 
   // `softchain help COMMAND` / `softchain COMMAND --help`.
@@ -61,8 +63,15 @@ namespace
              "  --export-mjcf writes a MuJoCo model. See chain/README.md.\n";
     if (command == "run")
       return "softchain run FILE.prm\n"
-             "  sweep, reduce and chain in one go, one progress line per stage and sample,\n"
-             "  and the list of every output file with what it is.\n";
+             "  sweep, reduce, chain and report in one go, one progress line per stage and\n"
+             "  sample, and the list of every output file with what it is.\n";
+    if (command == "report")
+      return "softchain report FILE.prm\n"
+             "  Rebuilds <output>/report.html from the outputs of an earlier run\n"
+             "  (database.h5, stiffness/, chain/): the design, pictures of the deformed\n"
+             "  finger at 0, 40 and 80 kPa, the stiffness plots and tables, the chain\n"
+             "  validation, per-sample solve times and the paper's claims with verdicts.\n"
+             "  One self-contained HTML file. Stage times are only known to `softchain run`.\n";
     return nullptr;
   }
 
@@ -101,6 +110,8 @@ namespace
     if (command == "chain")
       return chain::run_chain(file, directory + "/database.h5", directory,
                               has_flag(argc, argv, "--export-mjcf"));
+    if (command == "report")
+      return report::run_report(file, directory + "/database.h5", directory);
     std::cerr << "softchain: unknown command '" << command << "'\n" << usage;
     return 1;
   }

@@ -1,11 +1,13 @@
 // `softchain run FILE.prm`: the whole pipeline of the paper's Fig. 2 --
-// FEM sample sweep -> reduction (stiffness CSVs) -> chain validation -- with
-// one progress line per stage and its wall time, then every output file with
+// FEM sample sweep -> reduction (stiffness CSVs) -> chain validation -- and
+// the report of it all (report.html, with the stages' wall times), with one
+// progress line per stage and its wall time, then every output file with
 // what it is. The sweep runs on all MPI ranks, the deal.II-free tiers on
 // rank 0.
 #include <softchain/chain/chain_run.h>
 #include <softchain/commands.h>
 #include <softchain/reduction/reduction_run.h>
+#include <softchain/report/report_run.h>
 #include <softchain/sample_sweep.h>
 
 #include <deal.II/base/mpi.h>
@@ -26,17 +28,21 @@ namespace softchain
   {
     namespace fs = std::filesystem;
 
-    // Runs one stage between two progress lines; returns its exit status.
+    constexpr int n_stages = 4;
+
+    // Runs one stage between two progress lines, appends its wall time to
+    // `times` (for the report); returns its exit status.
     int stage(std::ostream &out, const int k, const std::string &name,
-              const std::function<int()> &body)
+              std::vector<report::StageTime> &times, const std::function<int()> &body)
     {
-      out << "== stage " << k << "/3: " << name << std::endl;
-      const auto start  = std::chrono::steady_clock::now();
-      const int  status = body();
-      out << "== stage " << k << "/3: " << name << (status == 0 ? " done" : " done with failures")
-                << " in " << std::fixed << std::setprecision(2)
-                << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                << " s" << std::defaultfloat << std::endl;
+      out << "== stage " << k << "/" << n_stages << ": " << name << std::endl;
+      const auto   start   = std::chrono::steady_clock::now();
+      const int    status  = body();
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      times.push_back({name, seconds});
+      out << "== stage " << k << "/" << n_stages << ": " << name
+          << (status == 0 ? " done" : " done with failures") << " in " << std::fixed
+          << std::setprecision(2) << seconds << " s" << std::defaultfloat << std::endl;
       return status;
     }
 
@@ -45,6 +51,8 @@ namespace softchain
     {
       const std::string dir = file.parent_path().filename(), name = file.filename(),
                         ext = file.extension();
+      if (name == "report.html")
+        return "the report: design, deformed finger, stiffness, validation, run times, paper's claims (open in a browser)";
       if (name == "database.h5")
         return "actuation-deformation database (HDF5): mesh and every sample's deformed nodes";
       if (ext == ".stale")
@@ -105,7 +113,8 @@ namespace softchain
     std::ostream  silent(nullptr);
     std::ostream &out = root ? std::cout : silent;
     std::string   database;
-    const int     swept = stage(out, 1, "FEM sample sweep", [&] {
+    std::vector<report::StageTime> times;
+    const int     swept = stage(out, 1, "FEM sample sweep", times, [&] {
       const auto summary = SampleSweep(prm_file).run();
       database           = summary.database;
       return summary.report(out, root ? std::cerr : silent);
@@ -113,10 +122,14 @@ namespace softchain
     if (!root)
       return swept;
     const std::string directory = fs::path(database).parent_path().string();
-    stage(out, 2, "reduction", [&] { return reduction::run_reduction(prm_file, database, directory); });
+    stage(out, 2, "reduction", times,
+          [&] { return reduction::run_reduction(prm_file, database, directory); });
     const int chained =
-      stage(out, 3, "chain validation",
+      stage(out, 3, "chain validation", times,
             [&] { return chain::run_chain(prm_file, database, directory, false); });
+    // The report's own time cannot be in the report: it lists stages 1-3.
+    stage(out, 4, "report", times,
+          [&] { return report::run_report(prm_file, database, directory, times); });
     list_outputs(directory);
     return std::max(swept, chained);
   }

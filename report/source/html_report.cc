@@ -1,0 +1,244 @@
+#include <softchain/chain/stiffness_files.h>
+#include <softchain/data/csv_table.h>
+#include <softchain/data/input_error.h>
+#include <softchain/report/base64.h>
+#include <softchain/report/html_report.h>
+#include <softchain/report/paper_claims.h>
+#include <softchain/report/pressure_snapshots.h>
+#include <softchain/report/surface_mesh.h>
+#include <softchain/report/svg_finger_renderer.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace softchain::report
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    std::string read_bytes(const std::string &path)
+    {
+      std::ifstream      in(path, std::ios::binary);
+      std::ostringstream bytes;
+      bytes << in.rdbuf();
+      return bytes.str();
+    }
+
+    std::string fmt(const double value, const int digits = 3)
+    {
+      std::ostringstream text;
+      text.precision(digits);
+      text << value;
+      return text.str();
+    }
+
+    // Throws the InputError of a missing input, naming the command that
+    // writes it.
+    void require(const std::string &path, const std::string &writer)
+    {
+      if (!fs::exists(path))
+        throw data::InputError(path + ": not found (written by `softchain " + writer +
+                               "`; run it, or `softchain run`, first)");
+    }
+
+    double force_norm(const data::Actuation &actuation)
+    {
+      double sum[3] = {0, 0, 0};
+      for (const auto &f : actuation.point_forces)
+        for (int k = 0; k < 3; ++k)
+          sum[k] += f.force[k];
+      return std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    }
+  } // namespace
+
+  HtmlReport::HtmlReport(const std::string &prm_path, const std::string &database_path,
+                         const std::string &output_directory)
+    : output_directory_(output_directory)
+    , chain_(chain::ChainParameters::read(prm_path))
+  {
+    require(database_path, "sweep");
+    require(output("stiffness/" + chain_label() + ".csv"), "reduce");
+    require(output("chain/validation_summary.csv"), "chain");
+    const auto database = data::ActuationDatabase::open(database_path);
+    design_             = database.design();
+    mesh_               = database.mesh();
+    for (const auto &id : database.sample_ids())
+      samples_.push_back(database.read_sample(id));
+  }
+
+  std::string HtmlReport::output(const std::string &relative) const
+  {
+    return output_directory_ + "/" + relative;
+  }
+
+  std::string HtmlReport::chain_label() const
+  {
+    return chain::StiffnessFiles::label(chain_.method, chain_.half_width_fraction);
+  }
+
+  void HtmlReport::png_figure(HtmlDocument &page, const std::string &relative,
+                              const std::string &caption) const
+  {
+    const std::string path = output(relative);
+    if (fs::exists(path))
+      page.figure(data_uri("image/png", read_bytes(path)), caption);
+    else
+      page.paragraph(caption + ": not drawn (" + path + " is missing: gnuplot not installed, or "
+                                                        "Plots = false in subsection Reduction).");
+  }
+
+  void HtmlReport::design_section(HtmlDocument &page) const
+  {
+    page.heading("1. The design");
+    page.table({"name", "element", "nodes", "cells", "design hash", "code version"},
+               {{design_.name, design_.element_type, std::to_string(mesh_.X.size()),
+                 std::to_string(mesh_.cells.size() / mesh_.nodes_per_cell) +
+                   (mesh_.nodes_per_cell == 4 ? " tetrahedra" : " hexahedra"),
+                 design_.design_hash, design_.code_version}});
+    page.paragraph("The design's .prm file, as stored in the database's /design record:");
+    page.preformatted(design_.parameters);
+  }
+
+  void HtmlReport::finger_section(HtmlDocument &page) const
+  {
+    page.heading("2. The deformed finger");
+    const SurfaceMesh surface(mesh_);
+    SvgFingerRenderer renderer(surface, mesh_.X);
+    const auto snapshots = pressure_snapshots(mesh_.X, samples_, {0.0, 40e3, 80e3});
+    for (const auto &snapshot : snapshots)
+      renderer.include(snapshot.x);
+    page.paragraph("The " + std::to_string(surface.faces().size()) +
+                   " boundary faces of the mesh (corner nodes; quadratic faces drawn flat) at the "
+                   "converged pressure-only samples nearest to 0, 40 and 80 kPa, over the rest "
+                   "shape in grey. Oblique parallel view from +z, above and toward the tip; the "
+                   "finger bends toward −y. All three pictures share one scale.");
+    for (const auto &snapshot : snapshots)
+      {
+        const std::string title = fmt(snapshot.pressure / 1e3) + " kPa" +
+                                  (snapshot.at_request ? "" : " (" + fmt(snapshot.requested / 1e3) +
+                                                                " kPa requested, see below)");
+        page.figure(data_uri("image/svg+xml", renderer.render(snapshot.x, title)), snapshot.caption);
+      }
+  }
+
+  void HtmlReport::stiffness_section(HtmlDocument &page) const
+  {
+    page.heading("3. Stiffness profiles (the paper's Fig. 5–7)");
+    png_figure(page, "stiffness/kphi_methods_and_b.png",
+               "Fig. 5c equivalent: k_φ along the finger at the largest load, every method and b");
+    png_figure(page, "stiffness/kpsi.png", "Fig. 5d equivalent: torsional stiffness k_ψ along the finger");
+    png_figure(page, "stiffness/ktheta.png", "Fig. 7 equivalent: lateral stiffness k_θ along the finger");
+    // One k_phi(x) plot per method and b, in file-name order.
+    std::set<std::string> labels;
+    const std::regex      table("(M[12]_b[0-9.]+a)\\.csv");
+    for (const auto &entry : fs::directory_iterator(output("stiffness")))
+      {
+        std::smatch      match;
+        const std::string name = entry.path().filename().string();
+        if (std::regex_match(name, match, table))
+          labels.insert(match[1]);
+      }
+    for (const auto &label : labels)
+      png_figure(page, "stiffness/" + label + "_kphi_vs_x.png",
+                 "Fig. 5a/5b/6 equivalent: k_φ along the finger, one curve per pressure (" + label + ")");
+    page.paragraph("The chain's stiffness table, stiffness/" + chain_label() +
+                   ".csv (k in N m/rad, positions in m; nan: no value, e.g. a joint in the solid base):");
+    page.table(data::CsvTable::read(output("stiffness/" + chain_label() + ".csv")));
+  }
+
+  void HtmlReport::validation_section(HtmlDocument &page) const
+  {
+    page.heading("4. Chain against FEM");
+    const auto summary = data::CsvTable::read(output("chain/validation_summary.csv"));
+    page.paragraph("chain/validation_summary.csv: tip position errors (mm and % of the length L) "
+                   "and tip orientation errors per model and sample role.");
+    page.table(summary);
+    png_figure(page, "chain/validation.png", "Chain and baseline tip poses against the FEM's");
+    // Each model against the beam-theory baseline on the same roles.
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t r = 0; r < summary.n_rows(); ++r)
+      for (std::size_t b = 0; b < summary.n_rows(); ++b)
+        if (summary.text(r, "model") != "baseline" && summary.text(b, "model") == "baseline" &&
+            summary.text(b, "roles") == summary.text(r, "roles"))
+          {
+            const double mean = summary.number(r, "mean_tip_error_percent_L"),
+                         max  = summary.number(r, "max_tip_error_percent_L"),
+                         base_mean = summary.number(b, "mean_tip_error_percent_L"),
+                         base_max  = summary.number(b, "max_tip_error_percent_L");
+            rows.push_back({summary.text(r, "model"), summary.text(r, "roles"), fmt(mean), fmt(base_mean),
+                            fmt(base_mean / mean), fmt(max), fmt(base_max), fmt(base_max / max)});
+          }
+    page.heading("Baseline comparison", 3);
+    page.paragraph("Tip position errors in % of L; a ratio is the baseline's error over the chain's "
+                   "(how many times more accurate the chain is).");
+    page.table({"model", "roles", "mean", "baseline mean", "ratio of means", "max", "baseline max",
+                "ratio of maxima"},
+               rows);
+  }
+
+  void HtmlReport::timing_section(HtmlDocument &page) const
+  {
+    page.heading("5. Run times");
+    if (stage_times_)
+      {
+        std::vector<std::vector<std::string>> rows;
+        for (const auto &stage : *stage_times_)
+          rows.push_back({stage.name, fmt(stage.seconds)});
+        page.table({"stage of softchain run", "wall time [s]"}, rows);
+      }
+    else
+      page.paragraph("Stage times: not measured in this run (`softchain report` rebuilt the report "
+                     "from existing outputs; `softchain run` measures them).");
+    std::vector<std::vector<std::string>> rows;
+    double                                total = 0;
+    for (const auto &s : samples_)
+      {
+        total += s.wall_time;
+        rows.push_back({s.id, s.actuation.role, fmt(s.actuation.pressure / 1e3),
+                        fmt(force_norm(s.actuation)), s.status, s.reason, std::to_string(s.load_steps),
+                        std::to_string(s.newton_iterations), fmt(s.wall_time)});
+      }
+    page.paragraph("FEM samples in the database (wall time of the solve that stored each; " +
+                   fmt(total) + " s in all):");
+    page.table({"sample", "role", "pressure [kPa]", "|force| [N]", "status", "reason", "load steps",
+                "Newton iterations", "wall time [s]"},
+               rows);
+  }
+
+  void HtmlReport::claims_section(HtmlDocument &page) const
+  {
+    page.heading("6. The paper's claims (Sec. IV-A, V)");
+    int extraction = 0;
+    for (const auto &s : samples_)
+      extraction += s.converged() && s.actuation.role != "validation";
+    const PaperClaims claims({design_.name, output_directory_, chain_.method,
+                              chain_.half_width_fraction, extraction});
+    std::ostringstream html;
+    html << "<table>\n<tr><th>#</th><th>claim and criterion</th><th>verdict</th><th>measured</th></tr>\n";
+    for (const auto &c : claims.claims())
+      html << "<tr><td>" << c.number << "</td><td style=\"text-align:left\">"
+           << HtmlDocument::escape(c.statement) << "</td><td class=\""
+           << (c.verdict == Verdict::holds ? "holds" : c.verdict == Verdict::does_not_hold ? "fails" : "unknown")
+           << "\">" << verdict_text(c.verdict) << "</td><td style=\"text-align:left\">"
+           << HtmlDocument::escape(c.measured) << "</td></tr>\n";
+    html << "</table>\n";
+    page.raw(html.str());
+  }
+
+  std::string HtmlReport::html() const
+  {
+    HtmlDocument page("SoftChain report: " + design_.name);
+    design_section(page);
+    finger_section(page);
+    stiffness_section(page);
+    validation_section(page);
+    timing_section(page);
+    claims_section(page);
+    return page.str();
+  }
+} // namespace softchain::report
