@@ -1,0 +1,77 @@
+// HtmlReport on a hand-made output directory: every section, the images as
+// data: URIs, the stage times, the captions of missing pressures, bad input.
+#include <softchain/data/input_error.h>
+#include <softchain/report/base64.h>
+#include <softchain/report/html_report.h>
+
+#include <catch2/catch.hpp>
+
+#include "synthetic_outputs.h"
+
+#include <filesystem>
+
+using namespace softchain::report;
+using softchain::report::testing::SyntheticOutputs;
+
+namespace
+{
+  std::size_t count(const std::string &text, const std::string &what)
+  {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+      ++n;
+    return n;
+  }
+} // namespace
+
+TEST_CASE("Base64 of the RFC 4648 test vectors")
+{
+  const std::pair<const char *, const char *> vectors[] = {
+    {"", ""}, {"f", "Zg=="}, {"fo", "Zm8="}, {"foo", "Zm9v"}, {"foob", "Zm9vYg=="}, {"foobar", "Zm9vYmFy"}};
+  for (const auto &[text, encoded] : vectors)
+    CHECK(base64(text) == encoded);
+  CHECK(base64(std::string("\xff\x00", 2)) == "/wA=");
+}
+
+TEST_CASE("The report holds every section, its pictures and its tables")
+{
+  const SyntheticOutputs outputs("report_sections");
+  std::ofstream(outputs.file("stiffness/kpsi.png")) << "not really a PNG";
+  const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
+  for (const char *section : {"1. The design", "2. The deformed finger", "3. Stiffness profiles",
+                              "4. Chain against FEM", "Baseline comparison", "5. Run times",
+                              "6. The paper's claims"})
+    CHECK(html.find(section) != std::string::npos);
+  CHECK(html.find("set Name = a&lt;b") != std::string::npos); // the .prm, escaped
+  CHECK(count(html, "<img src=\"data:image/svg+xml;base64,") == 3); // 0, 40, 80 kPa
+  CHECK(html.find(data_uri("image/png", "not really a PNG")) != std::string::npos);
+  CHECK(html.find("ktheta.png is missing") != std::string::npos); // said, not broken
+  // 80 kPa is beyond the converged 40 kPa; the failed 60 kPa sample is named.
+  CHECK(html.find("shown: the highest converged pressure, 40 kPa") != std::string::npos);
+  CHECK(html.find("at 60 kPa: limit point at p = 55000 Pa") != std::string::npos);
+  // Baseline 40 % against the chain's 4 %: 10 times more accurate.
+  CHECK(html.find("<td>40</td><td>10</td>") != std::string::npos);
+  CHECK(html.find("not measured in this run") != std::string::npos);
+  CHECK(count(html, "<td>1.25</td>") == 2); // both samples' wall times
+}
+
+TEST_CASE("The stage times of softchain run replace the 'not measured' line")
+{
+  const SyntheticOutputs outputs("report_stage_times");
+  HtmlReport             report(outputs.prm(), outputs.database(), outputs.directory());
+  report.set_stage_times({{"FEM sample sweep", 12.5}, {"reduction", 0.25}});
+  const std::string html = report.html();
+  CHECK(html.find("<td>FEM sample sweep</td><td>12.5</td>") != std::string::npos);
+  CHECK(html.find("not measured in this run") == std::string::npos);
+}
+
+TEST_CASE("A missing input is an error naming the file")
+{
+  const SyntheticOutputs outputs("report_missing");
+  for (const std::string missing : {"chain/validation_summary.csv", "stiffness/M2_b0.50a.csv", "database.h5"})
+    {
+      std::filesystem::remove(outputs.file(missing));
+      CHECK_THROWS_WITH(HtmlReport(outputs.prm(), outputs.database(), outputs.directory()),
+                        Catch::Contains(outputs.file(missing)));
+    }
+}
