@@ -14,8 +14,9 @@ namespace softchain::chain
       section.declare("Interpolate k_phi in pressure", "true",
                       "k_phi and J_p follow their pressure tables");
       section.declare("Missing stiffness", "rigid",
-                      "a joint axis whose k is NaN in the CSV (no usable sample, e.g. a joint "
-                      "in the solid base fill): rigid (held, k = 1e6 x the largest) or error");
+                      "a joint axis whose k is NaN or not positive in the CSV (no usable sample, "
+                      "e.g. a joint in the solid base fill, or a torque opposite to the "
+                      "rotation): rigid (held, k = 1e6 x the largest) or error");
       section.declare("Validation roles", "validation, pressure",
                       "roles of the database samples compared with the chain");
       section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");

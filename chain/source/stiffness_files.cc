@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 namespace softchain::chain
 {
@@ -44,13 +45,30 @@ namespace softchain::chain
       return static_cast<int>(joint) - 1;
     }
 
-    double positive_stiffness(const CsvTable &table, const std::string &path, std::size_t row,
-                              const std::string &column)
+    std::string number_text(const double v)
+    {
+      std::ostringstream text;
+      text << v;
+      return text.str();
+    }
+
+    // A usable stiffness is positive and finite. NaN (no usable sample) and
+    // k <= 0 (e.g. a pressure torque opposite to the bending at a joint near
+    // the base, or too few samples) are not: the caller holds such a joint
+    // rigid or reports it.
+    bool usable(const double k)
+    {
+      return std::isfinite(k) && k > 0.0;
+    }
+
+    // NaN or a finite number; an infinite k is an input error.
+    double stiffness_entry(const CsvTable &table, const std::string &path, std::size_t row,
+                           const std::string &column)
     {
       const double k = table.number(row, column);
-      if (!(std::isfinite(k) && k > 0.0))
+      if (std::isinf(k))
         throw InputError(where(path, row) + column + " = " + table.text(row, column) +
-                         " is not a positive finite stiffness");
+                         " is not a finite stiffness");
       return k;
     }
 
@@ -95,10 +113,11 @@ namespace softchain::chain
       std::vector<Eigen::Vector3d> stiffness;
     };
 
-    // A joint axis without a stiffness (NaN: no usable sample, e.g. a joint in
-    // the solid base fill that transmits no pressure torque) is held rigid,
-    // k = 1e6 x the largest stiffness of that axis, with a warning. An axis
-    // with no stiffness at any joint is an error (no sample fed it).
+    // A joint axis without a usable stiffness (NaN: no usable sample, e.g. a
+    // joint in the solid base fill that transmits no pressure torque; or
+    // k <= 0) is held rigid, k = 1e6 x the largest stiffness of that axis,
+    // with a warning. An axis with no usable stiffness at any joint is an
+    // error (no sample fed it).
     void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
                                   const std::vector<std::string> &columns, const bool rigid)
     {
@@ -106,24 +125,25 @@ namespace softchain::chain
         {
           double largest = 0;
           for (const auto &k : stiffness)
-            if (std::isfinite(k[axis]))
+            if (usable(k[axis]))
               largest = std::max(largest, k[axis]);
           if (largest == 0)
             throw InputError(path + ": " + columns[axis] +
-                             " has no value at any joint (the reduction had no usable sample "
-                             "for this axis)");
+                             " has no positive value at any joint (the reduction had no usable "
+                             "sample for this axis)");
           for (std::size_t joint = 0; joint < stiffness.size(); ++joint)
-            if (std::isnan(stiffness[joint][axis]))
+            if (!usable(stiffness[joint][axis]))
               {
+                const std::string what = columns[axis] + " = " + number_text(stiffness[joint][axis]);
                 if (!rigid)
-                  throw InputError(where(path, joint) + columns[axis] +
-                                   " = nan is not a positive finite stiffness (the reduction had "
-                                   "no usable sample for this axis; Chain/Missing stiffness = rigid "
-                                   "holds such joints rigid)");
+                  throw InputError(where(path, joint) + what +
+                                   " is not a positive finite stiffness (no usable sample, or "
+                                   "a torque opposite to the rotation; Chain/Missing stiffness = "
+                                   "rigid holds such joints rigid)");
                 stiffness[joint][axis] = 1e6 * largest;
-                std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": no "
-                          << columns[axis] << " (no usable sample); the joint is held rigid about "
-                          << "this axis\n";
+                std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": " << what
+                          << " is not a positive stiffness; the joint is held rigid about this "
+                             "axis\n";
               }
         }
     }
@@ -153,29 +173,40 @@ namespace softchain::chain
             throw InputError(where(path, row) + "Jx must increase from joint to joint");
           Eigen::Vector3d k;
           for (int axis = 0; axis < 3; ++axis)
-            k[axis] = std::isnan(table.number(row, k_columns[axis])) ?
-                        NAN :
-                        positive_stiffness(table, path, row, k_columns[axis]);
+            k[axis] = stiffness_entry(table, path, row, k_columns[axis]);
           result.stiffness.push_back(k);
         }
       hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
       return result;
     }
 
-    // k_phi(p) per joint; a joint without any value keeps `fallback` (its
-    // rigid k_phi from the stiffness table).
+    // k_phi(p) per joint from its usable values (see usable()); a joint
+    // without any keeps `fallback` (its k_phi from the stiffness table, rigid
+    // if that was not usable either). A non-positive value is skipped with a
+    // warning when `rigid`, else an input error.
     std::vector<PiecewiseLinear> read_bending_in_pressure(const std::string &path, int n,
-                                                          const std::vector<Eigen::Vector3d> &fallback)
+                                                          const std::vector<Eigen::Vector3d> &fallback,
+                                                          const bool rigid)
     {
       const CsvTable table = read_table(path, {"pressure", "joint", "k_phi"});
       std::vector<std::map<double, double>> per_joint(n);
       for (std::size_t row = 0; row < table.n_rows(); ++row)
         {
-          const int joint = joint_index(table, path, row, n);
-          if (std::isnan(table.number(row, "k_phi")))
+          const int    joint = joint_index(table, path, row, n);
+          const double k     = stiffness_entry(table, path, row, "k_phi");
+          if (std::isnan(k))
             continue; // no value at this pressure (rotation below threshold)
-          insert_consistent(per_joint[joint], finite_number(table, path, row, "pressure"),
-                      positive_stiffness(table, path, row, "k_phi"), path, row);
+          if (!usable(k))
+            {
+              if (!rigid)
+                throw InputError(where(path, row) + "k_phi = " + table.text(row, "k_phi") +
+                                 " is not a positive finite stiffness");
+              std::cerr << "chain: warning: " << where(path, row) << "k_phi = "
+                        << table.text(row, "k_phi") << " is not positive; skipped\n";
+              continue;
+            }
+          insert_consistent(per_joint[joint], finite_number(table, path, row, "pressure"), k,
+                            path, row);
         }
       std::vector<PiecewiseLinear> result;
       for (int i = 0; i < n; ++i)
@@ -249,7 +280,7 @@ namespace softchain::chain
     JointStiffness stiffness(table.stiffness);
     if (in_pressure)
       stiffness.set_bending_in_pressure(
-        read_bending_in_pressure(bending_in_pressure_path_, n, table.stiffness));
+        read_bending_in_pressure(bending_in_pressure_path_, n, table.stiffness, rigid_where_missing));
     return ChainModel(name, KinematicChain(std::move(table.joint_centres), tip),
                       std::move(stiffness),
                       actuation_from(read_pressure_torque(pressure_torque_path_, n), in_pressure));

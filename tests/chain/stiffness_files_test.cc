@@ -113,6 +113,28 @@ TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
     }
 }
 
+TEST_CASE("a joint with a negative stiffness is held rigid like one without")
+{
+  // E.g. P10 reduced from only 5 and 10 kPa: at joint 2, next to the base
+  // fill, the pressure torque about the bounding-box centre opposes the
+  // bending and the reduction writes k_phi < 0.
+  softchain::testing::ScratchDirectory dir("chain_negative_joint");
+  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const UniformReduction               r;
+  testing::write_reduction(files, r);
+  set_row_field(files.stiffness_path(), "1", 7, "-0.02");
+  for (const char *pressure : {"40000", "80000"})
+    set_row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "-0.02");
+  // Joint 2: negative at 40 kPa only, so its k_phi(p) keeps the 80 kPa value.
+  set_row_field(files.bending_in_pressure_path(), "40000,2", 2, "-0.01");
+  const ChainModel model = files.read_model("M2", tip, "value", true);
+  CHECK(model.stiffness().diagonal(r.p_max)[2] == Approx(1e6 * r.k[2]).epsilon(1e-12));
+  CHECK(model.stiffness().diagonal(0.0)[5] == Approx((1 - r.k_phi_drop) * r.k[2]).epsilon(1e-12));
+  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true, false),
+                    Catch::Contains(files.stiffness_path() + ", row 1") &&
+                      Catch::Contains("k_phi = -0.02"));
+}
+
 TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
 {
   softchain::testing::ScratchDirectory dir("chain_stiffness_files");
@@ -166,19 +188,38 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     rewrite_stiffness(files, [](std::string &t) { replace(t, "\n3,", "\n4,"); });
     CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 3") && Catch::Contains("expected joint 3"));
   }
-  SECTION("a negative stiffness")
+  SECTION("a negative stiffness: an error with Missing stiffness = error, else rigid")
   {
+    set_row_field(path, "1", 6, "-0.05"); // joint 1, k_theta
+    try
+      {
+        files.read_model("M1", tip, "value", true, false);
+        FAIL("no error");
+      }
+    catch (const InputError &e)
+      {
+        CHECK_THAT(e.what(), Catch::Contains(path + ", row 1") && Catch::Contains("k_theta = -0.05"));
+      }
+    CHECK(error_of("value") == "no error");
+    // No positive k_theta at any joint: nothing to scale a rigid joint by.
     UniformReduction r;
     r.k[1] = -0.05;
     testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 1") && Catch::Contains("k_theta = -0.05"));
+    CHECK_THAT(error_of("value"), Catch::Contains(path) && Catch::Contains("k_theta has no positive value at any joint"));
+  }
+  SECTION("an infinite stiffness")
+  {
+    UniformReduction r;
+    r.k[0] = INFINITY;
+    testing::stiffness_table(r).write(path);
+    CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 1") && Catch::Contains("not a finite stiffness"));
   }
   SECTION("no stiffness about an axis at any joint")
   {
     UniformReduction r;
     r.k_fit[0] = NAN;
     testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("k_psi_fit has no value at any joint"));
+    CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("k_psi_fit has no positive value at any joint"));
   }
   SECTION("a missing column")
   {

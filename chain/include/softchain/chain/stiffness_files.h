@@ -34,9 +34,9 @@ namespace softchain::chain
 
     // The chain of these files with the given tip point. `column` is "value"
     // (k at the largest load) or "fit" (least-squares over the load set);
-    // `in_pressure` makes k_phi and J_p follow their pressure tables. A NaN
-    // k at some joints holds them rigid (`rigid_where_missing`) or is an
-    // InputError.
+    // `in_pressure` makes k_phi and J_p follow their pressure tables. A k
+    // that is NaN or not positive at some joints holds them rigid
+    // (`rigid_where_missing`) or is an InputError.
     ChainModel read_model(const std::string &name, const Eigen::Vector3d &tip,
                           const std::string &column, bool in_pressure,
                           bool rigid_where_missing = true) const;
