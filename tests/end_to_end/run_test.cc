@@ -29,7 +29,7 @@ TEST_CASE("softchain run goes from the .prm to the stiffness and validation tabl
   const auto outcome = design.run("run");
   INFO(outcome.output);
   CHECK(outcome.status == 0);
-  for (const char *stage : {"stage 1/3", "stage 2/3", "stage 3/3"})
+  for (const char *stage : {"stage 1/4", "stage 2/4", "stage 3/4", "stage 4/4"})
     CHECK(outcome.output.find(std::string(stage) + ": ") != std::string::npos);
   const std::string stiffness  = design.output() + "/stiffness/M2_b1.00a.csv";
   const std::string validation = design.output() + "/chain/validation.csv";
