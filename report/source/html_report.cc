@@ -8,12 +8,14 @@
 #include <softchain/report/surface_mesh.h>
 #include <softchain/report/svg_finger_renderer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace softchain::report
 {
@@ -46,13 +48,14 @@ namespace softchain::report
                                "`; run it, or `softchain run`, first)");
     }
 
-    double force_norm(const data::Actuation &actuation)
+    // The largest point force [N]: the tip force of a lateral sample, each
+    // force of a torsion couple (whose sum is zero).
+    double largest_force(const data::Actuation &actuation)
     {
-      double sum[3] = {0, 0, 0};
+      double largest = 0;
       for (const auto &f : actuation.point_forces)
-        for (int k = 0; k < 3; ++k)
-          sum[k] += f.force[k];
-      return std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+        largest = std::max(largest, std::hypot(f.force[0], f.force[1], f.force[2]));
+      return largest;
     }
   } // namespace
 
@@ -194,18 +197,27 @@ namespace softchain::report
     else
       page.paragraph("Stage times: not measured in this run (`softchain report` rebuilt the report "
                      "from existing outputs; `softchain run` measures them).");
+    // By role, then load, as the .prm lists them.
+    std::vector<const data::SampleRecord *> sorted;
+    for (const auto &s : samples_)
+      sorted.push_back(&s);
+    std::sort(sorted.begin(), sorted.end(), [](const auto *a, const auto *b) {
+      return std::make_tuple(a->actuation.role, a->actuation.pressure, largest_force(a->actuation)) <
+             std::make_tuple(b->actuation.role, b->actuation.pressure, largest_force(b->actuation));
+    });
     std::vector<std::vector<std::string>> rows;
     double                                total = 0;
-    for (const auto &s : samples_)
+    for (const auto *sample : sorted)
       {
+        const data::SampleRecord &s = *sample;
         total += s.wall_time;
         rows.push_back({s.id, s.actuation.role, fmt(s.actuation.pressure / 1e3),
-                        fmt(force_norm(s.actuation)), s.status, s.reason, std::to_string(s.load_steps),
+                        fmt(largest_force(s.actuation)), s.status, s.reason, std::to_string(s.load_steps),
                         std::to_string(s.newton_iterations), fmt(s.wall_time)});
       }
     page.paragraph("FEM samples in the database (wall time of the solve that stored each; " +
                    fmt(total) + " s in all):");
-    page.table({"sample", "role", "pressure [kPa]", "|force| [N]", "status", "reason", "load steps",
+    page.table({"sample", "role", "pressure [kPa]", "largest |force| [N]", "status", "reason", "load steps",
                 "Newton iterations", "wall time [s]"},
                rows);
   }
