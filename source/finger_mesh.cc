@@ -1,11 +1,13 @@
 #include <softchain/boundary_ids.h>
 #include <softchain/built_in_bender.h>
+#include <softchain/cell_orientation.h>
 #include <softchain/data/input_error.h>
 #include <softchain/finger_mesh.h>
 #include <softchain/geometry/generate_design.h>
 #include <softchain/geometry/spring_network_file.h>
 
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <fstream>
 #include <map>
@@ -107,20 +109,26 @@ namespace softchain
   void FingerMesh::build(const Parameters &prm, FingerMesh &mesh)
   {
     if (prm.mesh.source == "built-in bender")
+      BuiltInBender(prm).build(mesh);
+    else
       {
-        BuiltInBender(prm).build(mesh);
-        return;
+        std::string mesh_file = prm.mesh.mesh_file, spring_file = prm.mesh.spring_file;
+        if (prm.mesh.source == "finger design")
+          {
+            const auto design = geometry::generate_design(prm.file, ".cache/meshes");
+            mesh_file         = design.mesh_file;
+            spring_file       = design.spring_file;
+          }
+        read_gmsh_mesh(mesh_file, mesh);
+        mesh.triangulation.refine_global(prm.mesh.global_refinements);
+        mesh.springs = spring_file.empty() ? std::vector<SpringPolyline>() : read_springs(spring_file);
+        mesh.description = mesh_file;
       }
-    std::string mesh_file = prm.mesh.mesh_file, spring_file = prm.mesh.spring_file;
-    if (prm.mesh.source == "finger design")
-      {
-        const auto design = geometry::generate_design(prm.file, ".cache/meshes");
-        mesh_file         = design.mesh_file;
-        spring_file       = design.spring_file;
-      }
-    read_gmsh_mesh(mesh_file, mesh);
-    mesh.triangulation.refine_global(prm.mesh.global_refinements);
-    mesh.springs     = spring_file.empty() ? std::vector<SpringPolyline>() : read_springs(spring_file);
-    mesh.description = mesh_file;
+    if (prm.mesh.node_jitter > 0) // boundary nodes stay: the shape is kept
+      GridTools::distort_random(prm.mesh.node_jitter, mesh.triangulation, true);
+    check_cell_orientation(mesh.triangulation, prm.file + ": the mesh (" + mesh.description +
+                                                 (prm.mesh.node_jitter > 0 ? ", Mesh/Node jitter = " +
+                                                    std::to_string(prm.mesh.node_jitter) : "") +
+                                                 ")");
   }
 } // namespace softchain

@@ -105,6 +105,10 @@ namespace softchain
                       "Q1/Q2 hexahedra, P1/P2 tetrahedra. Linear elements lock "
                       "at nu = 0.48.");
     prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 4));
+    prm.declare_entry("Node jitter", "0", Patterns::Double(0, 1),
+                      "Stress test: move every interior node randomly (seeded) by up to "
+                      "this fraction of its shortest edge; 0 = off. Cells inverted by it "
+                      "are refused.");
     prm.declare_entry("Bender length", "0.08", Patterns::Double(0));
     prm.declare_entry("Bender width", "0.018", Patterns::Double(0));
     prm.declare_entry("Bender height", "0.012", Patterns::Double(0));
@@ -121,6 +125,7 @@ namespace softchain
     spring_file         = prm.get("Spring file");
     element_type        = prm.get("Element type");
     global_refinements  = prm.get_integer("Global refinements");
+    node_jitter         = prm.get_double("Node jitter");
     bender_length       = prm.get_double("Bender length");
     bender_width        = prm.get_double("Bender width");
     bender_height       = prm.get_double("Bender height");

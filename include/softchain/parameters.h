@@ -31,6 +31,7 @@ namespace softchain
     std::string  spring_file;  // spring polylines (optional)
     std::string  element_type; // Q1 | Q2 | P1 | P2
     unsigned int global_refinements = 0;
+    double       node_jitter        = 0; // fraction of the shortest edge (stress test)
     // The built-in hollow bender (length, width, height, wall, cells per mm).
     double       bender_length = 0.08, bender_width = 0.018,
            bender_height = 0.012, bender_wall = 0.002;
