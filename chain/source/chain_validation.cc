@@ -99,10 +99,10 @@ namespace softchain::chain
       }
   }
 
-  int ChainValidation::n_failed() const
+  int ChainValidation::n_failed(const std::string &model) const
   {
-    return static_cast<int>(std::count_if(records_.begin(), records_.end(), [](const auto &r) {
-      return r.status != "converged";
+    return static_cast<int>(std::count_if(records_.begin(), records_.end(), [&](const auto &r) {
+      return r.model == model && r.status != "converged";
     }));
   }
 

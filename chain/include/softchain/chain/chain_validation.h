@@ -39,7 +39,7 @@ namespace softchain::chain
     void compare(const ChainModel &model, const EquilibriumSettings &settings);
 
     const std::vector<ValidationRecord> &records() const { return records_; }
-    int                                  n_failed() const;
+    int                                  n_failed(const std::string &model) const;
     data::CsvTable                       per_sample_table() const;
     data::CsvTable                       summary_table() const;
     // The FEM tip pose of every sample: position [mm] and the tip bending
