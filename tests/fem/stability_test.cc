@@ -145,3 +145,34 @@ TEST_CASE("a mesh with 20 % random node jitter converges close to the regular me
   // 3 cells across: ~1 %, cantilever_test.cc), so 0.5 % is asserted.
   CHECK(jittered == Approx(regular).epsilon(0.005));
 }
+
+TEST_CASE("Poisson's ratio from 0.45 to 0.4999: converged, and the linear hexahedra lock",
+          "[fem][stability]")
+{
+  // The demo bender (Q1, 4 cells) at 10 kPa. As nu -> 1/2 the bulk modulus
+  // grows 500x (kappa / mu = 2 (1 + nu) / (3 (1 - 2 nu)): 9.7 at 0.45,
+  // 5e3 at 0.4999), the tangent's condition number with it; Newton must
+  // still converge. Q1 locks volumetrically, so its deflection must fall
+  // as nu grows (the quadratic elements' behaviour is benchmarks/poisson_sweep).
+  double previous = -1.0;
+  for (const double nu : {0.45, 0.48, 0.49, 0.499, 0.4999})
+    {
+      test::SolverFixture f(test::parameters_from_text(
+        "poisson", test::bender_prm("Q1", 4,
+                                    "subsection Materials\n  subsection silicone\n"
+                                    "    set Poisson's ratio = " + std::to_string(nu) +
+                                      "\n  end\nend\n")));
+      LoadState load;
+      load.pressure     = 1e4;
+      const auto result = f.solver->solve(load);
+      INFO("nu = " << nu << ": " << result.reason);
+      REQUIRE(result.converged);
+      const double deflection = -tip_uy(*f.solver);
+      WARN("nu = " << nu << ": tip u_y = " << -deflection << " m, " << result.load_steps
+                   << " load steps, " << result.newton_iterations << " Newton iterations");
+      CHECK(deflection > 0);
+      if (previous > 0)
+        CHECK(deflection < previous);
+      previous = deflection;
+    }
+}
