@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 
 using softchain::testing::TinyDesign;
@@ -37,4 +38,37 @@ TEST_CASE("softchain run goes from the .prm to the stiffness and validation tabl
   REQUIRE(std::filesystem::exists(validation));
   CHECK(outcome.output.find(validation) != std::string::npos); // listed at the end
   CHECK(outcome.output.find("outputs:") != std::string::npos);
+}
+
+TEST_CASE("tiny loads (1 Pa, 1e-5 N) give no stiffness rather than garbage")
+{
+  // Issue 7: at 1 Pa and 1e-5 N the joint rotations are ~1e-6 rad, far below
+  // the default Reduction/Rotation threshold (0.1 degree = 1.7e-3 rad), where
+  // k = tau / phi would divide round-off by round-off. Every stiffness must
+  // come out NaN ("no value"), counted in a warning, never inf or a number.
+  TinyDesign design("tiny_loads",
+                    "set Pressure sweep = 1\n"
+                    "set Lateral tip forces = 1e-5\n"
+                    "set Torsion couples = 1e-5",
+                    "subsection Springs\n  set Generate for bender = true\n"
+                    "  set Axial rigidity = fabric: 2000, thread: 500\nend\n"
+                    "subsection Reduction\n  set Joint spacing = 0.02\n"
+                    "  set Slab half-widths = 1\n  set Plots = false\nend\n");
+  REQUIRE(design.run("sweep").status == 0);
+  const auto outcome = design.run("reduce");
+  INFO(outcome.output);
+  CHECK(outcome.status == 0);
+  CHECK(outcome.output.find("below Reduction/Rotation threshold") != std::string::npos);
+  for (const char *method : {"M1", "M2"})
+    {
+      const auto table =
+        softchain::data::CsvTable::read(design.output() + "/stiffness/" + method + "_b1.00a.csv");
+      REQUIRE(table.n_rows() == 4); // joints at 1, 3, 5, 7 cm of the 8 cm bender
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        for (const char *k : {"k_psi", "k_theta", "k_phi", "k_psi_fit", "k_theta_fit", "k_phi_fit"})
+          {
+            INFO(method << " joint " << row + 1 << " " << k << " = " << table.text(row, k));
+            CHECK(std::isnan(table.number(row, k)));
+          }
+    }
 }
