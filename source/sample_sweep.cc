@@ -239,23 +239,31 @@ namespace softchain
     return mine;
   }
 
-  // The nearest converged sample before `sample` in its chain, or nullptr
-  // (start from rest).
-  const data::SampleRecord *SampleSweep::start_of(const std::size_t sample,
-                                                  const Records    &known) const
+  // The records of the samples before `sample` in its chain, nearest first.
+  std::vector<const data::SampleRecord *> SampleSweep::known_before(const std::size_t sample,
+                                                                    const Records    &known) const
   {
+    std::vector<const data::SampleRecord *> before;
     for (const auto &chain : set.chains)
       {
         const auto at = std::find(chain.begin(), chain.end(), sample);
         if (at == chain.end())
           continue;
-        for (auto before = std::make_reverse_iterator(at); before != chain.rend(); ++before)
-          {
-            const auto record = known.find(*before);
-            if (record != known.end() && record->second.converged())
-              return &record->second;
-          }
+        for (auto k = std::make_reverse_iterator(at); k != chain.rend(); ++k)
+          if (const auto record = known.find(*k); record != known.end())
+            before.push_back(&record->second);
       }
+    return before;
+  }
+
+  // The nearest converged sample before `sample` in its chain, or nullptr
+  // (start from rest).
+  const data::SampleRecord *SampleSweep::start_of(const std::size_t sample,
+                                                  const Records    &known) const
+  {
+    for (const auto *record : known_before(sample, known))
+      if (record->converged())
+        return record;
     return nullptr;
   }
 
@@ -264,22 +272,11 @@ namespace softchain
   const data::SampleRecord *SampleSweep::stopped_before(const std::size_t sample,
                                                         const Records    &known) const
   {
-    for (const auto &chain : set.chains)
-      {
-        const auto at = std::find(chain.begin(), chain.end(), sample);
-        if (at == chain.end())
-          continue;
-        for (auto before = std::make_reverse_iterator(at); before != chain.rend(); ++before)
-          {
-            const auto record = known.find(*before);
-            if (record != known.end())
-              return !record->second.converged() &&
-                         record->second.reason.find("limit point") != std::string::npos ?
-                       &record->second :
-                       nullptr;
-          }
-      }
-    return nullptr;
+    const auto before = known_before(sample, known);
+    return !before.empty() && !before.front()->converged() &&
+               before.front()->reason.find("limit point") != std::string::npos ?
+             before.front() :
+             nullptr;
   }
 
   // A chain loads proportionally, so a sample further along it than a limit

@@ -61,6 +61,7 @@ namespace softchain
                                           Records &known, SweepProgress &progress) const;
     std::vector<std::size_t> share_of(const std::vector<std::size_t> &pending, unsigned int group,
                                       unsigned int n_groups) const;
+    std::vector<const data::SampleRecord *> known_before(std::size_t sample, const Records &known) const;
     const data::SampleRecord *start_of(std::size_t sample, const Records &known) const;
     const data::SampleRecord *stopped_before(std::size_t sample, const Records &known) const;
     data::SampleRecord        beyond_limit_point(std::size_t sample, const data::SampleRecord &stop) const;
