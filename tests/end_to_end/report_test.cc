@@ -76,18 +76,9 @@ namespace
 
 TEST_CASE("softchain run writes a report whose every image loads in headless Chromium")
 {
-  // The samples and reduction of run_test.cc (a few seconds of solves),
-  // with the gnuplot plots on so that the report embeds PNGs too.
-  TinyDesign design("report_pipeline",
-                    "set Pressure sweep = 1e3, 2e3, 3e3\n"
-                    "set Lateral tip forces = 0.005, 0.01\n"
-                    "set Torsion couples = 0.005, 0.01\n"
-                    "set Validation samples = 2e3 : tip : 0,0,0.005",
-                    "subsection Springs\n  set Generate for bender = true\n"
-                    "  set Axial rigidity = fabric: 2000, thread: 500\nend\n"
-                    "subsection Reduction\n  set Joint spacing = 0.02\n"
-                    "  set Slab half-widths = 1\n  set Rotation threshold = 1e-6\nend\n"
-                    "subsection Chain\n  set Slab half-width = 1\nend\n");
+  // The tiny pipeline of run_test.cc, with the gnuplot plots on so that the
+  // report embeds PNGs too.
+  const TinyDesign design = softchain::testing::pipeline_design("report_pipeline", true);
   const auto outcome = design.run("run");
   INFO(outcome.output);
   REQUIRE(outcome.status == 0);

@@ -39,6 +39,14 @@ namespace softchain::testing
     ScratchDirectory dir;
   };
 
+  // A tiny design for `softchain run` (a few seconds of solves): pressure,
+  // lateral, torsion and validation samples; the fabric springs, so that
+  // pressure bends it; joints 2 cm apart and b = a, so that every slab holds
+  // several node planes of the 4-cell mesh (planes 19 mm apart); a rotation
+  // threshold lowered below the small loads' rotations (~1e-4 rad).
+  // `plots`: the reduction's gnuplot PNGs.
+  TinyDesign pipeline_design(const std::string &name, bool plots);
+
   // The first difference between the stored samples of a and b, comparing
   // everything but the wall times bit for bit; "" if there is none.
   std::string sample_difference(const data::ActuationDatabase &a, const data::ActuationDatabase &b);
