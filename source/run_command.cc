@@ -6,6 +6,7 @@
 // rank 0.
 #include <softchain/chain/chain_run.h>
 #include <softchain/commands.h>
+#include <softchain/data/input_error.h>
 #include <softchain/reduction/reduction_run.h>
 #include <softchain/report/report_run.h>
 #include <softchain/sample_sweep.h>
@@ -124,9 +125,17 @@ namespace softchain
     const std::string directory = fs::path(database).parent_path().string();
     stage(out, 2, "reduction", times,
           [&] { return reduction::run_reduction(prm_file, database, directory); });
-    const int chained =
-      stage(out, 3, "chain validation", times,
-            [&] { return chain::run_chain(prm_file, database, directory, false); });
+    const int chained = stage(out, 3, "chain validation", times, [&] {
+      try
+        {
+          return chain::run_chain(prm_file, database, directory, false);
+        }
+      catch (const data::InputError &e) // e.g. no usable stiffness: still write the report
+        {
+          std::cerr << "softchain: chain validation: " << e.what() << '\n';
+          return 1;
+        }
+    });
     // The report's own time cannot be in the report: it lists stages 1-3.
     stage(out, 4, "report", times,
           [&] { return report::run_report(prm_file, database, directory, times); });

@@ -116,21 +116,37 @@ namespace softchain::chain
     // A joint axis without a usable stiffness (NaN: no usable sample, e.g. a
     // joint in the solid base fill that transmits no pressure torque; or
     // k <= 0) is held rigid, k = 1e6 x the largest stiffness of that axis,
-    // with a warning. An axis with no usable stiffness at any joint is an
-    // error (no sample fed it).
+    // with a warning. An axis that no sample loaded (no value at any joint,
+    // e.g. torsion in a pressure-only sample set) is held rigid at every
+    // joint, k = 1e6 x the largest stiffness of any axis: the chain then
+    // bends about the loaded axes only. No usable value at all is an error.
     void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
                                   const std::vector<std::string> &columns, const bool rigid)
     {
+      const auto largest_of = [&](const int axis) {
+        double largest = 0;
+        for (const auto &k : stiffness)
+          if (usable(k[axis]))
+            largest = std::max(largest, k[axis]);
+        return largest;
+      };
+      const double largest_any = std::max({largest_of(0), largest_of(1), largest_of(2)});
+      if (largest_any == 0)
+        throw InputError(path + ": no positive stiffness at any joint and axis (the reduction had "
+                                "no usable sample)");
       for (int axis = 0; axis < 3; ++axis)
         {
-          double largest = 0;
-          for (const auto &k : stiffness)
-            if (usable(k[axis]))
-              largest = std::max(largest, k[axis]);
+          const double largest = largest_of(axis);
           if (largest == 0)
-            throw InputError(path + ": " + columns[axis] +
-                             " has no positive value at any joint (the reduction had no usable "
-                             "sample for this axis)");
+            {
+              if (!rigid)
+                throw InputError(path + ": " + columns[axis] +
+                                 " has no positive value at any joint (no sample loads this "
+                                 "axis; Chain/Missing stiffness = rigid holds it rigid)");
+              std::cerr << "chain: warning: " << path << ": no " << columns[axis]
+                        << " at any joint (no sample loads this axis); the chain is held rigid "
+                           "about it\n";
+            }
           for (std::size_t joint = 0; joint < stiffness.size(); ++joint)
             if (!usable(stiffness[joint][axis]))
               {
@@ -140,10 +156,11 @@ namespace softchain::chain
                                    " is not a positive finite stiffness (no usable sample, or "
                                    "a torque opposite to the rotation; Chain/Missing stiffness = "
                                    "rigid holds such joints rigid)");
-                stiffness[joint][axis] = 1e6 * largest;
-                std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": " << what
-                          << " is not a positive stiffness; the joint is held rigid about this "
-                             "axis\n";
+                if (largest > 0)
+                  std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": " << what
+                            << " is not a positive stiffness; the joint is held rigid about this "
+                               "axis\n";
+                stiffness[joint][axis] = 1e6 * (largest > 0 ? largest : largest_any);
               }
         }
     }

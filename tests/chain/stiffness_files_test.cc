@@ -201,11 +201,6 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
         CHECK_THAT(e.what(), Catch::Contains(path + ", row 1") && Catch::Contains("k_theta = -0.05"));
       }
     CHECK(error_of("value") == "no error");
-    // No positive k_theta at any joint: nothing to scale a rigid joint by.
-    UniformReduction r;
-    r.k[1] = -0.05;
-    testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("value"), Catch::Contains(path) && Catch::Contains("k_theta has no positive value at any joint"));
   }
   SECTION("an infinite stiffness")
   {
@@ -214,12 +209,26 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     testing::stiffness_table(r).write(path);
     CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 1") && Catch::Contains("not a finite stiffness"));
   }
-  SECTION("no stiffness about an axis at any joint")
+  SECTION("no stiffness about an axis at any joint: rigid about it, or an error")
   {
+    // E.g. a pressure-only sample set: no sample twists the finger.
     UniformReduction r;
     r.k_fit[0] = NAN;
     testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("k_psi_fit has no positive value at any joint"));
+    const ChainModel model = files.read_model("M1", tip, "fit", false);
+    // 1e6 x the largest fit stiffness of any axis (k_theta_fit = 0.06).
+    for (int joint = 0; joint < r.n; ++joint)
+      CHECK(model.stiffness().diagonal(0.0)[3 * joint] == Approx(1e6 * 0.06).epsilon(1e-12));
+    CHECK(model.stiffness().diagonal(0.0)[1] == Approx(r.k_fit[1]).epsilon(1e-12));
+    CHECK_THROWS_WITH(files.read_model("M1", tip, "fit", false, false),
+                      Catch::Contains(path) && Catch::Contains("k_psi_fit has no positive value at any joint"));
+  }
+  SECTION("no stiffness at all")
+  {
+    UniformReduction r;
+    r.k = Eigen::Vector3d(NAN, -1.0, NAN);
+    testing::stiffness_table(r).write(path);
+    CHECK_THAT(error_of("value"), Catch::Contains(path) && Catch::Contains("no positive stiffness at any joint and axis"));
   }
   SECTION("a missing column")
   {

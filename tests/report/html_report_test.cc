@@ -65,10 +65,21 @@ TEST_CASE("The stage times of softchain run replace the 'not measured' line")
   CHECK(html.find("not measured in this run") == std::string::npos);
 }
 
+TEST_CASE("Without a chain validation the report says so instead of failing")
+{
+  // E.g. P13 reduced from pressure samples only: every k_phi is negative,
+  // the chain stage cannot build a chain, and the rest is still reported.
+  const SyntheticOutputs outputs("report_no_chain");
+  std::filesystem::remove(outputs.file("chain/validation_summary.csv"));
+  const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
+  CHECK(html.find("No chain validation: chain/validation_summary.csv is missing") != std::string::npos);
+  CHECK(html.find("3. Stiffness") != std::string::npos);
+}
+
 TEST_CASE("A missing input is an error naming the file")
 {
   const SyntheticOutputs outputs("report_missing");
-  for (const std::string missing : {"chain/validation_summary.csv", "stiffness/M2_b0.50a.csv", "database.h5"})
+  for (const std::string missing : {"stiffness/M2_b0.50a.csv", "database.h5"})
     {
       std::filesystem::remove(outputs.file(missing));
       CHECK_THROWS_WITH(HtmlReport(outputs.prm(), outputs.database(), outputs.directory()),
