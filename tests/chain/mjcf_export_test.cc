@@ -4,6 +4,7 @@
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/mjcf_export.h>
 
+#include "../data/occurrences.h"
 #include "../data/scratch_directory.h"
 
 #include <catch2/catch.hpp>
@@ -31,22 +32,14 @@ namespace
     return ChainModel("tapered", KinematicChain(joints, {0.09, -0.0036, 0.0}), JointStiffness(k),
                       PressureActuation(jp));
   }
-
-  std::size_t count(const std::string &text, const std::string &what)
-  {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-      ++n;
-    return n;
-  }
 } // namespace
 
 TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness and a pressure actuator")
 {
   const ChainModel  model = tapered_finger();
   const std::string xml   = MjcfExport(model, {}).text();
-  CHECK(count(xml, "<joint name=") == 27);
-  CHECK(count(xml, "<body name=") == 9);
+  CHECK(softchain::testing::occurrences(xml, "<joint name=") == 27);
+  CHECK(softchain::testing::occurrences(xml, "<body name=") == 9);
   const auto psi = xml.find("joint4_psi\" axis=\"1 0 0\""), theta = xml.find("joint4_theta\" axis=\"0 1 0\""),
              phi = xml.find("joint4_phi\" axis=\"0 0 1\"");
   CHECK(psi < theta);
@@ -58,7 +51,7 @@ TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness an
   const double k_theta   = model.stiffness().joint(3)[1];
   CHECK(std::stod(xml.substr(stiffness)) == k_theta);
   CHECK(std::stod(xml.substr(xml.find("damping=\"", theta) + 9)) == 0.01 * k_theta);
-  CHECK(count(xml, "coef=") == 27);
+  CHECK(softchain::testing::occurrences(xml, "coef=") == 27);
   CHECK(xml.find("<motor name=\"pressure\" tendon=\"pressure\"") != std::string::npos);
   CHECK(xml.find("<site name=\"tip\"") != std::string::npos);
 }

@@ -2,6 +2,7 @@
 // crash safety, failed samples, bad points, 1 vs 2 MPI ranks.
 #include <softchain/data/actuation_database.h>
 
+#include "../data/occurrences.h"
 #include "tiny_design.h"
 
 #include <catch2/catch.hpp>
@@ -86,14 +87,6 @@ namespace
     bytes << in.rdbuf();
     return bytes.str();
   }
-
-  std::size_t count(const std::string &text, const std::string &word)
-  {
-    std::size_t n = 0;
-    for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
-      ++n;
-    return n;
-  }
 } // namespace
 
 TEST_CASE("sweep writes a database whose layout the data layer reads back")
@@ -103,7 +96,7 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
   INFO(outcome.output);
   REQUIRE(outcome.status == 0);
   CHECK(outcome.output.find("[6/6]") != std::string::npos);
-  CHECK(count(outcome.output, "ETA") == 6);
+  CHECK(softchain::testing::occurrences(outcome.output, "ETA") == 6);
   CHECK(outcome.output.find("pressure 1000 Pa") < outcome.output.find("pressure 2000 Pa"));
 
   const auto  database = ActuationDatabase::open(design.database());
@@ -148,7 +141,7 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
               Approx(s.actuation.point_forces[1].point[1] - s.force_points_deformed[1][1]));
     }
   const std::string series = file_bytes(design.output() + "/vtu/samples.pvd");
-  CHECK(count(series, "<DataSet") == 6);
+  CHECK(softchain::testing::occurrences(series, "<DataSet") == 6);
 }
 
 TEST_CASE("Q2 and P2 databases hold the mid-side nodes and the sub-triangles of curved faces")

@@ -6,23 +6,13 @@
 
 #include <catch2/catch.hpp>
 
+#include "../data/occurrences.h"
 #include "synthetic_outputs.h"
 
 #include <filesystem>
 
 using namespace softchain::report;
 using softchain::report::testing::SyntheticOutputs;
-
-namespace
-{
-  std::size_t count(const std::string &text, const std::string &what)
-  {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-      ++n;
-    return n;
-  }
-} // namespace
 
 TEST_CASE("Base64 of the RFC 4648 test vectors")
 {
@@ -43,7 +33,7 @@ TEST_CASE("The report holds every section, its pictures and its tables")
                               "6. The paper's claims"})
     CHECK(html.find(section) != std::string::npos);
   CHECK(html.find("set Name = a&lt;b") != std::string::npos); // the .prm, escaped
-  CHECK(count(html, "<img src=\"data:image/svg+xml;base64,") == 3); // 0, 40, 80 kPa
+  CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == 3); // 0, 40, 80 kPa
   CHECK(html.find(data_uri("image/png", "not really a PNG")) != std::string::npos);
   CHECK(html.find("ktheta.png is missing") != std::string::npos); // said, not broken
   // 80 kPa is beyond the converged 40 kPa; the failed 60 kPa sample is named.
@@ -52,7 +42,7 @@ TEST_CASE("The report holds every section, its pictures and its tables")
   // Baseline 40 % against the chain's 4 %: 10 times more accurate.
   CHECK(html.find("<td>40</td><td>10</td>") != std::string::npos);
   CHECK(html.find("not measured in this run") != std::string::npos);
-  CHECK(count(html, "<td>1.25</td>") == 2); // both samples' wall times
+  CHECK(softchain::testing::occurrences(html, "<td>1.25</td>") == 2); // both samples' wall times
 }
 
 TEST_CASE("The stage times of softchain run replace the 'not measured' line")

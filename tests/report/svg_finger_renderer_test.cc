@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "../data/occurrences.h"
 #include "../chain/box_mesh.h"
 
 #include <regex>
@@ -12,14 +13,6 @@ using softchain::report::SvgFingerRenderer;
 
 namespace
 {
-  std::size_t count(const std::string &text, const std::string &what)
-  {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-      ++n;
-    return n;
-  }
-
   softchain::data::MeshRecord unit_cube()
   {
     softchain::chain::testing::BoxMeshSpec spec;
@@ -43,8 +36,8 @@ TEST_CASE("A cube seen obliquely shows three shaded faces, nearest last")
   // The default view looks from +x, +y, +z: the three faces whose outward
   // normals are +x, +y, +z face the viewer, the other three are dropped;
   // the rest shape (the same cube) adds three unshaded ones.
-  CHECK(count(svg, "<polygon") == 6);
-  CHECK(count(svg, "fill=\"rgb(") == 3);
+  CHECK(softchain::testing::occurrences(svg, "<polygon") == 6);
+  CHECK(softchain::testing::occurrences(svg, "fill=\"rgb(") == 3);
   // Face centroids' depths along the view direction w ~ (0.35, 0.45, 1):
   // +x face 1.075, +y face 1.125, +z face 1.4 (over |w|), so the painter
   // draws them in that order. Lambert's law with the renderer's light
