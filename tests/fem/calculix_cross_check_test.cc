@@ -14,7 +14,6 @@
 #include <softchain/boundary_ids.h>
 #include <softchain/hyperelastic_material.h>
 
-#include <deal.II/grid/grid_generator.h>
 
 #include <catch2/catch.hpp>
 
@@ -30,16 +29,6 @@ using namespace softchain;
 namespace
 {
   constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.48;
-
-  void cantilever_mesh(Triangulation<3> &mesh)
-  {
-    GridGenerator::subdivided_hyper_rectangle(mesh, {20, 2, 2}, Point<3>(), Point<3>(L, h, h));
-    for (const auto &face : mesh.active_face_iterators())
-      if (face->at_boundary())
-        face->set_boundary_id(face->center()[0] < 1e-9 * L       ? boundary::base :
-                              face->center()[0] > L * (1 - 1e-9) ? boundary::tip :
-                                                                   boundary::other);
-  }
 
   // Tip-face nodes with their share of the face area (the consistent nodal
   // forces of a uniform traction on bilinear faces are t times these).
@@ -185,7 +174,7 @@ TEST_CASE("the cantilever agrees with CalculiX on the same mesh", "[fem][calculi
     return;
   REQUIRE(std::system("command -v ccx > /dev/null 2>&1") == 0); // scripts/setup installs calculix-ccx
   Triangulation<3> mesh;
-  cantilever_mesh(mesh);
+  test::cantilever_block(mesh, {20, 2, 2}, L, h);
   for (const double force : {0.05, 0.2, 0.5}) // N: the issue's range
     {
       const std::string       name = "cantilever_" + std::to_string(int(1000 * force)) + "mN";

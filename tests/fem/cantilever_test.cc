@@ -23,7 +23,6 @@
 #include <softchain/boundary_average.h>
 #include <softchain/boundary_ids.h>
 
-#include <deal.II/grid/grid_generator.h>
 
 #include <catch2/catch.hpp>
 
@@ -49,13 +48,7 @@ namespace
   double fem_deflection(const double nu, const unsigned int n)
   {
     Triangulation<3> mesh;
-    GridGenerator::subdivided_hyper_rectangle(mesh, {10 * n, n, n}, Point<3>(),
-                                              Point<3>(L, h, h));
-    for (const auto &face : mesh.active_face_iterators())
-      if (face->at_boundary())
-        face->set_boundary_id(face->center()[0] < 1e-9 * L           ? boundary::base :
-                              face->center()[0] > L * (1 - 1e-9)     ? boundary::tip :
-                                                                       boundary::other);
+    test::cantilever_block(mesh, {10 * n, n, n}, L, h);
     test::MeshSolverFixture f(
       test::parameters_from_text("cantilever",
                                  test::solid_prm("Q2", "log", E, nu,

@@ -1,7 +1,10 @@
 #include "fem_test_tools.h"
 
+#include <softchain/boundary_ids.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <fstream>
@@ -47,6 +50,18 @@ namespace softchain::test
         << "subsection Output\n  set Write VTU = false\n  set Verbose = false\nend\n"
         << extra;
     return prm.str();
+  }
+
+  void cantilever_block(Triangulation<3> &mesh, const std::vector<unsigned int> &cells,
+                        const double length, const double height)
+  {
+    GridGenerator::subdivided_hyper_rectangle(mesh, cells, Point<3>(),
+                                              Point<3>(length, height, height));
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary())
+        face->set_boundary_id(face->center()[0] < 1e-9 * length       ? boundary::base :
+                              face->center()[0] > length * (1 - 1e-9) ? boundary::tip :
+                                                                        boundary::other);
   }
 
   MeshSolverFixture::MeshSolverFixture(const Parameters &p, const Triangulation<3> &mesh)

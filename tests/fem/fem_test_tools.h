@@ -31,6 +31,12 @@ namespace softchain::test
                         double youngs_modulus, double poissons_ratio,
                         const std::string &extra_subsections = "");
 
+  // A block [0, length] x [0, height] x [0, height] of `cells` hexahedra
+  // per direction, with the boundary ids `base` (x = 0, clamped) and `tip`
+  // (x = length): the cantilever of the verification tests.
+  void cantilever_block(Triangulation<3> &mesh, const std::vector<unsigned int> &cells,
+                        double length, double height);
+
   // A solver on a mesh built in the test (material id 0 = region `solid`,
   // boundary ids of boundary_ids.h), no springs.
   struct MeshSolverFixture

@@ -7,7 +7,6 @@
 #include <softchain/boundary_ids.h>
 #include <softchain/cell_orientation.h>
 
-#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <catch2/catch.hpp>
@@ -108,12 +107,7 @@ namespace
   {
     constexpr double L = 0.1, h = 0.01;
     Triangulation<3> mesh;
-    GridGenerator::subdivided_hyper_rectangle(mesh, {10, 3, 3}, Point<3>(), Point<3>(L, h, h));
-    for (const auto &face : mesh.active_face_iterators())
-      if (face->at_boundary())
-        face->set_boundary_id(face->center()[0] < 1e-9 * L       ? boundary::base :
-                              face->center()[0] > L * (1 - 1e-9) ? boundary::tip :
-                                                                   boundary::other);
+    test::cantilever_block(mesh, {10, 3, 3}, L, h);
     if (jitter > 0)
       GridTools::distort_random(jitter, mesh, true);
     check_cell_orientation(mesh, "jittered block");
