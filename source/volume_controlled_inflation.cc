@@ -30,7 +30,6 @@ namespace softchain
     return u;
   }
 
-  // g = dV/du: the nodal load of a unit follower pressure at the current state.
   TrilinosWrappers::MPI::Vector VolumeControlledInflation::unit_pressure_load() const
   {
     TrilinosWrappers::MPI::Vector g(solver.negative_residual());

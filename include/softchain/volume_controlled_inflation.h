@@ -43,6 +43,8 @@ namespace softchain
 
     double volume() const;
     double pressure() const { return p; }
+    // g = dV/du: the nodal load of a unit follower pressure at the current state.
+    TrilinosWrappers::MPI::Vector unit_pressure_load() const;
 
     // Inflates to `target_volume` in adaptive volume steps.
     Result solve(double target_volume);
@@ -54,7 +56,6 @@ namespace softchain
 
     // Newton at a fixed volume; false if it fails (state restored by caller).
     bool newton(double target_volume, Result &result);
-    TrilinosWrappers::MPI::Vector unit_pressure_load() const;
     TrilinosWrappers::MPI::Vector owned_displacement() const;
   };
 } // namespace softchain
