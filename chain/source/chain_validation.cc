@@ -2,6 +2,7 @@
 #include <softchain/chain/angle_units.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <tuple>
 
@@ -85,15 +86,21 @@ namespace softchain::chain
     ChainEquilibrium solver(model, settings);
     for (const FemSample &s : samples_)
       {
-        const Equilibrium e = solver.solve(s.load);
+        const auto        start = std::chrono::steady_clock::now();
+        const Equilibrium e     = solver.solve(s.load);
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         ValidationRecord  r{s.id, s.role, model.name(), s.load.pressure, force_norm(s.load),
                             NAN, NAN, e.iterations, e.converged ? "converged" : e.failure};
+        r.solve_time = elapsed.count();
         if (e.converged)
           {
             const ChainPose &pose = solver.pose();
             r.position_error      = (pose.tip_position - s.tip.position).norm();
             r.orientation_error =
               rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
+            r.tip_position       = pose.tip_position;
+            r.tip_rotation_angle =
+              rotation_angle_between(Eigen::Matrix3d::Identity(), pose.link_rotations.back());
           }
         records_.push_back(r);
       }
@@ -110,7 +117,8 @@ namespace softchain::chain
   {
     CsvTable table({"sample_index", "sample", "role", "pressure", "force_norm", "model",
                     "tip_error_mm", "tip_error_percent_L", "orientation_error_deg",
-                    "chain_iterations", "chain_status"});
+                    "chain_iterations", "chain_status", "chain_tip_x_mm", "chain_tip_y_mm",
+                    "chain_tip_z_mm", "chain_tip_rotation_angle_deg", "solve_time_us"});
     for (std::size_t i = 0; i < records_.size(); ++i)
       {
         const ValidationRecord &r = records_[i];
@@ -119,7 +127,12 @@ namespace softchain::chain
                        CsvTable::cell(1e3 * r.position_error),
                        CsvTable::cell(100.0 * r.position_error / finger_length_),
                        CsvTable::cell(degrees(r.orientation_error)),
-                       CsvTable::cell(double(r.iterations)), r.status});
+                       CsvTable::cell(double(r.iterations)), r.status,
+                       CsvTable::cell(1e3 * r.tip_position.x()),
+                       CsvTable::cell(1e3 * r.tip_position.y()),
+                       CsvTable::cell(1e3 * r.tip_position.z()),
+                       CsvTable::cell(degrees(r.tip_rotation_angle)),
+                       CsvTable::cell(1e6 * r.solve_time)});
       }
     return table;
   }

@@ -2,13 +2,24 @@
 // SerialDirectSolver: K du = r by UMFPACK's multifrontal LU (BLAS-3 on dense
 // frontal matrices) for a run on one MPI rank. Trilinos' KLU is a
 // left-looking LU without supernodes: on the fill of a 3D Q2 mesh it is
-// several times slower (README, "Linear solvers"). The Trilinos matrix is
-// copied into a deal.II SparseMatrix whose pattern is built once.
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
+// several times slower (README, "Linear solvers").
+//
+// The tangent's sparsity pattern never changes during a solve, so the work
+// that depends on the pattern alone is done once (README, "Skipping work"):
+//   - the compressed-row copy of K and, per Trilinos entry, its place in it,
+//     so that refreshing the values is one pass without searches;
+//   - UMFPACK's symbolic analysis (fill-reducing column ordering, frontal
+//     matrix sizes), which the UMFPACK user guide (Davis, Sec. 5) allows to be
+//     reused for every matrix with the same pattern.
+// Each Newton iteration then repeats only the numeric factorisation (with its
+// own threshold partial pivoting) and the triangular solves.
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+
+#include <umfpack.h>
+
+#include <array>
+#include <vector>
 
 namespace softchain
 {
@@ -19,6 +30,9 @@ namespace softchain
   public:
     // `matrix` must live on one rank; its sparsity pattern is copied.
     explicit SerialDirectSolver(const TrilinosWrappers::SparseMatrix &matrix);
+    ~SerialDirectSolver();
+    SerialDirectSolver(const SerialDirectSolver &)            = delete;
+    SerialDirectSolver &operator=(const SerialDirectSolver &) = delete;
 
     // Factorises `matrix` (same pattern as at construction) and solves.
     void solve(const TrilinosWrappers::SparseMatrix &matrix,
@@ -26,8 +40,19 @@ namespace softchain
                const TrilinosWrappers::MPI::Vector  &rhs);
 
   private:
-    SparsityPattern      pattern;
-    SparseMatrix<double> copy;
-    SparseDirectUMFPACK  umfpack;
+    void copy_values(const TrilinosWrappers::SparseMatrix &matrix);
+    void factorise();
+
+    // K in compressed rows with sorted columns. UMFPACK reads compressed
+    // columns, so it sees K^T and solves with UMFPACK_At.
+    std::vector<SuiteSparse_long> row_start, column;
+    std::vector<double>           value;
+    // Entry k of the Trilinos matrix's local storage (rows in order) sits at
+    // value[place[k]].
+    std::vector<SuiteSparse_long> place;
+
+    std::array<double, UMFPACK_CONTROL> control;
+    void                               *symbolic = nullptr;
+    void                               *numeric  = nullptr;
   };
 } // namespace softchain

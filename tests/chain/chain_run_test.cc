@@ -150,6 +150,25 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
   CHECK(text.find("joint9_phi") != std::string::npos);
   if (std::system("command -v gnuplot > /dev/null 2>&1") == 0)
     CHECK(std::filesystem::exists(out + "/chain/validation.png"));
+
+  // validation.csv also carries the chain's own tip pose: for M2 (the model
+  // the database was written from) it is the FEM tip pose of the same sample,
+  // up to the round-off above (1e-9 mm, 1e-9 deg); every solve took time.
+  for (std::size_t r = 0; r < table.n_rows(); ++r)
+    {
+      CHECK(table.number(r, "solve_time_us") > 0.0);
+      if (table.text(r, "model") != "M2")
+        continue;
+      for (std::size_t t = 0; t < tips.n_rows(); ++t)
+        if (tips.text(t, "sample") == table.text(r, "sample"))
+          {
+            for (const std::string axis : {"x", "y", "z"})
+              CHECK(table.number(r, "chain_tip_" + axis + "_mm") ==
+                    Approx(tips.number(t, "tip_" + axis + "_mm")).margin(1e-9));
+            CHECK(table.number(r, "chain_tip_rotation_angle_deg") ==
+                  Approx(tips.number(t, "tip_rotation_angle_deg")).margin(1e-9));
+          }
+    }
 }
 
 TEST_CASE("the Chain subsection is read and checked")

@@ -6,11 +6,13 @@
 // error angle(R_chain^T R_FEM) (deg), where the FEM pose is the TipPoseFit of
 // the tip-face nodes and the chain's is its tip point and last link frame.
 // Summaries per model and sample role (and over all roles): max and mean.
+// Each record also keeps the chain's tip pose and the wall time of its solve.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,11 @@ namespace softchain::chain
     double      orientation_error = 0.0; // rad (NaN if the chain failed)
     int         iterations        = 0;
     std::string status;                  // "converged" or the chain's failure
+    // The chain's own tip pose, so that it can be compared with another
+    // reference than this database (benchmarks/p10_error_time):
+    Eigen::Vector3d tip_position = Eigen::Vector3d::Constant(NAN); // m
+    double          tip_rotation_angle = NAN; // rad, of the last link frame from rest
+    double          solve_time         = NAN; // s, wall time of this equilibrium from rest
   };
 
   class ChainValidation
