@@ -3,6 +3,7 @@
 #include <softchain/boundary_average.h>
 #include <softchain/boundary_ids.h>
 #include <softchain/commands.h>
+#include <softchain/data/csv_table.h>
 #include <softchain/finger_mesh.h>
 #include <softchain/quasi_static_solver.h>
 #include <softchain/solution_output.h>
@@ -10,9 +11,6 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/multithread_info.h>
 
-#include <filesystem>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 
 namespace softchain
@@ -25,13 +23,14 @@ namespace softchain
     void write_summary(const std::string &directory, const QuasiStaticSolver::Result &result,
                        const Tensor<1, 3> &tip, const double cavity_volume)
     {
-      std::filesystem::create_directories(directory);
-      std::ofstream csv(directory + "/solve_summary.csv");
-      csv << "converged,load_factor,newton_iterations,load_steps,tip_displacement_x,"
-             "tip_displacement_y,tip_displacement_z,cavity_volume\n"
-          << std::setprecision(17) << result.converged << ',' << result.load_factor_reached
-          << ',' << result.newton_iterations << ',' << result.load_steps << ',' << tip[0] << ','
-          << tip[1] << ',' << tip[2] << ',' << cavity_volume << '\n';
+      data::CsvTable summary({"converged", "load_factor", "newton_iterations", "load_steps",
+                              "tip_displacement_x", "tip_displacement_y", "tip_displacement_z",
+                              "cavity_volume"});
+      summary.add_row(std::vector<double>{double(result.converged), result.load_factor_reached,
+                                          double(result.newton_iterations),
+                                          double(result.load_steps), tip[0], tip[1], tip[2],
+                                          cavity_volume});
+      summary.write(directory + "/solve_summary.csv");
     }
   } // namespace
 

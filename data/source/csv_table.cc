@@ -1,5 +1,6 @@
-// CsvTable: comma separated cells, no quoting (cells never hold commas), one
-// header line; numbers written with 17 significant digits, "nan" for NaN.
+// CsvTable: RFC 4180 CSV, one header line; numbers written with 17
+// significant digits, "nan" for NaN. Only cells holding a comma, a double
+// quote or a line break are quoted, so numeric tables stay plain.
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
 
@@ -8,31 +9,133 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <istream>
 #include <stdexcept>
 
 namespace softchain::data
 {
   namespace
   {
-    std::vector<std::string> split_cells(const std::string &line)
+    // Reads the records of an RFC 4180 file: cells split at commas outside
+    // double quotes, "" inside quotes is one quote, line breaks inside quotes
+    // belong to the cell, a record ends at LF or CRLF outside quotes. Blank
+    // lines are skipped. Malformed text throws InputError naming file and line.
+    class RecordReader
     {
-      std::vector<std::string> cells;
-      std::size_t              start = 0;
-      while (true)
-        {
-          const std::size_t comma = line.find(',', start);
-          cells.push_back(line.substr(start, comma - start));
-          if (comma == std::string::npos)
-            return cells;
-          start = comma + 1;
-        }
-    }
+    public:
+      RecordReader(std::istream &in, const std::string &path)
+        : in_(in)
+        , path_(path)
+      {}
 
-    std::string strip_line_end(std::string line)
+      // The next record's cells; false at the end of the file.
+      bool next(std::vector<std::string> &cells)
+      {
+        cells.assign(1, "");
+        record_line_ = line_;
+        State state  = State::cell_start;
+        bool  blank  = true; // nothing but a line end read so far
+        const int eof = std::char_traits<char>::eof();
+        for (int c; (c = in_.get()) != eof;)
+          {
+            if (c == '\r' && state != State::quoted && (in_.peek() == '\n' || in_.peek() == eof))
+              continue; // CRLF ends a line like LF
+            if (c == '\n')
+              ++line_;
+            if (c == '\n' && state != State::quoted)
+              {
+                if (!blank)
+                  return true;
+                record_line_ = line_;
+                continue;
+              }
+            blank = false;
+            state = step(state, char(c), cells);
+          }
+        if (state == State::quoted)
+          throw error(quote_line_, "quoted cell not closed before the end of the file");
+        return !blank;
+      }
+
+      // Line on which the record last returned by next() starts.
+      int record_line() const { return record_line_; }
+
+      InputError error(int line, const std::string &what) const
+      {
+        return InputError(path_ + ":" + std::to_string(line) + ": " + what);
+      }
+
+    private:
+      enum class State
+      {
+        cell_start,
+        unquoted,
+        quoted,
+        closing_quote // a quote inside a quoted cell: "" or the cell's end
+      };
+
+      // Consumes one character of a record (not a record-ending line break).
+      State step(const State state, const char c, std::vector<std::string> &cells)
+      {
+        switch (state)
+          {
+            case State::cell_start:
+              if (c == '"')
+                {
+                  quote_line_ = line_;
+                  return State::quoted;
+                }
+              [[fallthrough]];
+            case State::unquoted:
+              if (c == ',')
+                return next_cell(cells);
+              if (c == '"')
+                throw error(line_, "double quote inside an unquoted cell (quote the cell and "
+                                   "double the quote)");
+              cells.back() += c;
+              return State::unquoted;
+            case State::quoted:
+              if (c == '"')
+                return State::closing_quote;
+              cells.back() += c;
+              return State::quoted;
+            case State::closing_quote:
+              if (c == '"')
+                {
+                  cells.back() += '"';
+                  return State::quoted;
+                }
+              if (c == ',')
+                return next_cell(cells);
+              throw error(line_, "text after the closing quote of a cell");
+          }
+        return state;
+      }
+
+      static State next_cell(std::vector<std::string> &cells)
+      {
+        cells.emplace_back();
+        return State::cell_start;
+      }
+
+      std::istream      &in_;
+      const std::string &path_;
+      int                line_        = 1; // line of the next character
+      int                record_line_ = 1;
+      int                quote_line_  = 1;
+    };
+
+    // A cell as RFC 4180 writes it: quoted when it holds a comma, a double
+    // quote, CR or LF (inner quotes doubled), otherwise as it is. A record of
+    // one empty cell is quoted too, so that it is not read as a blank line.
+    std::string field(const std::string &cell, const bool only_cell)
     {
-      if (!line.empty() && line.back() == '\r')
-        line.pop_back();
-      return line;
+      if (cell.find_first_of(",\"\r\n") == std::string::npos && !(only_cell && cell.empty()))
+        return cell;
+      std::string quoted = "\"";
+      for (const char c : cell)
+        quoted += (c == '"') ? std::string("\"\"") : std::string(1, c);
+      return quoted + '"';
     }
   } // namespace
 
@@ -54,22 +157,19 @@ namespace softchain::data
     std::ifstream in(path);
     if (!in)
       throw InputError("cannot open CSV file '" + path + "'");
-    std::string line;
-    if (!std::getline(in, line))
+    RecordReader             records(in, path);
+    std::vector<std::string> cells;
+    if (!records.next(cells))
       throw InputError(path + ":1: empty CSV file, expected a header line");
-    CsvTable table(split_cells(strip_line_end(line)));
+    CsvTable table(cells);
     table.source_ = path;
-    for (int line_number = 2; std::getline(in, line); ++line_number)
+    while (records.next(cells))
       {
-        line = strip_line_end(line);
-        if (line.empty())
-          continue;
-        auto cells = split_cells(line);
         if (cells.size() != table.columns_.size())
-          throw InputError(path + ":" + std::to_string(line_number) + ": expected " +
-                           std::to_string(table.columns_.size()) + " cells, found " +
-                           std::to_string(cells.size()));
-        table.rows_.push_back(std::move(cells));
+          throw records.error(records.record_line(),
+                              "expected " + std::to_string(table.columns_.size()) +
+                                " cells, found " + std::to_string(cells.size()));
+        table.rows_.push_back(cells);
       }
     return table;
   }
@@ -84,7 +184,7 @@ namespace softchain::data
       throw InputError("cannot write CSV file '" + path + "'");
     const auto write_line = [&out](const std::vector<std::string> &cells) {
       for (std::size_t i = 0; i < cells.size(); ++i)
-        out << (i ? "," : "") << cells[i];
+        out << (i ? "," : "") << field(cells[i], cells.size() == 1);
       out << '\n';
     };
     write_line(columns_);

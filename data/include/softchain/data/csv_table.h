@@ -1,6 +1,7 @@
 #pragma once
 // CsvTable: the CSV files that join the reduction and chain tiers. One header
 // line of column names, then rows of numbers or text; "nan" for no value.
+// RFC 4180: cells holding a comma, double quote or line break are quoted.
 #include <string>
 #include <vector>
 
@@ -11,9 +12,11 @@ namespace softchain::data
   public:
     explicit CsvTable(std::vector<std::string> columns = {});
 
-    // Reads a file; throws InputError naming file and line on a malformed row.
+    // Reads a file; throws InputError naming file and line on a malformed row
+    // (wrong number of cells, unclosed or stray double quote).
     static CsvTable read(const std::string &path);
-    // Writes with 17 significant digits; creates missing parent directories.
+    // Writes with 17 significant digits, quoting cells as RFC 4180 requires;
+    // creates missing parent directories.
     void write(const std::string &path) const;
 
     const std::vector<std::string> &columns() const { return columns_; }
@@ -21,8 +24,8 @@ namespace softchain::data
 
     void add_row(const std::vector<std::string> &cells);
     void add_row(const std::vector<double> &values);
-    // Added: the text of a number cell as add_row writes it (17 significant
-    // digits, "nan" for NaN), for rows that mix text and numbers.
+    // The text of a number cell as add_row writes it (17 significant digits,
+    // "nan" for NaN), for rows that mix text and numbers.
     static std::string cell(double value);
 
     // Column index by name; throws InputError naming the file and column.
