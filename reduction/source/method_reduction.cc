@@ -1,5 +1,5 @@
-// MethodReduction: slabs for b = fraction * a, every sample reduced by one
-// method, the rest configuration and the stiffness.
+// MethodReduction: every sample reduced by one method on one joint
+// geometry, the rest configuration and the stiffness.
 #include <softchain/reduction/method_reduction.h>
 
 #include <cstdio>
@@ -8,15 +8,6 @@ namespace softchain::reduction
 {
   namespace
   {
-    std::vector<SlabSelection> slabs_of(const JointLayout &layout, const data::MeshRecord &mesh,
-                                        double half_width)
-    {
-      std::vector<SlabSelection> slabs;
-      for (int joint = 1; joint <= layout.n_joints(); ++joint)
-        slabs.emplace_back(mesh.X, joint, layout.x(joint), half_width);
-      return slabs;
-    }
-
     // The reference configuration as a sample: x = X, no load.
     data::SampleRecord rest_sample(const data::MeshRecord &mesh)
     {
@@ -29,26 +20,26 @@ namespace softchain::reduction
 
     std::vector<SampleReduction> reduce_all(const std::vector<data::SampleRecord> &samples,
                                             const data::MeshRecord                &mesh,
-                                            const std::vector<SlabSelection>      &slabs,
+                                            const JointGeometry                   &geometry,
                                             RotationMethod                         method)
     {
       std::vector<SampleReduction> reduced;
       for (const auto &sample : samples)
-        reduced.emplace_back(sample, mesh, slabs, method);
+        reduced.emplace_back(sample, mesh, geometry, method);
       return reduced;
     }
   } // namespace
 
   MethodReduction::MethodReduction(RotationMethod method, double fraction,
-                                   const ReductionParameters &parameters, const JointLayout &layout,
+                                   const ReductionParameters &parameters, JointGeometry geometry,
                                    const data::MeshRecord                &mesh,
                                    const std::vector<data::SampleRecord> &converged_samples)
     : method_(method)
     , fraction_(fraction)
-    , slabs_(slabs_of(layout, mesh, fraction * layout.spacing()))
-    , rest_(rest_sample(mesh), mesh, slabs_, method)
-    , samples_(reduce_all(converged_samples, mesh, slabs_, method))
-    , stiffness_(samples_, parameters, slabs_.size())
+    , geometry_(std::move(geometry))
+    , rest_(rest_sample(mesh), mesh, geometry_, method)
+    , samples_(reduce_all(converged_samples, mesh, geometry_, method))
+    , stiffness_(samples_, parameters, geometry_.n_joints())
   {}
 
   std::string MethodReduction::label() const

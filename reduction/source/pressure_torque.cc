@@ -57,8 +57,14 @@ namespace softchain::reduction
   Eigen::Vector3d PressureTorque::per_pascal(const Eigen::Vector3d &centre,
                                              const Eigen::Matrix3d &frame) const
   {
-    const Eigen::Vector3d normal = frame.col(0);
-    Eigen::Vector3d       moment = Eigen::Vector3d::Zero();
+    return per_pascal(centre, frame, frame.col(0));
+  }
+
+  Eigen::Vector3d PressureTorque::per_pascal(const Eigen::Vector3d &centre,
+                                             const Eigen::Matrix3d &frame,
+                                             const Eigen::Vector3d &normal) const
+  {
+    Eigen::Vector3d moment = Eigen::Vector3d::Zero();
     for (const auto &triangle : triangles_)
       moment += polygon_moment(clip_distal(triangle, centre, normal), centre);
     return frame.transpose() * moment;

@@ -11,6 +11,10 @@ namespace softchain::reduction
     {
       section.declare("Joint spacing", "0.01", "a [m]: distance between joints");
       section.declare("Number of joints", "0", "0: round(L/a), L the x-extent of the mesh");
+      section.declare("Joint placement", "strain-limiting layer",
+                      "strain-limiting layer | paper (bounding-box centres, Sec. III-C)");
+      section.declare("Joint height", "auto",
+                      "y of the strain-limiting layer [m]; auto: measured neutral layer");
       section.declare("Slab half-widths", "1, 0.5, 0.3333333333333333", "b as fractions of a");
       section.declare("Methods", "M1, M2", "M1: bounding box, M2: affine fit");
       section.declare("Rotation threshold", "0.0017453292519943296",
@@ -34,6 +38,24 @@ namespace softchain::reduction
       section.require(!result.empty(), "Methods", "no method given");
       return result;
     }
+
+    JointPlacement read_placement(const data::PrmSection &section)
+    {
+      const std::string name = section.get("Joint placement");
+      section.require(name == "strain-limiting layer" || name == "paper", "Joint placement",
+                      "unknown placement '" + name + "' (strain-limiting layer or paper)");
+      return name == "paper" ? JointPlacement::paper : JointPlacement::strain_limiting_layer;
+    }
+
+    // "auto" (NaN: measured) or a height in metres.
+    double read_joint_height(const data::PrmSection &section)
+    {
+      if (section.get("Joint height") == "auto")
+        return NAN;
+      const double y = section.get_double("Joint height");
+      section.require(std::isfinite(y), "Joint height", "must be a number of metres or auto");
+      return y;
+    }
   } // namespace
 
   std::string method_name(RotationMethod method)
@@ -52,6 +74,8 @@ namespace softchain::reduction
     section.require(p.joint_spacing > 0, "Joint spacing", "must be positive");
     p.n_joints = section.get_integer("Number of joints");
     section.require(p.n_joints >= 0, "Number of joints", "must be >= 0");
+    p.placement    = read_placement(section);
+    p.joint_height = read_joint_height(section);
     p.slab_half_width_fractions = section.get_double_list("Slab half-widths");
     section.require(!p.slab_half_width_fractions.empty(), "Slab half-widths", "no value given");
     for (const double f : p.slab_half_width_fractions)

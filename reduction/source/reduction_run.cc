@@ -2,11 +2,14 @@
 #include <softchain/data/actuation_database.h>
 #include <softchain/reduction/joint_layout.h>
 #include <softchain/reduction/method_reduction.h>
+#include <softchain/reduction/neutral_layer.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/reduction_run.h>
 #include <softchain/reduction/stiffness_plots.h>
 #include <softchain/reduction/stiffness_tables.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -34,10 +37,65 @@ namespace softchain::reduction
       return converged;
     }
 
+    // The body lattice is a/8 apart: a slab of the smallest default half-width
+    // b = a/3 holds 5 planes of it, and a 2 mm wall 1-2 points across.
+    constexpr double lattice_points_per_spacing = 8;
+
+    // The samples whose role feeds k_phi, at a nonzero pressure: they bend
+    // the finger about z and locate its neutral layer.
+    std::vector<const data::SampleRecord *> bending_samples(const ReductionParameters &parameters,
+                                                            const std::vector<data::SampleRecord> &samples)
+    {
+      std::vector<const data::SampleRecord *> bending;
+      for (const auto &sample : samples)
+        if (sample.actuation.pressure != 0 &&
+            std::count(parameters.pressure_roles.begin(), parameters.pressure_roles.end(),
+                       sample.actuation.role))
+          bending.push_back(&sample);
+      return bending;
+    }
+
+    // Builds the joint geometry of every b for the placement of the .prm.
+    class GeometryFactory
+    {
+    public:
+      GeometryFactory(const ReductionParameters &parameters, const JointLayout &layout,
+                      const data::MeshRecord &mesh, const std::vector<data::SampleRecord> &samples,
+                      const std::string &source)
+        : layout_(layout)
+        , mesh_(mesh)
+      {
+        if (parameters.placement == JointPlacement::paper)
+          return;
+        body_ = std::make_shared<const BodySamples>(
+          mesh, layout.spacing() / lattice_points_per_spacing, source);
+        layer_height_ = parameters.joint_height;
+        if (std::isnan(layer_height_))
+          {
+            const NeutralLayer layer(*body_, layout, bending_samples(parameters, samples));
+            layer_height_ = layer.height();
+            std::cout << "softchain reduce: " << layer.description() << "\n";
+          }
+      }
+
+      JointGeometry operator()(double half_width) const
+      {
+        return body_ ? JointGeometry(layout_, body_, layer_height_, half_width) :
+                       JointGeometry(layout_, mesh_, half_width);
+      }
+
+    private:
+      const JointLayout                 &layout_;
+      const data::MeshRecord            &mesh_;
+      std::shared_ptr<const BodySamples> body_;
+      double                             layer_height_ = NAN;
+    };
+
     // Writes the CSV files of every (b, method); returns their labels and
     // adds the rotations below the threshold to n_below_threshold.
     std::vector<std::string> write_tables(const ReductionParameters             &parameters,
-                                          const JointLayout                     &layout,
+                                          const GeometryFactory                 &geometry,
+                                          double                                 spacing,
                                           const data::MeshRecord                &mesh,
                                           const std::vector<data::SampleRecord> &samples,
                                           const std::string &directory, int &n_below_threshold)
@@ -46,7 +104,8 @@ namespace softchain::reduction
       for (const double fraction : parameters.slab_half_width_fractions)
         for (const auto method : parameters.methods)
           {
-            const MethodReduction reduction(method, fraction, parameters, layout, mesh, samples);
+            const MethodReduction reduction(method, fraction, parameters,
+                                            geometry(fraction * spacing), mesh, samples);
             StiffnessTables(reduction).write(directory);
             labels.push_back(reduction.label());
             n_below_threshold += reduction.stiffness().n_below_threshold();
@@ -83,8 +142,9 @@ namespace softchain::reduction
     summary.n_samples_used   = static_cast<int>(samples.size());
     const std::string directory = output_dir_ + "/stiffness";
     std::filesystem::create_directories(directory);
-    const auto labels = write_tables(parameters, layout, database.mesh(), samples, directory,
-                                     summary.n_below_threshold);
+    const GeometryFactory geometry(parameters, layout, database.mesh(), samples, database_path_);
+    const auto labels = write_tables(parameters, geometry, layout.spacing(), database.mesh(),
+                                     samples, directory, summary.n_below_threshold);
     if (summary.n_below_threshold > 0)
       std::cerr << "softchain reduce: warning: " << summary.n_below_threshold
                 << " (sample, joint, axis) rotations over all methods and b are below "

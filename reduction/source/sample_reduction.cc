@@ -5,10 +5,12 @@
 #include <softchain/reduction/sample_reduction.h>
 #include <softchain/reduction/vector_of_point.h>
 
+#include <algorithm>
+
 namespace softchain::reduction
 {
   SampleReduction::SampleReduction(const data::SampleRecord &sample, const data::MeshRecord &mesh,
-                                   const std::vector<SlabSelection> &slabs, RotationMethod method)
+                                   const JointGeometry &geometry, RotationMethod method)
     : id_(sample.id)
     , role_(sample.actuation.role)
     , pressure_(sample.actuation.pressure)
@@ -16,19 +18,40 @@ namespace softchain::reduction
   {
     for (const auto &f : sample.actuation.point_forces)
       force_norm_ += vector_of(f.force).norm();
-    const JointFrames         frames(method, slabs, mesh.X, sample.x, sample.id);
+    const JointFrames frames(method, geometry.slabs(), geometry.reference_points(),
+                             geometry.points(sample.x), sample.id);
     const PressureTorque      pressure_torque(mesh.cavity_triangles, sample.x);
     const ExternalForceTorque external(sample);
+    double largest_torque = 0;
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
-        const JointFrame &frame = frames[i];
-        JointResult       joint;
-        joint.angles          = frames.relative_angles(i);
-        joint.pressure_torque = pressure_torque.per_pascal(frame.centre, frame.rotation);
-        joint.torque          = external.about(slabs[i].x_joint(), frame.centre, frame.rotation) +
+        const JointFrame     &frame  = frames[i];
+        const Eigen::Vector3d centre = geometry.deformed_centre(i, frames, sample.x);
+        JointResult           joint;
+        joint.pressure_torque = pressure_torque.per_pascal(centre, frame.rotation,
+                                                           geometry.section_normal(i, frames));
+        joint.torque = external.about(geometry.x_joint(i), centre, frame.rotation) +
                        joint.pressure_torque * pressure_;
         joint.stretches = frame.stretches;
+        largest_torque  = std::max(largest_torque, joint.torque.norm());
         joints_.push_back(joint);
+      }
+    // A joint that transmits no torque cannot be a spring: the chain holds it
+    // rigid (e.g. P10's joint 1 in the solid base fill, distal to which lies
+    // the whole closed cavity, whose pressure has no net moment, while the
+    // slab of its link reaches into the bending part). Its rotation goes to
+    // the next joint: angles are measured from the last frame that carries
+    // torque. "No torque" is |tau_i| <= 1e-6 of the sample's largest (the
+    // geometric torques are exact up to round-off, 1e-12 relative).
+    Eigen::Matrix3d parent = Eigen::Matrix3d::Identity();
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      {
+        const bool carries_torque = joints_[i].torque.norm() > 1e-6 * largest_torque;
+        joints_[i].angles = carries_torque ?
+                              data::angles_from_rotation(parent.transpose() * frames[i].rotation) :
+                              data::JointAngles{};
+        if (carries_torque)
+          parent = frames[i].rotation;
       }
   }
 } // namespace softchain::reduction

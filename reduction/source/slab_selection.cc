@@ -27,7 +27,8 @@ namespace softchain::reduction
   std::string SlabSelection::label() const
   {
     std::ostringstream text;
-    text << "joint " << joint_ << " (x_i = " << x_joint_ << " m, b = " << half_width_ << " m)";
+    text << "joint " << joint_ << " (slab centre x = " << x_joint_ << " m, b = " << half_width_
+         << " m)";
     return text.str();
   }
 } // namespace softchain::reduction

@@ -35,11 +35,11 @@ namespace softchain::reduction
     const auto &joints = reduction_.stiffness().joints();
     for (std::size_t i = 0; i < joints.size(); ++i)
       {
-        const SlabSelection  &slab = reduction_.slabs()[i];
-        const Eigen::Vector3d J    = slab.reference_centre();
-        const JointStiffness &k    = joints[i];
+        const JointGeometry  &geometry = reduction_.geometry();
+        const Eigen::Vector3d J        = geometry.reference_centre(i);
+        const JointStiffness &k        = joints[i];
         table.add_row(std::vector<double>{
-          double(slab.joint()), slab.x_joint(), J(0), J(1), J(2), k.at_largest_load(0),
+          double(i + 1), geometry.x_joint(i), J(0), J(1), J(2), k.at_largest_load(0),
           k.at_largest_load(1), k.at_largest_load(2), k.fit(0), k.fit(1), k.fit(2),
           double(k.n_used[0]), double(k.n_used[1]), double(k.n_used[2])});
       }

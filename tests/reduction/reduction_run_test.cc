@@ -114,7 +114,10 @@ namespace
     return dir.file("finger.prm");
   }
 
-  const std::string good_prm = "  set Joint spacing = 0.01\n"
+  // The paper's placement: its closed forms below are the bounding-box
+  // centres' (the synthetic finger is a node cloud without cells).
+  const std::string good_prm = "  set Joint placement = paper\n"
+                               "  set Joint spacing = 0.01\n"
                                "  set Slab half-widths = 1, 0.5\n"
                                "  set Methods = M1, M2\n"
                                "  set Plots = true\n";
@@ -272,6 +275,17 @@ TEST_CASE("run_reduction: bad input is an InputError naming file or parameter")
   CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, good_prm), dir.file("none.h5"),
                                              dir.file("out")),
                     Catch::Contains(dir.file("none.h5")));
+  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Joint placement = middle\n"),
+                                             dir.file("database.h5"), dir.file("out")),
+                    Catch::Contains("parameter 'Joint placement'") && Catch::Contains("middle"));
+  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Joint height = low\n"),
+                                             dir.file("database.h5"), dir.file("out")),
+                    Catch::Contains("parameter 'Joint height'"));
+  // The default placement samples the body through its cells: a database
+  // without cells is refused with the reason.
+  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Joint spacing = 0.01\n"),
+                                             dir.file("database.h5"), dir.file("out")),
+                    Catch::Contains("database.h5") && Catch::Contains("/mesh/cells is empty"));
   CHECK_THROWS_AS(reduction::run_reduction(write_prm(dir, "  set Joint spacing = 1\n"),
                                            dir.file("database.h5"), dir.file("out")),
                   data::InputError);

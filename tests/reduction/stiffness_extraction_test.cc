@@ -46,7 +46,8 @@ namespace
   MethodReduction reduce(const SyntheticFinger &finger, const std::vector<data::SampleRecord> &s)
   {
     const JointLayout layout(finger.mesh.X, a, 0, "synthetic");
-    return MethodReduction(RotationMethod::affine_fit, 0.5, parameters(), layout, finger.mesh, s);
+    return MethodReduction(RotationMethod::affine_fit, 0.5, parameters(),
+                           JointGeometry(layout, finger.mesh, 0.5 * a), finger.mesh, s);
   }
 } // namespace
 

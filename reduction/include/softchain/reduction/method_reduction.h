@@ -1,12 +1,12 @@
 #pragma once
 // MethodReduction: the whole reduction of a database by one rotation method
-// and one slab half-width b = fraction * a: the slabs, every converged sample
-// reduced, the rest configuration (for J_p at p = 0) and the stiffness.
+// and one joint geometry (placement and slab half-width b = fraction * a):
+// every converged sample reduced, the rest configuration (for J_p at p = 0)
+// and the stiffness.
 #include <softchain/data/actuation_database.h>
-#include <softchain/reduction/joint_layout.h>
+#include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
-#include <softchain/reduction/slab_selection.h>
 #include <softchain/reduction/stiffness_extraction.h>
 
 #include <string>
@@ -18,12 +18,12 @@ namespace softchain::reduction
   {
   public:
     MethodReduction(RotationMethod method, double fraction, const ReductionParameters &parameters,
-                    const JointLayout &layout, const data::MeshRecord &mesh,
+                    JointGeometry geometry, const data::MeshRecord &mesh,
                     const std::vector<data::SampleRecord> &converged_samples);
 
     // "<M>_b<f>a" with f the fraction to 2 decimals, e.g. "M2_b0.50a".
     std::string                         label() const;
-    const std::vector<SlabSelection>   &slabs() const { return slabs_; }
+    const JointGeometry                &geometry() const { return geometry_; }
     const SampleReduction              &rest() const { return rest_; }
     const std::vector<SampleReduction> &samples() const { return samples_; }
     const StiffnessExtraction          &stiffness() const { return stiffness_; }
@@ -31,7 +31,7 @@ namespace softchain::reduction
   private:
     RotationMethod               method_;
     double                       fraction_;
-    std::vector<SlabSelection>   slabs_;
+    JointGeometry                geometry_;
     SampleReduction              rest_;
     std::vector<SampleReduction> samples_;
     StiffnessExtraction          stiffness_;

@@ -5,7 +5,8 @@
 // vector a = (x1 - x0) x (x2 - x0) / 2, which points into the cavity, the
 // force is -p a, applied at the triangle's centroid c. The torque per pascal
 // about the joint centre J_i, from the walls on the distal side of the
-// section plane through J_i normal to the joint's x axis n_i, is
+// section plane through J_i with normal n_i (JointGeometry::section_normal),
+// is
 //   J_p,i = R_i^0^T sum_t (c_t - J_i) x (-a_t),
 // where triangles crossing the plane are clipped at it (Sutherland-Hodgman)
 // and the clipped polygon is fanned into triangles; the sum is exact for
@@ -26,8 +27,11 @@ namespace softchain::reduction
                    const std::vector<data::Point3>                &x);
 
     // J_p of the joint whose deformed centre is `centre` and whose frame is
-    // `frame` (columns: joint axes in world coordinates), in that frame.
+    // `frame` (columns: joint axes in world coordinates), in that frame; the
+    // section's normal is the frame's x axis unless `normal` is given.
     Eigen::Vector3d per_pascal(const Eigen::Vector3d &centre, const Eigen::Matrix3d &frame) const;
+    Eigen::Vector3d per_pascal(const Eigen::Vector3d &centre, const Eigen::Matrix3d &frame,
+                               const Eigen::Vector3d &normal) const;
 
   private:
     std::vector<std::array<Eigen::Vector3d, 3>> triangles_;

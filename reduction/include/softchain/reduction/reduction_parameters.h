@@ -2,6 +2,7 @@
 // ReductionParameters: the "subsection Reduction" of a design's .prm file
 // (reduction/README.md lists the entries). Everything else in the file belongs
 // to the other tiers and is ignored here.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,13 @@ namespace softchain::reduction
     affine_fit    // M2: rotation of the polar decomposition of the affine fit
   };
 
+  // Where the joints sit and what orients the links (joint_geometry.h).
+  enum class JointPlacement
+  {
+    paper,                // joints at the slab bounding-box centres (Sec. III-C)
+    strain_limiting_layer // joints on the layer that does not stretch
+  };
+
   // "M1" or "M2", the names used in the .prm file and the CSV file names.
   std::string method_name(RotationMethod method);
 
@@ -21,6 +29,8 @@ namespace softchain::reduction
   {
     double                      joint_spacing = 0.01; // a [m]
     int                         n_joints      = 0;    // 0: round(L / a)
+    JointPlacement              placement     = JointPlacement::strain_limiting_layer;
+    double                      joint_height  = NAN;  // y_n [m]; NaN: measured
     std::vector<double>         slab_half_width_fractions; // b / a
     std::vector<RotationMethod> methods;
     double                      rotation_threshold = 0.0; // rad

@@ -1,11 +1,12 @@
 #pragma once
 // SampleReduction: one database sample reduced to the chain's variables by
 // one method: per joint the relative angles (psi, theta, phi), the torque
-// tau_i = (J^T f)_i + J_p,i p in the joint frame, J_p,i and the stretches.
+// tau_i = (J^T f)_i + J_p,i p about the deformed joint centre in the joint
+// frame (the distal slab's), J_p,i and the stretches.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/joint_angles.h>
 #include <softchain/reduction/reduction_parameters.h>
-#include <softchain/reduction/slab_selection.h>
+#include <softchain/reduction/joint_geometry.h>
 
 #include <Eigen/Core>
 
@@ -26,7 +27,7 @@ namespace softchain::reduction
   {
   public:
     SampleReduction(const data::SampleRecord &sample, const data::MeshRecord &mesh,
-                    const std::vector<SlabSelection> &slabs, RotationMethod method);
+                    const JointGeometry &geometry, RotationMethod method);
 
     const std::string              &id() const { return id_; }
     const std::string              &role() const { return role_; }

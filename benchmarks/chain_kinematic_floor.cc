@@ -1,0 +1,130 @@
+// The chain's kinematic floor: the tip error of a chain of rigid links that
+// is driven by the FEM's own rotations, so that no stiffness is involved.
+// For every converged sample of a database and each joint placement
+// (the paper's bounding-box centres, joints on the strain-limiting layer):
+//   c_1 = J_1,0 (the clamped base carries joint 1),
+//   c_k+1 = c_k + R_k (J_k+1,0 - J_k,0),   tip = c_n + R_n (T_0 - J_n,0),
+// with R_k the M2 rotation of slab k (the joint's distal frame) and T_0 the
+// reference centroid of the tip face, against the FEM tip pose (centroid and
+// Kabsch rotation of the deformed tip face). A stiffness-based chain cannot
+// beat this floor; the chain's validation error sits above it.
+//
+// Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5]
+#include <softchain/chain/angle_units.h>
+#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/actuation_database.h>
+#include <softchain/reduction/joint_geometry.h>
+#include <softchain/reduction/neutral_layer.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace softchain;
+
+namespace
+{
+  struct Floor
+  {
+    double position; // m
+    double angle;    // rad
+  };
+
+  Floor floor_of(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
+                 const chain::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
+  {
+    const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
+                                        geometry.reference_points(), geometry.points(sample.x),
+                                        sample.id);
+    const std::size_t n = frames.size();
+    Eigen::Vector3d   c = geometry.reference_centre(0);
+    for (std::size_t k = 0; k + 1 < n; ++k)
+      c += frames[k].rotation * (geometry.reference_centre(k + 1) - geometry.reference_centre(k));
+    const Eigen::Vector3d tip =
+      c + frames[n - 1].rotation * (tip_fit.reference_centroid() - geometry.reference_centre(n - 1));
+    const chain::TipPose fem = tip_fit.fit(chain::select_nodes(sample.x, mesh.tip_nodes));
+    return {(tip - fem.position).norm(),
+            chain::rotation_angle_between(frames[n - 1].rotation, fem.rotation)};
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  if (argc < 2)
+    {
+      std::fprintf(stderr, "usage: %s DATABASE.h5 [joint spacing a = 0.01] [b/a = 0.5]\n", argv[0]);
+      return 1;
+    }
+  const double a        = argc > 2 ? std::atof(argv[2]) : 0.01;
+  const double fraction = argc > 3 ? std::atof(argv[3]) : 0.5;
+  try
+    {
+      const auto  database = data::ActuationDatabase::open(argv[1]);
+      const auto &mesh     = database.mesh();
+      std::vector<data::SampleRecord>         samples;
+      std::vector<const data::SampleRecord *> bending;
+      for (const auto &id : database.sample_ids())
+        if (auto s = database.read_sample(id); s.converged())
+          samples.push_back(std::move(s));
+      for (const auto &s : samples)
+        if (s.actuation.role == "pressure" && s.actuation.pressure != 0)
+          bending.push_back(&s);
+
+      const reduction::JointLayout layout(mesh.X, a, 0, argv[1]);
+      const auto body = std::make_shared<const reduction::BodySamples>(mesh, a / 8, argv[1]);
+      const reduction::NeutralLayer layer(*body, layout, bending);
+      const double                  bottom = body->reference_box().min()(1);
+      const double                  length = body->reference_box().sizes()(0);
+      std::printf("%s: %s\n", argv[1], layer.description().c_str());
+
+      struct Placement
+      {
+        std::string              name;
+        reduction::JointGeometry geometry;
+      };
+      std::vector<Placement> placements;
+      placements.push_back({"paper: bounding-box centres", {layout, mesh, fraction * a}});
+      placements.push_back({"bottom face", {layout, body, bottom + 1e-6, fraction * a}});
+      placements.push_back({"strain-limiting layer", {layout, body, layer.height(), fraction * a}});
+
+      const chain::TipPoseFit tip_fit = chain::TipPoseFit::of_mesh(mesh, argv[1]);
+      std::printf("\ntip error of the chain driven by the FEM's M2 rotations (b = %.2f a), "
+                  "%% of L = %.1f mm / deg\n\n",
+                  fraction, 1e3 * length);
+      std::printf("| sample | role | p [kPa] | |f| [N] |");
+      for (const auto &p : placements)
+        std::printf(" %s |", p.name.c_str());
+      std::printf("\n| --- | --- | ---: | ---: |");
+      for (std::size_t k = 0; k < placements.size(); ++k)
+        std::printf(" ---: |");
+      std::printf("\n");
+      std::vector<Floor> worst(placements.size(), {0, 0});
+      for (const auto &s : samples)
+        {
+          double force = 0;
+          for (const auto &f : s.actuation.point_forces)
+            force += Eigen::Vector3d(f.force[0], f.force[1], f.force[2]).norm();
+          std::printf("| %s | %s | %.0f | %.2f |", s.id.substr(0, 8).c_str(),
+                      s.actuation.role.c_str(), 1e-3 * s.actuation.pressure, force);
+          for (std::size_t k = 0; k < placements.size(); ++k)
+            {
+              const Floor f = floor_of(placements[k].geometry, s, tip_fit, mesh);
+              worst[k]      = {std::max(worst[k].position, f.position), std::max(worst[k].angle, f.angle)};
+              std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
+            }
+          std::printf("\n");
+        }
+      std::printf("| max | | | |");
+      for (const Floor &f : worst)
+        std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
+      std::printf("\n");
+    }
+  catch (const std::exception &e)
+    {
+      std::fprintf(stderr, "chain_kinematic_floor: %s\n", e.what());
+      return 1;
+    }
+  return 0;
+}

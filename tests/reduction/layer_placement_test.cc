@@ -1,0 +1,328 @@
+// Joints on the strain-limiting layer (JointGeometry, BodySamples,
+// NeutralLayer) on structured box meshes of tetrahedra and hexahedra under
+// closed-form deformations: an affine map, a finger hinged at its joints on
+// the layer, bending onto an arc about the layer, a uniform stretch.
+#include <softchain/data/input_error.h>
+#include <softchain/data/joint_angles.h>
+#include <softchain/reduction/joint_geometry.h>
+#include <softchain/reduction/neutral_layer.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "../chain/box_mesh.h"
+
+using namespace softchain;
+using namespace softchain::reduction;
+using softchain::chain::testing::box_mesh;
+using softchain::chain::testing::BoxMeshSpec;
+
+namespace
+{
+  constexpr double mm = 1e-3;
+  constexpr double a  = 10 * mm;
+  // Coordinates are <= 0.1 m and every map is evaluated in a few flops, so
+  // positions agree to ~1e-17 m; angles from SVDs of slabs >= 3 mm wide to
+  // ~1e-14 rad. "Exact" below leaves a margin of 100 over both.
+  constexpr double exact_position = 1e-15; // m
+  constexpr double exact_angle    = 1e-12; // rad
+
+  const std::vector<RotationMethod> both_methods = {RotationMethod::bounding_box,
+                                                    RotationMethod::affine_fit};
+
+  // 90 mm x 12 mm x 16 mm, y from -2 mm (the layer y = 0 is 2 mm above the
+  // bottom), hollow with 2 mm walls, 5 mm long cells: 9 joints at
+  // 5, 15, ..., 85 mm, each on a node plane.
+  data::MeshRecord finger_mesh(bool tetrahedra)
+  {
+    BoxMeshSpec spec;
+    spec.wall_cells = 1;
+    spec.tetrahedra = tetrahedra;
+    return box_mesh(spec);
+  }
+
+  Eigen::Vector3d vector_of(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
+
+  std::vector<data::Point3> deform(const std::vector<data::Point3> &X,
+                                   const std::function<Eigen::Vector3d(const Eigen::Vector3d &)> &map)
+  {
+    std::vector<data::Point3> x;
+    for (const auto &p : X)
+      {
+        const Eigen::Vector3d y = map(vector_of(p));
+        x.push_back({y(0), y(1), y(2)});
+      }
+    return x;
+  }
+
+  // A chain of rigid links through the joints J_k,0 with relative rotations
+  // E_k (R_0 = I): c_1 = J_1,0, c_k+1 = c_k + R_k (J_k+1,0 - J_k,0),
+  // tip = c_n + R_n (T - J_n,0). Returns the joint positions, then the tip.
+  std::vector<Eigen::Vector3d> chain_positions(const JointGeometry &geometry,
+                                               const std::vector<Eigen::Matrix3d> &relative,
+                                               const Eigen::Vector3d &tip)
+  {
+    std::vector<Eigen::Vector3d> c = {geometry.reference_centre(0)};
+    Eigen::Matrix3d              R = Eigen::Matrix3d::Identity();
+    for (std::size_t k = 0; k < relative.size(); ++k)
+      {
+        R                         = R * relative[k];
+        const Eigen::Vector3d next = k + 1 < relative.size() ? geometry.reference_centre(k + 1) : tip;
+        c.push_back(c.back() + R * (next - geometry.reference_centre(k)));
+      }
+    return c;
+  }
+
+  // The finger hinged at its joints on the layer y = 0: segment 0 is the
+  // base up to x_1, segment k = 1..n the material of link k, moved rigidly by
+  // the chain of relative rotations E_k about the joints:
+  //   X -> c_k + R_k (X - J_k,0),  R_k = E_1 ... E_k.
+  struct Hinged
+  {
+    std::vector<Eigen::Matrix3d> relative;
+    std::vector<Eigen::Vector3d> joints; // J_k,0 on the layer
+
+    Eigen::Vector3d operator()(const Eigen::Vector3d &X, std::size_t segment) const
+    {
+      Eigen::Vector3d c = joints[0];
+      Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+      for (std::size_t k = 1; k <= segment; ++k)
+        {
+          if (k > 1)
+            c += R * (joints[k - 1] - joints[k - 2]);
+          R = R * relative[k - 1];
+        }
+      return segment == 0 ? X : Eigen::Vector3d(c + R * (X - joints[segment - 1]));
+    }
+  };
+
+  Hinged hinged(int n_joints)
+  {
+    Hinged h;
+    for (int k = 0; k < n_joints; ++k)
+      {
+        h.joints.emplace_back((k + 0.5) * a, 0.0, 0.0);
+        h.relative.push_back(data::rotation_from_angles({0.02 * k, -0.05 + 0.01 * k, -0.15 - 0.02 * k}));
+      }
+    return h;
+  }
+
+  // The finger of finger_mesh() cut at the joint planes into separate
+  // meshes of its segments (nodes on a cut belong to both sides), so that
+  // each segment can move rigidly; the segment of every node.
+  struct SegmentedMesh
+  {
+    data::MeshRecord         mesh;
+    std::vector<std::size_t> segment;
+  };
+
+  SegmentedMesh segmented_mesh(bool tetrahedra)
+  {
+    SegmentedMesh result;
+    const std::vector<double> cuts = {0, 5, 15, 25, 35, 45, 55, 65, 75, 85, 90};
+    for (std::size_t s = 0; s + 1 < cuts.size(); ++s)
+      {
+        BoxMeshSpec spec;
+        spec.length     = (cuts[s + 1] - cuts[s]) * mm;
+        spec.nx         = int(std::lround((cuts[s + 1] - cuts[s]) / 5));
+        spec.wall_cells = 1;
+        spec.tetrahedra = tetrahedra;
+        const data::MeshRecord part   = box_mesh(spec);
+        const std::int64_t     offset = std::int64_t(result.mesh.X.size());
+        for (const auto &X : part.X)
+          {
+            result.mesh.X.push_back({X[0] + cuts[s] * mm, X[1], X[2]});
+            result.segment.push_back(s);
+          }
+        for (const auto node : part.cells)
+          result.mesh.cells.push_back(node + offset);
+        result.mesh.nodes_per_cell = part.nodes_per_cell;
+      }
+    return result;
+  }
+
+  data::SampleRecord sample_of(const std::vector<data::Point3> &x, double pressure)
+  {
+    data::SampleRecord s;
+    s.id                 = "closed-form";
+    s.actuation.role     = "pressure";
+    s.actuation.pressure = pressure;
+    s.x                  = x;
+    return s;
+  }
+} // namespace
+
+TEST_CASE("the body lattice samples the volume and moves exactly with an affine field")
+{
+  for (const bool tetrahedra : {true, false})
+    {
+      const data::MeshRecord mesh = finger_mesh(tetrahedra);
+      const BodySamples      body(mesh, 1 * mm, "box");
+      // Walls and faces lie on multiples of 1 mm from the box corner and the
+      // lattice at half-integers: the count is the body's volume in mm^3,
+      // 90 x (12 x 16 - 8 x 12) = 8640, with no point on a face.
+      CHECK(body.lattice().size() == 8640);
+      CHECK_FALSE(body.locate({45 * mm, 4 * mm, 0}));  // in the cavity
+      CHECK_FALSE(body.locate({45 * mm, 11 * mm, 0})); // above the body
+      CHECK(body.locate({45 * mm, -1 * mm, 0}));
+
+      Eigen::Matrix3d F;
+      F << 1.1, 0.2, -0.1, 0.05, 0.9, 0.3, -0.2, 0.1, 1.3;
+      const Eigen::Vector3d c(0.01, -0.02, 0.03);
+      const auto affine = [&](const Eigen::Vector3d &X) -> Eigen::Vector3d { return F * X + c; };
+      const auto moved  = body.deformed_lattice(deform(mesh.X, affine));
+      double     error  = 0;
+      for (std::size_t q = 0; q < moved.size(); ++q)
+        error = std::max(error, (vector_of(moved[q]) - affine(vector_of(body.lattice()[q]))).norm());
+      CHECK(error < exact_position * 10); // the hexahedra's Newton inverse adds ~1e-16 m
+    }
+}
+
+TEST_CASE("a finger hinged at its joints on the layer is reduced exactly by M1 and M2")
+{
+  for (const bool tetrahedra : {true, false})
+    {
+      const SegmentedMesh segmented = segmented_mesh(tetrahedra);
+      const auto         &mesh      = segmented.mesh;
+      const JointLayout   layout(mesh.X, a, 0, "box");
+      REQUIRE(layout.n_joints() == 9);
+      const auto   body   = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+      const Hinged motion = hinged(layout.n_joints());
+      std::vector<data::Point3> x;
+      for (std::size_t j = 0; j < mesh.X.size(); ++j)
+        {
+          const Eigen::Vector3d y = motion(vector_of(mesh.X[j]), segmented.segment[j]);
+          x.push_back({y(0), y(1), y(2)});
+        }
+      for (const double b : {a / 2, a / 3})
+        for (const auto method : both_methods)
+          {
+            const JointGeometry geometry(layout, body, 0.0, b);
+            const JointFrames   frames(method, geometry.slabs(), geometry.reference_points(),
+                                       geometry.points(x), "hinged");
+            std::vector<Eigen::Matrix3d> relative;
+            for (std::size_t k = 0; k < frames.size(); ++k)
+              {
+                relative.push_back(data::rotation_from_angles(frames.relative_angles(k)));
+                CHECK((relative.back() - motion.relative[k]).norm() < exact_angle);
+                CHECK((geometry.deformed_centre(k, frames, x) -
+                       motion(geometry.reference_centre(k), k + 1))
+                        .norm() < exact_position * 100);
+              }
+            const Eigen::Vector3d tip(90 * mm, 0, 0);
+            CHECK((chain_positions(geometry, relative, tip).back() - motion(tip, 9)).norm() <
+                  exact_position * 100);
+          }
+    }
+}
+
+TEST_CASE("pure bending about the layer: its height is measured and the chain's tip "
+          "misses only by the chords of the arc")
+{
+  // Bending onto an arc of radius R about z, distal to the first joint (the
+  // base up to x_1 stays): the section at X > x_1 turns by -(X - x_1) / R
+  // about the centre (x_1, -R, 0), so that the fibre y = 0 keeps its length.
+  const double R      = 0.05;
+  const double x1     = a / 2;
+  const auto   arc    = [&](const Eigen::Vector3d &X) -> Eigen::Vector3d {
+    if (X.x() <= x1)
+      return X;
+    const double angle = (X.x() - x1) / R;
+    return {x1 + (R + X.y()) * std::sin(angle), -R + (R + X.y()) * std::cos(angle), X.z()};
+  };
+  for (const bool tetrahedra : {true, false})
+    {
+      const data::MeshRecord   mesh = finger_mesh(tetrahedra);
+      const JointLayout        layout(mesh.X, a, 0, "box");
+      const auto               body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+      const data::SampleRecord bent = sample_of(deform(mesh.X, arc), 1e4);
+      const NeutralLayer       layer(*body, layout, {&bent});
+      REQUIRE(layer.measured());
+      // The probe lines join points interpolated linearly in cells h = 2 mm
+      // high and 5 mm long; a chord of the arc of a 1.25 mm probe step is
+      // short by (s/R)^2/24 = 2.6e-5 relative, i.e. y_n is low by
+      // R 2.6e-5 = 1.3e-3 mm; 0.05 mm bounds both.
+      CHECK(layer.height() == Approx(0).margin(0.05 * mm));
+
+      const JointGeometry geometry(layout, body, layer.height(), a / 2);
+      const JointFrames   frames(RotationMethod::affine_fit, geometry.slabs(),
+                                 geometry.reference_points(), geometry.points(bent.x), "arc");
+      std::vector<Eigen::Matrix3d> relative;
+      for (std::size_t k = 0; k < frames.size(); ++k)
+        relative.push_back(data::rotation_from_angles(frames.relative_angles(k)));
+      const Eigen::Vector3d tip(90 * mm, layer.height(), 0);
+      const double          miss = (chain_positions(geometry, relative, tip).back() - arc(tip)).norm();
+      // Each rigid link is the chord of an arc of its length l, short by
+      // l^3 / (24 R^2): 8 links of 10 mm and one of 5 mm give 0.135 mm; the
+      // links' directions (the slabs' M2 rotations) add a little.
+      const double chords = (8 * std::pow(a, 3) + std::pow(a / 2, 3)) / (24 * R * R);
+      CHECK(miss < 1.5 * chords);
+      CHECK(miss < 0.002 * 0.09); // 0.2 % of L
+    }
+}
+
+TEST_CASE("a uniformly stretched finger: the stretch is recovered and no layer is measured")
+{
+  const double lambda = 1.07;
+  for (const bool tetrahedra : {true, false})
+    {
+      const data::MeshRecord   mesh = finger_mesh(tetrahedra);
+      const JointLayout        layout(mesh.X, a, 0, "box");
+      // 1 mm: a lattice symmetric about the section's centre.
+      const auto               body = std::make_shared<const BodySamples>(mesh, 1 * mm, "box");
+      const data::SampleRecord stretched = sample_of(
+        deform(mesh.X, [&](const Eigen::Vector3d &X) -> Eigen::Vector3d {
+          return {lambda * X.x(), X.y(), X.z()};
+        }),
+        1e4);
+      const NeutralLayer layer(*body, layout, {&stretched});
+      CHECK_FALSE(layer.measured());
+      // The fallback is the centroid of the hollow section: y from -2 to 10 mm,
+      // the cavity's 8 mm x 12 mm centred at y = 4 mm like the outline.
+      CHECK(layer.height() == Approx(4 * mm).margin(1e-12));
+      const JointGeometry geometry(layout, body, 0.0, a / 3);
+      const JointFrames   frames(RotationMethod::affine_fit, geometry.slabs(),
+                                 geometry.reference_points(), geometry.points(stretched.x), "s");
+      for (std::size_t k = 0; k < frames.size(); ++k)
+        {
+          CHECK(frames[k].stretches(0) == Approx(lambda).margin(1e-12));
+          CHECK(frames[k].stretches(2) == Approx(1).margin(1e-12));
+        }
+    }
+}
+
+TEST_CASE("hexahedra with node planes 5.5 mm apart reduce at b = a/3 on the layer, not by nodes")
+{
+  BoxMeshSpec spec;
+  spec.length     = 0.088;
+  spec.nx         = 16; // 5.5 mm cells: nodes on planes 5.5 mm apart
+  spec.wall_cells = 1;
+  const data::MeshRecord mesh = box_mesh(spec);
+  const JointLayout      layout(mesh.X, a, 0, "box");
+  const Hinged           motion = hinged(layout.n_joints());
+  const auto x = deform(mesh.X, [&](const Eigen::Vector3d &X) -> Eigen::Vector3d {
+    return motion(X, std::size_t(layout.n_joints())); // a rigid motion: any sample will do
+  });
+  // By nodes, a slab 6.7 mm wide around x = 5 mm holds one node plane.
+  CHECK_THROWS_WITH(JointFrames(RotationMethod::affine_fit, JointGeometry(layout, mesh, a / 3).slabs(),
+                                mesh.X, x, "hex"),
+                    Catch::Contains("one plane"));
+  const auto          body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+  const JointGeometry geometry(layout, body, 0.0, a / 3);
+  for (const auto method : both_methods)
+    CHECK_NOTHROW(JointFrames(method, geometry.slabs(), geometry.reference_points(),
+                              geometry.points(x), "hex"));
+}
+
+TEST_CASE("a joint height outside the body is an error naming the joint")
+{
+  const data::MeshRecord mesh = finger_mesh(true);
+  const JointLayout      layout(mesh.X, a, 0, "box");
+  const auto             body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+  CHECK_THROWS_WITH(JointGeometry(layout, body, 4 * mm, a / 2), // inside the cavity
+                    Catch::Contains("joint 1") && Catch::Contains("outside the body"));
+  data::MeshRecord no_cells = mesh;
+  no_cells.cells.clear();
+  CHECK_THROWS_AS(BodySamples(no_cells, a / 8, "box"), data::InputError);
+}
