@@ -1,4 +1,5 @@
 #include <softchain/chain/stiffness_files.h>
+#include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/report/paper_claims.h>
 
@@ -14,6 +15,22 @@ namespace softchain::report
 {
   namespace
   {
+    // Height (y extent) of the mesh nodes within 2 % of the length from the
+    // base face and from the tip face.
+    std::pair<double, double> end_heights(const data::MeshRecord &mesh)
+    {
+      double x_min = INFINITY, x_max = -INFINITY;
+      for (const auto &X : mesh.X)
+        x_min = std::min(x_min, X[0]), x_max = std::max(x_max, X[0]);
+      const double band = 0.02 * (x_max - x_min);
+      double       base[2] = {INFINITY, -INFINITY}, tip[2] = {INFINITY, -INFINITY};
+      for (const auto &X : mesh.X)
+        for (double *end : {X[0] <= x_min + band ? base : nullptr, X[0] >= x_max - band ? tip : nullptr})
+          if (end)
+            end[0] = std::min(end[0], X[1]), end[1] = std::max(end[1], X[1]);
+      return {base[1] - base[0], tip[1] - tip[0]};
+    }
+
     namespace fs = std::filesystem;
 
     // Rotations below the reduction's default threshold (0.1 degree) give
@@ -228,7 +245,7 @@ namespace softchain::report
     const std::string file = stiffness_directory(in_.design_name) + "/" + label("M2") + ".csv";
     if (!fs::exists(file))
       return claim("2a", statement, Verdict::not_measurable, "no " + file);
-    const Series k = read_series(file, "k_phi"), centre = read_series(file, "Jy");
+    const Series k = read_series(file, "k_phi");
     if (k.value.size() < 3)
       return claim("2a", statement, Verdict::not_measurable, "fewer than 3 joints with a k_φ in " + file);
     const std::vector<double> x(k.x.begin() + 1, k.x.end()), v(k.value.begin() + 1, k.value.end());
@@ -236,12 +253,16 @@ namespace softchain::report
     const std::string measured = "joints " + std::to_string(k.joint[1]) + "–" +
                                  std::to_string(k.joint.back()) + ": " + joined(v) +
                                  " N m/rad; trend over them " + percent(change) + " of the mean";
-    // The joint centres sit mid-height of the section: their height
-    // follows the taper. Within 10 % the finger counts as untapered.
-    const double h0 = centre.value.front(), h1 = centre.value.back();
+    // The finger's height at its base and at its tip, from the database's
+    // mesh (the joints may all sit on the strain-limiting layer, at one
+    // height). Within 10 % the finger counts as untapered.
+    const std::string database = in_.output_directory + "/database.h5";
+    if (!fs::exists(database))
+      return claim("2a", statement, Verdict::not_measurable, "no " + database);
+    const auto [h0, h1] = end_heights(data::ActuationDatabase::open(database).mesh());
     if (std::abs(h1 - h0) <= 0.1 * std::abs(h0))
       return claim("2a", statement, Verdict::not_measurable,
-                   "this finger is not tapered (joint centre height " + fmt(1e3 * h0) + " → " +
+                   "this finger is not tapered (height " + fmt(1e3 * h0) + " → " +
                      fmt(1e3 * h1) + " mm); " + measured);
     return claim("2a", statement, change < 0 ? Verdict::holds : Verdict::does_not_hold, measured);
   }

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 #include "synthetic_outputs.h"
 
 using namespace softchain::report;
@@ -84,12 +86,24 @@ TEST_CASE("Claim 2a: k_phi along a tapered finger, not measurable on an untapere
 {
   Outputs                   outputs;
   const std::vector<double> falling = {0.05, 0.03, 0.025, 0.02, 0.015};
-  const std::vector<double> tapered = {0.009, 0.0085, 0.008, 0.0075, 0.007};
+  // The finger's height at base and tip comes from its database's mesh: a
+  // box, then the same box 40 % lower at the tip than at the base.
+  const auto write_mesh = [&](double tip_scale) {
+    softchain::chain::testing::BoxMeshSpec spec;
+    softchain::data::MeshRecord mesh = softchain::chain::testing::box_mesh(spec);
+    for (auto &X : mesh.X)
+      X[1] *= 1 - (1 - tip_scale) * X[0] / spec.length;
+    std::filesystem::remove(outputs.root.file("finger/database.h5"));
+    softchain::data::ActuationDatabase::open_or_create(outputs.root.file("finger/database.h5"),
+                                            {"finger", "hash", "Q1", "test", ""}, mesh);
+  };
   stiffness_table(level, falling, level).write(outputs.stiffness() + ".csv");
+  CHECK(outputs.claim("2a").verdict == Verdict::not_measurable); // no database
+  write_mesh(1.0);
   CHECK(outputs.claim("2a").verdict == Verdict::not_measurable);
-  stiffness_table(level, falling, tapered).write(outputs.stiffness() + ".csv");
+  write_mesh(0.6);
   CHECK(outputs.claim("2a").verdict == Verdict::holds);
-  stiffness_table(level, {0.05, 0.015, 0.02, 0.025, 0.03}, tapered).write(outputs.stiffness() + ".csv");
+  stiffness_table(level, {0.05, 0.015, 0.02, 0.025, 0.03}, level).write(outputs.stiffness() + ".csv");
   CHECK(outputs.claim("2a").verdict == Verdict::does_not_hold);
 }
 
