@@ -1,4 +1,4 @@
-// Speed of the chain tier (issue 6): one equilibrium of a 9-joint finger from
+// Speed of the chain tier: one equilibrium of a 9-joint finger from
 // rest, a sweep of 100 pressures with warm starts, a 5-finger hand (45
 // joints), and the heap memory of one finger (model + solver workspace).
 // The paper's SOFA chain took about 6 ms per finger (Sec. V).

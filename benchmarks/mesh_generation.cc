@@ -1,4 +1,4 @@
-// Mesh generation benchmark (issue 3): for each shipped design, element shape
+// Mesh generation benchmark: for each shipped design, element shape
 // and resolution, the time of generate_design() with an empty cache (gmsh
 // runs) and with a warm cache (read + mesh checks only), and the sizes of the
 // mesh and of the spring networks, and the relative errors of the mesh's

@@ -1,4 +1,4 @@
-// Sweep benchmark (issue 4): the paper's extraction set for one design -- 8
+// Sweep benchmark: the paper's extraction set for one design -- 8
 // pressures 10..80 kPa, 10 lateral tip forces and 10 torsion couples
 // 0.1..1 N at p = 0 (28 samples) -- swept three times by the softchain
 // executable: with continuation, without (every sample from rest), and a

@@ -2,7 +2,7 @@
 // BuiltInBender: the default demo finger, a hollow box (length x height x
 // width, wall thickness t) clamped at x = 0, closed at the tip, with a fabric
 // spring grid in the bottom wall (smallest y) and thread rings around the
-// cross-section every `thread pitch` (issue 2's demo: 80 x 12 x 18 mm, 2 mm
+// cross-section every `thread pitch` (the demo bender: 80 x 12 x 18 mm, 2 mm
 // walls). Built with deal.II's structured generator, no gmsh needed.
 #include <softchain/finger_mesh.h>
 

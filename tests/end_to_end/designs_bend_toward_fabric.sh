@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 3: one `softchain solve` per shipped design (P10, P13, parallelepiped;
+# One `softchain solve` per shipped design (P10, P13, parallelepiped;
 # Resolution 0, P2) at 40 kPa converges and bends toward -y (the fabric
 # side), and P13 (6 mm walls) bends less than P10 (2.5 mm walls).
 #   designs_bend_toward_fabric.sh SOFTCHAIN PARAMETER_DIR

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 8: a user copies parameter_files/p10.prm, edits it (another name,
+# A user copies parameter_files/p10.prm, edits it (another name,
 # another pressure list, thinner walls) and runs `softchain run` on the copy:
 # the whole pipeline works without touching code, and the edit takes effect.
 #   edited_design_run.sh SOFTCHAIN PARAMETER_DIR

@@ -62,7 +62,7 @@ TEST_CASE("softchain run goes from the .prm to the stiffness and validation tabl
 
 TEST_CASE("tiny loads (1 Pa, 1e-5 N) give no stiffness rather than garbage")
 {
-  // Issue 7: at 1 Pa and 1e-5 N the joint rotations are ~1e-6 rad, far below
+  // At 1 Pa and 1e-5 N the joint rotations are ~1e-6 rad, far below
   // the default Reduction/Rotation threshold (0.1 degree = 1.7e-3 rad), where
   // k = tau / phi would divide round-off by round-off. Every stiffness must
   // come out NaN ("no value"), counted in a warning, never inf or a number.

@@ -1,4 +1,4 @@
-// Cross-check with an independent FEM code (issue 7): CalculiX (ccx 2.20,
+// Cross-check with an independent FEM code: CalculiX (ccx 2.20,
 // Debian calculix-ccx) and SoftChain solve the same large-deflection
 // cantilever -- a 100 x 10 x 10 mm neo-Hookean block, E = 2.6e5 Pa,
 // nu = 0.48, clamped at x = 0, a dead tip load along y -- on the same mesh

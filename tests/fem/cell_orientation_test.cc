@@ -1,4 +1,4 @@
-// Inverted and distorted cells (issue 7): the corner test of
+// Inverted and distorted cells: the corner test of
 // cell_orientation.h on meshes with a known answer, and the refusal of an
 // inverted cell before any solve.
 #include <softchain/cell_orientation.h>

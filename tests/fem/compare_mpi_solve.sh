@@ -5,7 +5,7 @@
 # solve_summary.csv: the converged flag and the counts equal, the load factor
 # and the cavity volume to relative 1e-8, the tip displacement vector to 1e-8
 # of its length (a component that is zero by symmetry is round-off on both
-# runs) (issue 2: one code path in serial and in parallel).
+# runs) (one code path in serial and in parallel).
 set -eu
 mpiexec=$1 softchain=$2 prm=$3
 for n in 1 2; do

@@ -1,4 +1,4 @@
-// Numerical-stability scenarios (issue 7), each small enough for CI: every
+// Numerical-stability scenarios, each small enough for CI: every
 // run must end converged or stopped with a named reason -- never NaN, a
 // crash or a silent wrong state.
 #include "fem_test_tools.h"

@@ -1,4 +1,4 @@
-// Volume-controlled inflation (issue 7): the cavity's volume is prescribed
+// Volume-controlled inflation: the cavity's volume is prescribed
 // and the pressure solved for, which traces the pressure-volume curve of an
 // unreinforced bender through its balloon limit point, where pressure
 // control stops.

@@ -1,5 +1,5 @@
 #pragma once
-// ChainValidation: the point of the pipeline (issue 6, paper Sec. IV-B):
+// ChainValidation: the point of the pipeline (paper Sec. IV-B):
 // the chain's tip pose against the FEM tip pose for database samples that
 // were not (all) used in the extraction. Per sample and model: tip position
 // error |x_chain - x_FEM| (mm and % of the finger length L) and orientation

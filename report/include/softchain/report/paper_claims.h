@@ -1,5 +1,5 @@
 #pragma once
-// PaperClaims: the paper's qualitative claims (Sec. IV-A, V; issue 8 lists
+// PaperClaims: the paper's qualitative claims (Sec. IV-A, V; the report lists
 // six) checked on one design's outputs, each with a verdict and the numbers
 // behind it. Everything is computed from the CSV files of the reduction and
 // chain tiers:
