@@ -1,16 +1,16 @@
 // The chain's kinematic floor: the tip error of a chain of rigid links that
 // is driven by the FEM's own rotations, so that no stiffness is involved.
 // For every converged sample of a database and each joint placement
-// (the paper's bounding-box centres, joints on the strain-limiting layer):
-//   c_1 = J_1,0 (the clamped base carries joint 1),
-//   c_k+1 = c_k + R_k (J_k+1,0 - J_k,0),   tip = c_n + R_n (T_0 - J_n,0),
-// with R_k the M2 rotation of slab k (the joint's distal frame) and T_0 the
-// reference centroid of the tip face, against the FEM tip pose (centroid and
+// (the paper's bounding-box centres, joints on the strain-limiting layer),
+// the chain tier's KinematicChain through the reference joint centres at
+// the relative M2 angles of the slabs (c_1 = J_1,0: the clamped base carries
+// joint 1; the last link reaches the tip face's reference centroid), against the FEM tip pose (centroid and
 // Kabsch rotation of the deformed tip face). A stiffness-based chain cannot
 // beat this floor; the chain's validation error sits above it.
 //
 // Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5]
 #include <softchain/chain/angle_units.h>
+#include <softchain/chain/kinematic_chain.h>
 #include <softchain/chain/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/reduction/joint_geometry.h>
@@ -32,21 +32,28 @@ namespace
     double angle;    // rad
   };
 
+  // The chain tier's forward kinematics (KinematicChain) at the relative
+  // angles the reduction measured, against the FEM tip pose.
   Floor floor_of(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
                  const chain::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
   {
     const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
                                         geometry.reference_points(), geometry.points(sample.x),
                                         sample.id);
-    const std::size_t n = frames.size();
-    Eigen::Vector3d   c = geometry.reference_centre(0);
-    for (std::size_t k = 0; k + 1 < n; ++k)
-      c += frames[k].rotation * (geometry.reference_centre(k + 1) - geometry.reference_centre(k));
-    const Eigen::Vector3d tip =
-      c + frames[n - 1].rotation * (tip_fit.reference_centroid() - geometry.reference_centre(n - 1));
+    std::vector<Eigen::Vector3d> centres;
+    Eigen::VectorXd              q(3 * frames.size());
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      {
+        centres.push_back(geometry.reference_centre(k));
+        const data::JointAngles angles = frames.relative_angles(k);
+        q.segment<3>(3 * k) << angles.psi, angles.theta, angles.phi;
+      }
+    const chain::KinematicChain chain(centres, tip_fit.reference_centroid());
+    chain::ChainPose            pose = chain.rest_pose();
+    chain.update_pose(q, pose);
     const chain::TipPose fem = tip_fit.fit(chain::select_nodes(sample.x, mesh.tip_nodes));
-    return {(tip - fem.position).norm(),
-            chain::rotation_angle_between(frames[n - 1].rotation, fem.rotation)};
+    return {(pose.tip_position - fem.position).norm(),
+            chain::rotation_angle_between(pose.link_rotations.back(), fem.rotation)};
   }
 } // namespace
 

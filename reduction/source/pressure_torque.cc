@@ -55,12 +55,6 @@ namespace softchain::reduction
   }
 
   Eigen::Vector3d PressureTorque::per_pascal(const Eigen::Vector3d &centre,
-                                             const Eigen::Matrix3d &frame) const
-  {
-    return per_pascal(centre, frame, frame.col(0));
-  }
-
-  Eigen::Vector3d PressureTorque::per_pascal(const Eigen::Vector3d &centre,
                                              const Eigen::Matrix3d &frame,
                                              const Eigen::Vector3d &normal) const
   {

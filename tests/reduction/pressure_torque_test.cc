@@ -56,7 +56,7 @@ TEST_CASE("J_p of a straight prismatic cavity at rest is A times the centroid of
   for (const double x : {5 * mm, 15 * mm, 22.3 * mm, 44.9 * mm})
     {
       const Eigen::Vector3d J(x, 0, 0);
-      const Eigen::Vector3d got = jp.per_pascal(J, Eigen::Matrix3d::Identity());
+      const Eigen::Vector3d got = jp.per_pascal(J, Eigen::Matrix3d::Identity(), Eigen::Vector3d::UnitX());
       // p A (c - J) x e_x with c - J = (0, 1 mm, 0): -A * 1 mm about z.
       CHECK(got(0) == Approx(0).margin(tolerance));
       CHECK(got(1) == Approx(0).margin(tolerance));
@@ -67,7 +67,7 @@ TEST_CASE("J_p of a straight prismatic cavity at rest is A times the centroid of
     }
   // About a point off the centre line in z, the moment about y appears:
   // (c - J) x e_x = (0, 1 mm, 2 mm) x e_x = (0, 2 mm, -1 mm).
-  const Eigen::Vector3d got = jp.per_pascal({30 * mm, 0, -2 * mm}, Eigen::Matrix3d::Identity());
+  const Eigen::Vector3d got = jp.per_pascal({30 * mm, 0, -2 * mm}, Eigen::Matrix3d::Identity(), Eigen::Vector3d::UnitX());
   CHECK(got(1) == Approx(cavity_area * 2 * mm).margin(tolerance));
 }
 
@@ -81,14 +81,14 @@ TEST_CASE("J_p of the closed cavity cut at several planes, tilted and rotated")
                                       Eigen::Vector3d(31.7 * mm, -3 * mm, 1 * mm)})
         {
           const Eigen::Matrix3d frame = tilted_frame(about_z, about_y);
-          const Eigen::Vector3d got   = jp.per_pascal(J, frame);
+          const Eigen::Vector3d got   = jp.per_pascal(J, frame, frame.col(0));
           const Eigen::Vector3d want  = frame.transpose() * cap_moment(J, frame.col(0));
           CHECK((got - want).norm() < tolerance);
         }
   // Planes before the cavity and beyond it: the whole closed surface, then
   // none of it, is distal; both carry no moment.
   for (const double x : {-1 * mm, 51 * mm})
-    CHECK(jp.per_pascal({x, 0, 0}, tilted_frame(0.1, 0.1)).norm() < tolerance);
+    CHECK(jp.per_pascal({x, 0, 0}, tilted_frame(0.1, 0.1), tilted_frame(0.1, 0.1).col(0)).norm() < tolerance);
 }
 
 TEST_CASE("J_p turns with a rigid motion of finger and joint frame")
@@ -99,9 +99,9 @@ TEST_CASE("J_p turns with a rigid motion of finger and joint frame")
   const auto            moved = deform(finger.mesh.X, rigid_motion(Q, t));
   const Eigen::Vector3d J(22.3 * mm, 0, 0);
   const Eigen::Vector3d at_rest =
-    PressureTorque(finger.mesh.cavity_triangles, finger.mesh.X).per_pascal(J, Eigen::Matrix3d::Identity());
+    PressureTorque(finger.mesh.cavity_triangles, finger.mesh.X).per_pascal(J, Eigen::Matrix3d::Identity(), Eigen::Vector3d::UnitX());
   const Eigen::Vector3d after =
-    PressureTorque(finger.mesh.cavity_triangles, moved).per_pascal(Q * J + t, Q);
+    PressureTorque(finger.mesh.cavity_triangles, moved).per_pascal(Q * J + t, Q, Q.col(0));
   // In the joint frame J_p does not change: the joint frame moves with the body.
   CHECK((after - at_rest).norm() < tolerance);
 }

@@ -37,8 +37,9 @@ namespace softchain::reduction
   class BodySamples
   {
   public:
-    // Throws data::InputError naming `source` when the mesh has no cells or
-    // the spacing is not positive.
+    // Keeps a reference to `mesh`, which must outlive it. Throws
+    // data::InputError naming `source` when the mesh has no cells or the
+    // spacing is not positive.
     BodySamples(const data::MeshRecord &mesh, double spacing, const std::string &source);
 
     const Eigen::AlignedBox3d       &reference_box() const { return box_; }

@@ -27,9 +27,8 @@ namespace softchain::reduction
                    const std::vector<data::Point3>                &x);
 
     // J_p of the joint whose deformed centre is `centre` and whose frame is
-    // `frame` (columns: joint axes in world coordinates), in that frame; the
-    // section's normal is the frame's x axis unless `normal` is given.
-    Eigen::Vector3d per_pascal(const Eigen::Vector3d &centre, const Eigen::Matrix3d &frame) const;
+    // `frame` (columns: joint axes in world coordinates), in that frame, for
+    // the section through the centre with the given normal.
     Eigen::Vector3d per_pascal(const Eigen::Vector3d &centre, const Eigen::Matrix3d &frame,
                                const Eigen::Vector3d &normal) const;
 
