@@ -1,5 +1,5 @@
 // softchain: the command line of the three-tier pipeline
-// (ARCHITECTURE.md, "Command line").
+// (docs/conventions.md, "Command line and exit codes").
 #include <softchain/chain/chain_run.h>
 #include <softchain/commands.h>
 #include <softchain/data/input_error.h>

@@ -1,6 +1,6 @@
 #pragma once
 // Boundary ids of the FEM tier, assigned from the gmsh physical surface names
-// of ARCHITECTURE.md ("Mesh conventions").
+// of docs/conventions.md ("Boundary ids and mesh groups").
 #include <deal.II/base/types.h>
 
 namespace softchain::boundary

@@ -1,6 +1,6 @@
 #pragma once
-// The softchain commands (ARCHITECTURE.md, "Command line"). Each returns the
-// process exit status: 0 success, 1 bad input, 2 some sample failed.
+// The softchain commands (docs/conventions.md, "Command line and exit codes").
+// Each returns the process exit status: 0 success, 1 bad input, 2 some sample failed.
 #include <string>
 
 namespace softchain

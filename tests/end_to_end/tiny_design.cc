@@ -13,7 +13,7 @@ namespace softchain::testing
   namespace
   {
     // mpirun refuses to run as root without the OMPI_ variables
-    // (TOOLCHAIN.md). One BLAS thread per process: MUMPS's dense kernels
+    // (docs/toolchain.md, "MPI"). One BLAS thread per process: MUMPS's dense kernels
     // round differently with 2 OpenBLAS threads (a serial run) than with 1
     // (a rank bound to one core under mpirun), by a few ulps; with the same
     // thread count the samples of 1 and 2 ranks are the same bits.

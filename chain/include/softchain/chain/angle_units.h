@@ -1,5 +1,5 @@
 #pragma once
-// Radians inside, degrees in reports and messages only (ARCHITECTURE.md: SI).
+// Radians inside, degrees in reports and messages only (docs/conventions.md, "Units").
 #include <cmath>
 
 namespace softchain::chain

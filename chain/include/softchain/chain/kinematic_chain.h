@@ -5,7 +5,7 @@
 // reaches the tip point T). The clamped base carries everything proximal to J_0.
 //
 // Joint angles q = (psi_0, theta_0, phi_0, ..., psi_{n-1}, theta_{n-1},
-// phi_{n-1}) are the relative rotations of ARCHITECTURE.md with the shared
+// phi_{n-1}) are the relative rotations of docs/conventions.md ("Joints") with the shared
 // Euler convention (data/joint_angles.h): E(q_i) = Rx(psi) Ry(theta) Rz(phi),
 // the convention of the reduction that measured the angles.
 // Forward kinematics (R_{-1} = I, c_0 = J_0):

@@ -6,7 +6,7 @@
 //                                 k_psi_fit,k_theta_fit,k_phi_fit,n_psi,n_theta,n_phi
 //   <label>_kphi_vs_pressure.csv  pressure,joint,k_phi
 //   <label>_pressure_torque.csv   pressure,joint,jp_x,jp_y,jp_z
-// Joints are numbered 1..n (ARCHITECTURE.md) and listed in that order in the
+// Joints are numbered 1..n (docs/conventions.md, "Joints") and listed in that order in the
 // stiffness file. Bad content (missing column, missing or misnumbered joint,
 // NaN, zero or negative stiffness, NaN J_p) is an InputError naming the file
 // and row (rows counted from 1 after the header line). In the k_phi(p) table

@@ -1,5 +1,5 @@
 #pragma once
-// The one Euler convention of SoftChain (ARCHITECTURE.md, "Joints"), shared by
+// The one Euler convention of SoftChain (docs/conventions.md, "Euler angles"), shared by
 // the reduction and the chain tiers:
 //   R = Rx(psi) * Ry(theta) * Rz(phi)
 // psi: torsion about x, theta: lateral bending about y, phi: principal bending

@@ -1,7 +1,7 @@
 #pragma once
 // JointFrames: the deformed frame F_i of every joint of one sample by one
 // method, and the relative rotations between neighbours,
-//   R_i = R_{i-1}^T R_i^0   (R_0 = identity, ARCHITECTURE.md "Joints"),
+//   R_i = R_{i-1}^T R_i^0   (R_0 = identity, docs/conventions.md "Joints"),
 // read as angles with data::angles_from_rotation (R = Rx(psi) Ry(theta) Rz(phi)).
 // The deformed joint centre is the image of the reference centre under the
 // slab's affine fit, J_i = A_i J_i,0 + u_i, for both methods, so that M1 and

@@ -1,6 +1,6 @@
 #pragma once
 // JointLayout: where the chain's spherical joints sit along the finger
-// (ARCHITECTURE.md, "Joints"): joint i = 1..n at x_i = (i - 1/2) a on the
+// (docs/conventions.md, "Joints"): joint i = 1..n at x_i = (i - 1/2) a on the
 // long axis x, the base face being x = 0; n = round(L / a) with L the
 // x-extent of the reference mesh unless the .prm fixes n.
 #include <softchain/data/actuation_database.h>

@@ -1,6 +1,6 @@
 #pragma once
 // ObliqueView: the fixed parallel projection of the report's finger
-// pictures. The finger bends in the x-y plane (ARCHITECTURE.md: long axis +x,
+// pictures. The finger bends in the x-y plane (docs/conventions.md, "Axes": long axis +x,
 // fabric at the bottom, bending toward -y about z), so the viewer looks at
 // that plane from +z, raised a little above it and turned a little toward
 // the tip, which shows the top and the side walls as well as the bending.
