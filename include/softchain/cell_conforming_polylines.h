@@ -3,7 +3,7 @@
 // lies in one cell. An embedded link then couples the DoFs of that cell only
 // (instead of the union of two cells' DoFs), which keeps the tangent's
 // sparsity pattern that of the solid: on the demo finger (Q2) the springs
-// otherwise triple the cost of a sparse LU (README, "Linear solvers").
+// otherwise triple the cost of a sparse LU (docs/toolchain.md, "Linear solvers").
 // Physically the split point is one more material point of the embedded
 // fibre, so the fibre follows the body more closely.
 #include <softchain/spring_polyline.h>

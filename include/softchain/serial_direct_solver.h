@@ -2,10 +2,10 @@
 // SerialDirectSolver: K du = r by UMFPACK's multifrontal LU (BLAS-3 on dense
 // frontal matrices) for a run on one MPI rank. Trilinos' KLU is a
 // left-looking LU without supernodes: on the fill of a 3D Q2 mesh it is
-// several times slower (README, "Linear solvers").
+// several times slower (docs/toolchain.md, "Linear solvers").
 //
 // The tangent's sparsity pattern never changes during a solve, so the work
-// that depends on the pattern alone is done once (README, "Skipping work"):
+// that depends on the pattern alone is done once (docs/results.md, "What a solve skips"):
 //   - the compressed-row copy of K and, per Trilinos entry, its place in it,
 //     so that refreshing the values is one pass without searches;
 //   - UMFPACK's symbolic analysis (fill-reducing column ordering, frontal

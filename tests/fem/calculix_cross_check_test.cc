@@ -7,7 +7,7 @@
 // W = mu/2 (I1bar - 3) + kappa/4 (J^2 - 1 - 2 ln J) against CalculiX's NEO
 // HOOKE W = C10 (I1bar - 3) + (J - 1)^2 / D1 with C10 = mu/2, D1 = 2/kappa:
 // the volumetric terms agree to O((J - 1)^3), below 1e-6 here (|J - 1| <
-// 1e-2). The mean tip deflections must agree within 0.5 % (the issue's goal).
+// 1e-2). The mean tip deflections must agree within 0.5 % (the goal of this cross-check).
 #include "fem_test_tools.h"
 
 #include <softchain/boundary_average.h>
@@ -175,7 +175,7 @@ TEST_CASE("the cantilever agrees with CalculiX on the same mesh", "[fem][calculi
   REQUIRE(std::system("command -v ccx > /dev/null 2>&1") == 0); // scripts/setup installs calculix-ccx
   Triangulation<3> mesh;
   test::cantilever_block(mesh, {20, 2, 2}, L, h);
-  for (const double force : {0.05, 0.2, 0.5}) // N: the issue's range
+  for (const double force : {0.05, 0.2, 0.5}) // N: the range of the demo's tip loads
     {
       const std::string       name = "cantilever_" + std::to_string(int(1000 * force)) + "mN";
       test::MeshSolverFixture f(test::parameters_from_text(name, test::solid_prm("Q1", "split", E, nu)),
@@ -197,7 +197,7 @@ TEST_CASE("the hollow bender under follower pressure agrees with CalculiX", "[fe
   // the tip's axial displacement u_x is compared. Measured relative
   // differences 4.4e-4, 1.4e-3 and 3.8e-3 at 0.3, 1 and 3 kPa: they grow with
   // the (strongly nonlinear) ballooning of the flat walls, while the
-  // cantilever agrees to 2e-5; the issue's goal 0.5 % holds up to 3 kPa.
+  // cantilever agrees to 2e-5; the 0.5 % goal holds up to 3 kPa.
   const std::string prm = test::bender_prm("Q1", 8,
                                            "subsection Springs\n  set Generate for bender = false\nend\n"
                                            "subsection Materials\n  set Strain energy = split\nend\n");
