@@ -16,6 +16,9 @@ namespace softchain
       section.declare("Pressure sweep", "", "Pa, pressure-only samples (role pressure)");
       section.declare("Lateral tip forces", "", "N along +z at the force point (role lateral)");
       section.declare("Torsion couples", "", "N, two opposite forces along y (role torsion)");
+      section.declare("Force sample pressures", "0",
+                      "Pa: the lateral and torsion samples are made at each of these "
+                      "pressures, for k_theta(p) and k_psi(p)");
       section.declare("Torsion arm", "0", "m, half the z distance of the couple's points; "
                                           "0: a quarter of the tip face width");
       section.declare("Force point", "", "x,y,z; empty: centre of the tip face");
@@ -63,10 +66,13 @@ namespace softchain
       return {number(items[0], where), number(items[1], where), number(items[2], where)};
     }
 
-    std::string label(const std::string &role, const double value, const char *unit)
+    std::string label(const std::string &role, const double value, const char *unit,
+                      const double pressure = 0)
     {
       std::ostringstream text;
       text << role << ' ' << value << ' ' << unit;
+      if (pressure != 0)
+        text << " at " << pressure << " Pa";
       return text.str();
     }
 
@@ -87,10 +93,13 @@ namespace softchain
       return a;
     }
 
-    // The chain key: role and force points.
+    // The chain key: role, force points and, for samples with forces, the
+    // pressure (a chain of forces grows at one pressure).
     std::string chain_key(const data::Actuation &a)
     {
       std::string key = a.role;
+      if (!a.point_forces.empty())
+        key += " p " + data::canonical(a.pressure);
       for (const auto &f : a.point_forces)
         for (const double v : f.point)
           key += ' ' + data::canonical(v);
@@ -105,15 +114,18 @@ namespace softchain
       std::vector<Sample> samples;
       for (const double p : s.get_double_list("Pressure sweep"))
         samples.push_back({{p, {}, "pressure"}, label("pressure", p, "Pa"), ""});
-      for (const double f : s.get_double_list("Lateral tip forces"))
-        samples.push_back({{0.0, {{at, {0, 0, f}}}, "lateral"}, label("lateral", f, "N"), ""});
-      for (const double f : s.get_double_list("Torsion couples"))
-        samples.push_back({{0.0,
-                            {{{at[0], at[1], at[2] + arm}, {0, f, 0}},
-                             {{at[0], at[1], at[2] - arm}, {0, -f, 0}}},
-                            "torsion"},
-                           label("torsion", f, "N"),
-                           ""});
+      for (const double p : s.get_double_list("Force sample pressures"))
+        {
+          for (const double f : s.get_double_list("Lateral tip forces"))
+            samples.push_back({{p, {{at, {0, 0, f}}}, "lateral"}, label("lateral", f, "N", p), ""});
+          for (const double f : s.get_double_list("Torsion couples"))
+            samples.push_back({{p,
+                                {{{at[0], at[1], at[2] + arm}, {0, f, 0}},
+                                 {{at[0], at[1], at[2] - arm}, {0, -f, 0}}},
+                                "torsion"},
+                               label("torsion", f, "N", p),
+                               ""});
+        }
       const auto entries = split(s.get("Validation samples"), ';');
       for (std::size_t k = 0; k < entries.size(); ++k)
         if (!entries[k].empty())

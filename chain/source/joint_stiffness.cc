@@ -15,22 +15,25 @@ namespace softchain::chain
         throw std::invalid_argument("JointStiffness: stiffness must be positive and finite");
   }
 
-  void JointStiffness::set_bending_in_pressure(std::vector<PiecewiseLinear> bending_in_pressure)
+  void JointStiffness::set_in_pressure(int axis, std::vector<PiecewiseLinear> tables)
   {
-    if (static_cast<int>(bending_in_pressure.size()) != n_joints())
-      throw std::invalid_argument("JointStiffness: one k_phi(p) table per joint needed");
-    bending_in_pressure_ = std::move(bending_in_pressure);
+    if (axis < 0 || axis > 2 || static_cast<int>(tables.size()) != n_joints())
+      throw std::invalid_argument("JointStiffness: one k(p) table per joint and axis 0-2 needed");
+    in_pressure_[axis] = std::move(tables);
+  }
+
+  bool JointStiffness::depends_on_pressure() const
+  {
+    return !in_pressure_[0].empty() || !in_pressure_[1].empty() || !in_pressure_[2].empty();
   }
 
   Eigen::VectorXd JointStiffness::diagonal(double pressure) const
   {
     Eigen::VectorXd k(3 * n_joints());
     for (int i = 0; i < n_joints(); ++i)
-      {
-        k.segment<3>(3 * i) = per_joint_[i];
-        if (depends_on_pressure())
-          k[3 * i + 2] = bending_in_pressure_[i](pressure);
-      }
+      for (int axis = 0; axis < 3; ++axis)
+        k[3 * i + axis] = in_pressure_[axis].empty() ? per_joint_[i][axis] :
+                                                       in_pressure_[axis][i](pressure);
     return k;
   }
 } // namespace softchain::chain

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace softchain::chain
@@ -16,6 +17,9 @@ namespace softchain::chain
   {
     using data::CsvTable;
     using data::InputError;
+
+    // The k column of each axis: 0 psi (torsion), 1 theta (lateral), 2 phi.
+    const std::array<std::string, 3> k_columns_of_axis = {"k_psi", "k_theta", "k_phi"};
 
     std::string where(const std::string &path, std::size_t row)
     {
@@ -197,39 +201,44 @@ namespace softchain::chain
       return result;
     }
 
-    // k_phi(p) per joint from its usable values (see usable()); a joint
-    // without any keeps `fallback` (its k_phi from the stiffness table, rigid
-    // if that was not usable either). A non-positive value is skipped with a
-    // warning when `rigid`, else an input error.
-    std::vector<PiecewiseLinear> read_bending_in_pressure(const std::string &path, int n,
-                                                          const std::vector<Eigen::Vector3d> &fallback,
-                                                          const bool rigid)
+    // k(p) about `axis` per joint from the usable values of the table's k
+    // column (see usable()); a joint without any keeps `fallback` (its k
+    // from the stiffness table, rigid if that was not usable either). A
+    // non-positive value is skipped with a warning when `rigid`, else an
+    // input error. `n_pressures` returns the number of distinct pressures.
+    std::vector<PiecewiseLinear> read_k_in_pressure(const std::string &path, int n, int axis,
+                                                    const std::vector<Eigen::Vector3d> &fallback,
+                                                    const bool rigid, std::size_t &n_pressures)
     {
-      const CsvTable table = read_table(path, {"pressure", "joint", "k_phi"});
+      const std::string column = k_columns_of_axis[axis];
+      const CsvTable    table  = read_table(path, {"pressure", "joint", column});
       std::vector<std::map<double, double>> per_joint(n);
+      std::set<double>                      pressures;
       for (std::size_t row = 0; row < table.n_rows(); ++row)
         {
           const int    joint = joint_index(table, path, row, n);
-          const double k     = stiffness_entry(table, path, row, "k_phi");
+          const double k     = stiffness_entry(table, path, row, column);
+          pressures.insert(finite_number(table, path, row, "pressure"));
           if (std::isnan(k))
             continue; // no value at this pressure (rotation below threshold)
           if (!usable(k))
             {
               if (!rigid)
-                throw InputError(where(path, row) + "k_phi = " + table.text(row, "k_phi") +
+                throw InputError(where(path, row) + column + " = " + table.text(row, column) +
                                  " is not a positive finite stiffness");
-              std::cerr << "chain: warning: " << where(path, row) << "k_phi = "
-                        << table.text(row, "k_phi") << " is not positive; skipped\n";
+              std::cerr << "chain: warning: " << where(path, row) << column << " = "
+                        << table.text(row, column) << " is not positive; skipped\n";
               continue;
             }
           insert_consistent(per_joint[joint], finite_number(table, path, row, "pressure"), k,
                             path, row);
         }
+      n_pressures = pressures.size();
       std::vector<PiecewiseLinear> result;
       for (int i = 0; i < n; ++i)
         result.push_back(per_joint[i].empty() ?
-                           PiecewiseLinear({0.0}, {fallback[i][2]}) :
-                           in_pressure(per_joint[i], path, "k_phi for joint " + std::to_string(i + 1)));
+                           PiecewiseLinear({0.0}, {fallback[i][axis]}) :
+                           in_pressure(per_joint[i], path, column + " for joint " + std::to_string(i + 1)));
       return result;
     }
 
@@ -274,6 +283,7 @@ namespace softchain::chain
       (std::filesystem::path(stiffness_directory) / label(method, half_width_fraction)).string();
     stiffness_path_           = base + ".csv";
     bending_in_pressure_path_ = base + "_kphi_vs_pressure.csv";
+    force_in_pressure_paths_  = {base + "_kpsi_vs_pressure.csv", base + "_ktheta_vs_pressure.csv"};
     pressure_torque_path_     = base + "_pressure_torque.csv";
   }
 
@@ -296,8 +306,22 @@ namespace softchain::chain
       throw InputError(stiffness_path_ + ": the last joint lies beyond the finger's tip");
     JointStiffness stiffness(table.stiffness);
     if (in_pressure)
-      stiffness.set_bending_in_pressure(
-        read_bending_in_pressure(bending_in_pressure_path_, n, table.stiffness, rigid_where_missing));
+      {
+        std::size_t n_pressures = 0;
+        stiffness.set_in_pressure(2, read_k_in_pressure(bending_in_pressure_path_, n, 2,
+                                                        table.stiffness, rigid_where_missing,
+                                                        n_pressures));
+        // k_psi(p), k_theta(p) where the torsion (lateral) samples were made
+        // at more than one pressure; otherwise k stays the stiffness table's.
+        for (const int axis : {0, 1})
+          if (std::filesystem::exists(force_in_pressure_paths_[axis]))
+            {
+              auto tables = read_k_in_pressure(force_in_pressure_paths_[axis], n, axis,
+                                               table.stiffness, rigid_where_missing, n_pressures);
+              if (n_pressures > 1)
+                stiffness.set_in_pressure(axis, std::move(tables));
+            }
+      }
     return ChainModel(name, KinematicChain(std::move(table.joint_centres), tip),
                       std::move(stiffness),
                       actuation_from(read_pressure_torque(pressure_torque_path_, n), in_pressure));

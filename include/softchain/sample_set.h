@@ -5,10 +5,12 @@
 //   subsection Samples
 //     set Pressure sweep     = 10e3, 20e3, 30e3   # Pa, no force; role pressure
 //     set Lateral tip forces = 0.1, 0.2           # N along +z at the force
-//                                                 # point, p = 0; role lateral
+//                                                 # point; role lateral
 //     set Torsion couples    = 0.1, 0.2           # N: +F y at force point
 //                                                 # + (0,0,d), -F y at - (0,0,d),
-//                                                 # p = 0; role torsion
+//                                                 # role torsion
+//     set Force sample pressures = 0              # Pa: the lateral and torsion
+//                                                 # samples at each pressure
 //     set Torsion arm        = 0                  # d [m]; 0: a quarter of the
 //                                                 # tip face's extent along z
 //     set Force point        =                    # x,y,z; empty: the centre of
@@ -20,8 +22,8 @@
 //     set Continuation       = true  # start from the converged neighbour
 //   end
 //
-// Samples with the same role and the same force points form a continuation
-// chain, ordered by increasing load, so that each continues from the one
+// Samples with the same role, the same force points and (with forces) the
+// same pressure form a continuation chain, ordered by increasing load, so that each continues from the one
 // before it. deal.II-free: the FEM tier checks that the points lie inside the
 // body before any solve.
 #include <softchain/data/actuation_database.h>

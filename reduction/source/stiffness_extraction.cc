@@ -76,8 +76,8 @@ namespace softchain::reduction
   void StiffnessExtraction::extract_axis(const std::vector<SampleReduction> &samples,
                                          std::size_t joint, int axis, JointStiffness &stiffness)
   {
-    const SampleReduction *largest       = nullptr;
-    double                 sum_tau_angle = 0, sum_angle_squared = 0;
+    std::vector<const SampleReduction *> usable;
+    const SampleReduction               *largest = nullptr;
     for (const auto &sample : samples)
       {
         if (!feeds(sample, axis))
@@ -87,15 +87,28 @@ namespace softchain::reduction
             ++n_below_threshold_;
             continue;
           }
-        const JointResult &result = sample.joints()[joint];
-        const double       angle  = angle_about(result.angles, axis);
-        sum_tau_angle += result.torque(axis) * angle;
-        sum_angle_squared += angle * angle;
-        ++stiffness.n_used[axis];
+        usable.push_back(&sample);
         if (!largest || lighter(*largest, sample))
           largest = &sample;
       }
+    stiffness.n_used[axis]          = static_cast<int>(usable.size());
     stiffness.at_largest_load(axis) = largest ? single(*largest, joint, axis) : no_value;
-    stiffness.fit(axis)             = largest ? sum_tau_angle / sum_angle_squared : no_value;
+    stiffness.fit(axis)             = fit_over(usable, joint, axis);
+  }
+
+  double StiffnessExtraction::fit_over(const std::vector<const SampleReduction *> &samples,
+                                       std::size_t joint, int axis) const
+  {
+    double sum_tau_angle = 0, sum_angle_squared = 0;
+    for (const SampleReduction *sample : samples)
+      {
+        if (std::isnan(single(*sample, joint, axis)))
+          continue;
+        const JointResult &result = sample->joints()[joint];
+        const double       angle  = angle_about(result.angles, axis);
+        sum_tau_angle += result.torque(axis) * angle;
+        sum_angle_squared += angle * angle;
+      }
+    return sum_angle_squared > 0 ? sum_tau_angle / sum_angle_squared : no_value;
   }
 } // namespace softchain::reduction

@@ -2,6 +2,7 @@
 #include <softchain/reduction/stiffness_tables.h>
 
 #include <algorithm>
+#include <map>
 
 namespace softchain::reduction
 {
@@ -75,6 +76,20 @@ namespace softchain::reduction
     return table;
   }
 
+  CsvTable StiffnessTables::k_vs_pressure(int axis) const
+  {
+    const StiffnessExtraction &extraction = reduction_.stiffness();
+    std::map<double, std::vector<const SampleReduction *>> by_pressure;
+    for (const auto &sample : reduction_.samples())
+      if (extraction.feeds(sample, axis))
+        by_pressure[sample.pressure()].push_back(&sample);
+    CsvTable table({"pressure", "joint", axis == 0 ? "k_psi" : "k_theta"});
+    for (const auto &[pressure, group] : by_pressure)
+      for (std::size_t i = 0; i < reduction_.geometry().n_joints(); ++i)
+        table.add_row(std::vector<double>{pressure, double(i + 1), extraction.fit_over(group, i, axis)});
+    return table;
+  }
+
   CsvTable StiffnessTables::pressure_torque() const
   {
     CsvTable table({"pressure", "joint", "jp_x", "jp_y", "jp_z"});
@@ -96,6 +111,8 @@ namespace softchain::reduction
     stiffness().write(stem + ".csv");
     samples().write(stem + "_samples.csv");
     kphi_vs_pressure().write(stem + "_kphi_vs_pressure.csv");
+    k_vs_pressure(1).write(stem + "_ktheta_vs_pressure.csv");
+    k_vs_pressure(0).write(stem + "_kpsi_vs_pressure.csv");
     pressure_torque().write(stem + "_pressure_torque.csv");
   }
 } // namespace softchain::reduction

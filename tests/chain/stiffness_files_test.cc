@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -249,4 +250,40 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     std::filesystem::remove(files.pressure_torque_path());
     CHECK_THAT(error_of("value"), Catch::Contains(files.pressure_torque_path()));
   }
+}
+
+TEST_CASE("k_theta and k_psi follow their pressure tables only when these hold several pressures")
+{
+  softchain::testing::ScratchDirectory dir("chain_force_in_pressure");
+  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const UniformReduction               r;
+  testing::write_reduction(files, r);
+  // k at p = 0 is 2x the stiffness table's, 4x at p_max: the chain must
+  // take the table's values, and interpolate linearly between them.
+  const auto write_table = [&](int axis, const std::vector<double> &pressures) {
+    softchain::data::CsvTable table({"pressure", "joint", axis == 0 ? "k_psi" : "k_theta"});
+    for (const double p : pressures)
+      for (int i = 0; i < r.n; ++i)
+        table.add_row(std::vector<double>{p, double(i + 1), (2 + 2 * p / r.p_max) * r.k[axis]});
+    table.write(files.force_in_pressure_path(axis));
+  };
+  for (const int axis : {0, 1})
+    {
+      INFO("axis " << axis);
+      write_table(axis, {0.0}); // one pressure: no k(p), the stiffness table stands
+      CHECK(files.read_model("M2", tip, "value", true).stiffness().diagonal(0)[axis] ==
+            Approx(r.k[axis]).epsilon(1e-15));
+      write_table(axis, {0.0, r.p_max});
+      const ChainModel model = files.read_model("M2", tip, "value", true);
+      for (int i = 0; i < r.n; ++i)
+        {
+          CHECK(model.stiffness().diagonal(0)[3 * i + axis] == Approx(2 * r.k[axis]).epsilon(1e-15));
+          CHECK(model.stiffness().diagonal(0.5 * r.p_max)[3 * i + axis] ==
+                Approx(3 * r.k[axis]).epsilon(1e-15));
+        }
+      // Without interpolation in pressure the tables are not read.
+      CHECK(files.read_model("M2", tip, "value", false).stiffness().diagonal(r.p_max)[axis] ==
+            Approx(r.k[axis]).epsilon(1e-15));
+      std::filesystem::remove(files.force_in_pressure_path(axis));
+    }
 }

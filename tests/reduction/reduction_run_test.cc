@@ -247,6 +247,21 @@ TEST_CASE("run_reduction end to end on a synthetic database")
           check_relative(kp, r, "k_phi",
                          closed_form_kphi(s, int(kp.number(r, "joint")), b, kp.number(r, "pressure")));
 
+        // The lateral and torsion samples all lie at p = 0: one row per
+        // joint, their least-squares k (the fit columns above).
+        for (const auto &[file, column] : {std::pair{"_ktheta_vs_pressure.csv", "k_theta"},
+                                           std::pair{"_kpsi_vs_pressure.csv", "k_psi"}})
+          {
+            const CsvTable kp_force = CsvTable::read(stem + file);
+            CHECK(kp_force.columns() == std::vector<std::string>{"pressure", "joint", column});
+            REQUIRE(kp_force.n_rows() == 5);
+            for (std::size_t r = 0; r < kp_force.n_rows(); ++r)
+              {
+                CHECK(kp_force.number(r, "pressure") == 0);
+                check_relative(kp_force, r, column, k.number(r, std::string(column) + "_fit"));
+              }
+          }
+
         const CsvTable jp = CsvTable::read(stem + "_pressure_torque.csv");
         CHECK(jp.columns() == std::vector<std::string>{"pressure", "joint", "jp_x", "jp_y", "jp_z"});
         REQUIRE(jp.n_rows() == 3 * 5);

@@ -5,6 +5,9 @@
 //   <label>.csv                   joint,x_ref,Jx,Jy,Jz,k_psi,k_theta,k_phi,
 //                                 k_psi_fit,k_theta_fit,k_phi_fit,n_psi,n_theta,n_phi
 //   <label>_kphi_vs_pressure.csv  pressure,joint,k_phi
+//   <label>_kpsi_vs_pressure.csv, <label>_ktheta_vs_pressure.csv
+//                                 pressure,joint,k_psi (k_theta); optional, used
+//                                 when they hold more than one pressure
 //   <label>_pressure_torque.csv   pressure,joint,jp_x,jp_y,jp_z
 // Joints are numbered 1..n (docs/conventions.md, "Joints") and listed in that order in the
 // stiffness file. Bad content (missing column, missing or misnumbered joint,
@@ -14,6 +17,7 @@
 // row is skipped; a joint without any value is an error.
 #include <softchain/chain/chain_model.h>
 
+#include <array>
 #include <string>
 
 namespace softchain::chain
@@ -30,6 +34,8 @@ namespace softchain::chain
     const std::string &stiffness_path() const { return stiffness_path_; }
     const std::string &bending_in_pressure_path() const { return bending_in_pressure_path_; }
     const std::string &pressure_torque_path() const { return pressure_torque_path_; }
+    // k_psi(p) (axis 0) or k_theta(p) (axis 1).
+    const std::string &force_in_pressure_path(int axis) const { return force_in_pressure_paths_[axis]; }
     bool               exist() const;
 
     // The chain of these files with the given tip point. `column` is "value"
@@ -44,6 +50,7 @@ namespace softchain::chain
   private:
     std::string stiffness_path_;
     std::string bending_in_pressure_path_;
+    std::array<std::string, 2> force_in_pressure_paths_; // k_psi(p), k_theta(p)
     std::string pressure_torque_path_;
   };
 } // namespace softchain::chain

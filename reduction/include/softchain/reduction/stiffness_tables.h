@@ -6,6 +6,9 @@
 //                                 load, least-squares k, samples used
 //   <label>_samples.csv           per sample and joint: angles, torques, stretches
 //   <label>_kphi_vs_pressure.csv  per pressure sample and joint: k_phi
+//   <label>_ktheta_vs_pressure.csv,
+//   <label>_kpsi_vs_pressure.csv  per pressure of the lateral (torsion)
+//                                 samples and joint: their least-squares k
 //   <label>_pressure_torque.csv   J_p per joint at rest (pressure 0) and at
 //                                 each pressure sample
 #include <softchain/data/csv_table.h>
@@ -23,9 +26,12 @@ namespace softchain::reduction
     data::CsvTable stiffness() const;
     data::CsvTable samples() const;
     data::CsvTable kphi_vs_pressure() const;
+    // axis 0 (psi) or 1 (theta): k over the samples feeding it at each of
+    // their distinct pressures, by increasing pressure.
+    data::CsvTable k_vs_pressure(int axis) const;
     data::CsvTable pressure_torque() const;
 
-    // Writes the four files into `directory` (created if missing).
+    // Writes the six files into `directory` (created if missing).
     void write(const std::string &directory) const;
 
   private:

@@ -1,0 +1,43 @@
+// SampleSet: the lateral and torsion samples are repeated at every pressure
+// of `Force sample pressures`, each pressure a continuation chain of its own.
+#include <softchain/sample_set.h>
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace softchain;
+
+TEST_CASE("force samples are made at each force sample pressure, one chain per role and pressure")
+{
+  const auto path = std::filesystem::temp_directory_path() / "softchain_sample_set_test.prm";
+  std::ofstream(path) << "subsection Samples\n"
+                         "  set Pressure sweep = 1e4, 2e4\n"
+                         "  set Lateral tip forces = 0.1, 0.3\n"
+                         "  set Torsion couples = 0.2\n"
+                         "  set Force sample pressures = 0, 2e4\n"
+                         "end\n";
+  const SampleSet set = SampleSet::read(data::PrmFile::read(path.string()), {{0.08, 0, 0}, 0.016}, "h");
+  std::filesystem::remove(path);
+  // 2 pressures + (2 lateral + 1 torsion) x 2 pressures.
+  REQUIRE(set.samples.size() == 8);
+  int lateral_at_pressure = 0;
+  for (const Sample &s : set.samples)
+    if (s.actuation.role == "lateral" && s.actuation.pressure == 2e4)
+      {
+        ++lateral_at_pressure;
+        CHECK(s.label.find("at 20000 Pa") != std::string::npos);
+        REQUIRE(s.actuation.point_forces.size() == 1);
+        CHECK(s.actuation.point_forces[0].force[2] > 0);
+      }
+  CHECK(lateral_at_pressure == 2);
+  // Chains: pressure; lateral and torsion at p = 0; lateral and torsion at 20 kPa.
+  CHECK(set.chains.size() == 5);
+  for (const auto &chain : set.chains)
+    for (const std::size_t k : chain)
+      {
+        const data::Actuation &a = set.samples[k].actuation;
+        CHECK((a.role == "pressure" || a.pressure == set.samples[chain.back()].actuation.pressure));
+      }
+}
