@@ -130,7 +130,7 @@ namespace softchain::report
     }
 
     // Per joint, the lateral samples' (force, theta, k_theta = tau_y / theta)
-    // sorted by force, from a <label>_samples.csv.
+    // at p = 0 (the paper's) sorted by force, from a <label>_samples.csv.
     struct LateralPoint
     {
       double force, theta, k;
@@ -140,7 +140,7 @@ namespace softchain::report
       const auto                               table = data::CsvTable::read(path);
       std::map<int, std::vector<LateralPoint>> points;
       for (std::size_t r = 0; r < table.n_rows(); ++r)
-        if (table.text(r, "role") == "lateral")
+        if (table.text(r, "role") == "lateral" && table.number(r, "pressure") == 0)
           {
             const double theta = table.number(r, "theta");
             points[static_cast<int>(table.number(r, "joint"))].push_back(

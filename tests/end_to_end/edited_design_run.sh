@@ -15,6 +15,7 @@ sed -e "s/^\( *set Name *=\).*/\1 my_finger/" \
     -e "s/^\( *set Pressure sweep *=\).*/\1 5e3, 10e3/" \
     -e "s/^\( *set Lateral tip forces *=\).*/\1 0.1/" \
     -e "s/^\( *set Torsion couples *=\).*/\1 0.1/" \
+    -e "s/^\( *set Force sample pressures *=\).*/\1 0/" \
     -e "s/^\( *set Validation samples *=\).*/\1 7.5e3/" \
     "$parameters/p10.prm" > my_finger.prm
 printf 'subsection Solver\n  set Residual tolerance = 1e-4\n  set Displacement tolerance = 1e-4\nend\n' >> my_finger.prm
