@@ -122,6 +122,7 @@ namespace softchain::chain
         std::cout << "chain: no converged database sample has one of the validation roles\n";
       validation.per_sample_table().write(directory + "/validation.csv");
       validation.summary_table().write(directory + "/validation_summary.csv");
+      validation.pose_table().write(directory + "/chain_poses.csv");
       if (!ValidationPlot(directory, names).draw())
         std::cout << "chain: gnuplot missing or failed, validation.png not drawn (script validation.gp)\n";
       report(validation, directory);

@@ -99,6 +99,7 @@ namespace softchain::chain
             r.orientation_error =
               rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
             r.tip_position       = pose.tip_position;
+            r.joint_positions    = pose.joint_positions;
             r.tip_rotation_angle =
               rotation_angle_between(Eigen::Matrix3d::Identity(), pose.link_rotations.back());
           }
@@ -150,6 +151,23 @@ namespace softchain::chain
                        CsvTable::cell(1e3 * s.tip.position.z()),
                        CsvTable::cell(degrees(std::atan2(R(1, 0), R(0, 0)))),
                        CsvTable::cell(degrees(rotation_angle_between(Eigen::Matrix3d::Identity(), R)))});
+      }
+    return table;
+  }
+
+  CsvTable ChainValidation::pose_table() const
+  {
+    CsvTable table({"sample", "model", "point", "x", "y", "z"});
+    for (const ValidationRecord &r : records_)
+      {
+        std::vector<Eigen::Vector3d> points = r.joint_positions;
+        if (!points.empty())
+          points.push_back(r.tip_position);
+        for (std::size_t k = 0; k < points.size(); ++k)
+          table.add_row({r.sample, r.model,
+                         k + 1 < points.size() ? std::to_string(k + 1) : std::string("tip"),
+                         CsvTable::cell(points[k].x()), CsvTable::cell(points[k].y()),
+                         CsvTable::cell(points[k].z())});
       }
     return table;
   }

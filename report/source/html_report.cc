@@ -48,6 +48,16 @@ namespace softchain::report
                                "`; run it, or `softchain run`, first)");
     }
 
+    // Median of `values` (NaN when empty).
+    double median(std::vector<double> values)
+    {
+      if (values.empty())
+        return NAN;
+      std::sort(values.begin(), values.end());
+      const std::size_t n = values.size();
+      return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    }
+
     // The largest point force [N]: the tip force of a lateral sample, each
     // force of a torsion couple (whose sum is zero).
     double largest_force(const data::Actuation &actuation)
@@ -92,6 +102,48 @@ namespace softchain::report
     else
       page.paragraph(caption + ": not drawn (" + path + " is missing: gnuplot not installed, or "
                                                         "Plots = false in subsection Reduction).");
+  }
+
+  // The answer first: how far the chain and the baseline land from the FEM,
+  // and what one FEM sample and one chain equilibrium cost.
+  void HtmlReport::summary_section(HtmlDocument &page) const
+  {
+    page.heading("Summary");
+    std::vector<double> fem_times;
+    int                 failed = 0;
+    for (const auto &s : samples_)
+      {
+        fem_times.push_back(s.wall_time);
+        failed += !s.converged();
+      }
+    page.paragraph(std::to_string(samples_.size()) + " FEM samples (" + std::to_string(failed) +
+                   " failed), median " + fmt(median(fem_times)) + " s of wall time per sample. Chain: " +
+                   chain_.method + " at b = " + fmt(chain_.half_width_fraction) + " a.");
+    if (!fs::exists(output("chain/validation_summary.csv")))
+      {
+        page.paragraph("No chain validation (chain/validation_summary.csv is missing; see section 4).");
+        return;
+      }
+    const auto summary = data::CsvTable::read(output("chain/validation_summary.csv"));
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t r = 0; r < summary.n_rows(); ++r)
+      if (summary.text(r, "model") == chain_.method || summary.text(r, "model") == "baseline")
+        rows.push_back({summary.text(r, "model"), summary.text(r, "roles"), summary.text(r, "n_samples"),
+                        summary.text(r, "n_failed"), fmt(summary.number(r, "max_tip_error_percent_L")),
+                        fmt(summary.number(r, "mean_tip_error_percent_L")),
+                        fmt(summary.number(r, "max_orientation_error_deg"))});
+    page.table({"model", "samples", "n", "failed", "max tip error [% L]", "mean tip error [% L]",
+                "max orientation error [deg]"},
+               rows);
+    if (fs::exists(output("chain/validation.csv")))
+      {
+        const auto          records = data::CsvTable::read(output("chain/validation.csv"));
+        std::vector<double> times;
+        for (std::size_t r = 0; r < records.n_rows(); ++r)
+          if (records.text(r, "model") == chain_.method)
+            times.push_back(records.number(r, "solve_time_us"));
+        page.paragraph("One chain equilibrium from rest: median " + fmt(median(times)) + " µs.");
+      }
   }
 
   void HtmlReport::design_section(HtmlDocument &page) const
@@ -189,6 +241,41 @@ namespace softchain::report
     page.table({"model", "roles", "mean", "baseline mean", "ratio of means", "max", "baseline max",
                 "ratio of maxima"},
                rows);
+    chain_pictures(page);
+  }
+
+  // The selected chain (chain/chain_poses.csv) drawn over the deformed FEM
+  // finger of every validation sample.
+  void HtmlReport::chain_pictures(HtmlDocument &page) const
+  {
+    page.heading("The chain over the FEM finger", 3);
+    if (!fs::exists(output("chain/chain_poses.csv")))
+      {
+        page.paragraph("chain/chain_poses.csv is missing: `softchain chain` writes it.");
+        return;
+      }
+    const auto poses = data::CsvTable::read(output("chain/chain_poses.csv"));
+    std::vector<const data::SampleRecord *> shown;
+    for (const auto &s : samples_)
+      if (s.converged() && s.actuation.role == "validation")
+        shown.push_back(&s);
+    const SurfaceMesh surface(mesh_);
+    SvgFingerRenderer renderer(surface, mesh_.X);
+    for (const auto *s : shown)
+      renderer.include(s->x);
+    page.paragraph("The " + chain_.method + " chain's joints and tip (red) at its equilibrium under "
+                   "each validation sample's load, over the FEM finger under the same load.");
+    for (const auto *s : shown)
+      {
+        std::vector<Eigen::Vector3d> chain;
+        for (std::size_t r = 0; r < poses.n_rows(); ++r)
+          if (poses.text(r, "sample") == s->id && poses.text(r, "model") == chain_.method)
+            chain.emplace_back(poses.number(r, "x"), poses.number(r, "y"), poses.number(r, "z"));
+        const std::string title = fmt(s->actuation.pressure / 1e3) + " kPa, largest force " +
+                                  fmt(largest_force(s->actuation)) + " N";
+        page.figure(data_uri("image/svg+xml", renderer.render(s->x, title, chain)),
+                    "sample " + s->id + (chain.empty() ? " (no chain equilibrium)" : ""));
+      }
   }
 
   void HtmlReport::timing_section(HtmlDocument &page) const
@@ -252,6 +339,7 @@ namespace softchain::report
   std::string HtmlReport::html() const
   {
     HtmlDocument page("SoftChain report: " + design_.name);
+    summary_section(page);
     design_section(page);
     finger_section(page);
     stiffness_section(page);

@@ -156,7 +156,27 @@ namespace softchain::report
     return svg.str();
   }
 
-  std::string SvgFingerRenderer::render(const Positions &deformed, const std::string &title) const
+  std::string SvgFingerRenderer::chain_svg(const std::vector<Eigen::Vector3d> &chain) const
+  {
+    if (chain.empty())
+      return "";
+    std::ostringstream svg, points;
+    svg.setf(std::ios::fixed);
+    svg.precision(1);
+    points.setf(std::ios::fixed);
+    points.precision(1);
+    for (const Eigen::Vector3d &c : chain)
+      {
+        const Eigen::Vector2d p = to_pixels(view_.project(c));
+        points << p.x() << ',' << p.y() << ' ';
+        svg << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"3\"/>\n";
+      }
+    return "<g fill=\"#c00\" stroke=\"#c00\">\n<polyline points=\"" + points.str() +
+           "\" fill=\"none\" stroke-width=\"2\"/>\n" + svg.str() + "</g>\n";
+  }
+
+  std::string SvgFingerRenderer::render(const Positions &deformed, const std::string &title,
+                                        const std::vector<Eigen::Vector3d> &chain) const
   {
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
@@ -169,7 +189,7 @@ namespace softchain::report
         << polygons_svg(reference_, false) << "</g>\n"
         << "<g stroke-width=\"0.5\" stroke-linejoin=\"round\">\n"
         << polygons_svg(deformed, true) << "</g>\n"
-        << axes_svg() << "</svg>\n";
+        << chain_svg(chain) << axes_svg() << "</svg>\n";
     return svg.str();
   }
 } // namespace softchain::report

@@ -145,6 +145,18 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
         if (tips.number(r, "pressure") == 3e4) // 86 deg; 60 kPa curls to 220 deg, wrapped to -140
           CHECK(bending * tips.number(r, "tip_y_mm") > 0);
       }
+  // chain_poses.csv: per validated sample and model the n joints and the
+  // tip; the tip row is validation.csv's chain tip (mm there, m here).
+  const data::CsvTable poses = data::CsvTable::read(out + "/chain/chain_poses.csv");
+  REQUIRE(poses.n_rows() == table.n_rows() * 10); // 9 joints + tip
+  for (std::size_t r = 0; r < table.n_rows(); ++r)
+    {
+      const std::size_t tip = 10 * r + 9;
+      CHECK(poses.text(tip, "point") == "tip");
+      CHECK(poses.text(tip, "sample") == table.text(r, "sample"));
+      CHECK(1e3 * poses.number(tip, "x") == Approx(table.number(r, "chain_tip_x_mm")).epsilon(1e-12));
+      CHECK(poses.text(tip - 9, "point") == "1");
+    }
   std::ifstream     xml(out + "/chain/finger.xml");
   const std::string text((std::istreambuf_iterator<char>(xml)), {});
   CHECK(text.find("joint9_phi") != std::string::npos);

@@ -88,13 +88,15 @@ TEST_CASE("softchain run writes a report whose every image loads in headless Chr
   CHECK(outcome.output.find(report) != std::string::npos); // in the output list
   CHECK(read_text(report).find("<td>FEM sample sweep</td>") != std::string::npos);
 
-  // Three SVG pictures (0, 40, 80 kPa) and every PNG that the reduction
-  // and the chain drew: the validation plot and at least one stiffness plot.
+  // Three SVG pictures (0, 40, 80 kPa), one of the chain over the FEM finger
+  // per validation sample (the tiny design has one), and every PNG that the
+  // reduction and the chain drew: the validation plot and at least one
+  // stiffness plot.
   const int pngs = png_files_under(design.output());
   CHECK(pngs >= 2);
   const ScratchDirectory browser("report_browser");
   const ImageCount       images = images_in_chromium(report, browser);
-  CHECK(images.total == 3 + pngs);
+  CHECK(images.total == 3 + 1 + pngs);
   CHECK(images.loaded == images.total);
 
   // The check itself sees a broken image: a PNG cut after its signature.

@@ -28,7 +28,7 @@ TEST_CASE("The report holds every section, its pictures and its tables")
   const SyntheticOutputs outputs("report_sections");
   std::ofstream(outputs.file("stiffness/kpsi.png")) << "not really a PNG";
   const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
-  for (const char *section : {"1. The design", "2. The deformed finger", "3. Stiffness profiles",
+  for (const char *section : {"Summary", "1. The design", "2. The deformed finger", "3. Stiffness profiles",
                               "4. Chain against FEM", "Baseline comparison", "5. Run times",
                               "6. The paper's claims"})
     CHECK(html.find(section) != std::string::npos);
@@ -43,6 +43,34 @@ TEST_CASE("The report holds every section, its pictures and its tables")
   CHECK(html.find("<td>40</td><td>10</td>") != std::string::npos);
   CHECK(html.find("not measured in this run") != std::string::npos);
   CHECK(softchain::testing::occurrences(html, "<td>1.25</td>") == 2); // both samples' wall times
+  // The summary comes first: the chain's and the baseline's errors before the design.
+  CHECK(html.find("Summary") < html.find("1. The design"));
+  CHECK(html.find("median 1.25 s of wall time per sample") != std::string::npos);
+  CHECK(html.find("chain/chain_poses.csv is missing") != std::string::npos);
+}
+
+TEST_CASE("The chain of every validation sample is drawn over its FEM finger")
+{
+  const SyntheticOutputs outputs("report_chain_pictures");
+  // The synthetic database's converged sample, relabelled as a validation
+  // sample (the id stays: the role is not part of it).
+  auto database = softchain::data::ActuationDatabase::open(outputs.database());
+  softchain::data::SampleRecord validation = database.read_sample(database.sample_ids().front());
+  if (!validation.converged())
+    validation = database.read_sample(database.sample_ids().back());
+  REQUIRE(validation.converged());
+  validation.actuation.role = "validation";
+  database.store_sample(validation);
+  softchain::data::CsvTable poses({"sample", "model", "point", "x", "y", "z"});
+  poses.add_row({validation.id, "M2", "1", "0", "0", "0"});
+  poses.add_row({validation.id, "M2", "tip", "0.02", "-0.001", "0"});
+  poses.add_row({validation.id, "baseline", "1", "0", "0", "0"});
+  poses.write(outputs.file("chain/chain_poses.csv"));
+  const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
+  CHECK(html.find("The chain over the FEM finger") != std::string::npos);
+  // Three finger pictures and one with the chain (the M2 points only).
+  CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == 4);
+  CHECK(html.find("sample " + validation.id + "<") != std::string::npos); // with its chain
 }
 
 TEST_CASE("The stage times of softchain run replace the 'not measured' line")

@@ -64,3 +64,26 @@ TEST_CASE("Every picture of one renderer shares the frame that holds all states"
   CHECK(alone.render(mesh.X, "") != shared.render(mesh.X, ""));
   CHECK(shared.render(mesh.X, "") == shared.render(mesh.X, ""));
 }
+
+TEST_CASE("A chain is drawn on top as a polyline through its projected points")
+{
+  const auto        mesh = unit_cube();
+  SvgFingerRenderer renderer(SurfaceMesh(mesh), mesh.X);
+  const std::string plain = renderer.render(mesh.X, "cube");
+  CHECK(plain.find("<polyline") == std::string::npos);
+  // The cube's corners 0 and 7 span the frame: their pixels are where the
+  // frame maps them, the same for the chain as for the faces.
+  const std::string svg = renderer.render(mesh.X, "cube", {{0, 0, 0}, {0.5, 0.5, 0.5}, {1, 1, 1}});
+  CHECK(softchain::testing::occurrences(svg, "<polyline") == 1);
+  CHECK(softchain::testing::occurrences(svg, "<circle") == 3);
+  // Drawn after (on top of) every face.
+  CHECK(svg.find("<polyline") > svg.rfind("<polygon"));
+  // The middle point projects to the middle of the two others (a parallel
+  // projection is affine), to the 0.1 px the SVG prints.
+  const std::regex circle("<circle cx=\"([0-9.]+)\" cy=\"([0-9.]+)\"");
+  std::vector<Eigen::Vector2d> centres;
+  for (std::sregex_iterator m(svg.begin(), svg.end(), circle), end; m != end; ++m)
+    centres.emplace_back(std::stod((*m)[1]), std::stod((*m)[2]));
+  REQUIRE(centres.size() == 3);
+  CHECK((centres[1] - 0.5 * (centres[0] + centres[2])).norm() < 0.1);
+}

@@ -32,6 +32,7 @@ namespace softchain::chain
     Eigen::Vector3d tip_position = Eigen::Vector3d::Constant(NAN); // m
     double          tip_rotation_angle = NAN; // rad, of the last link frame from rest
     double          solve_time         = NAN; // s, wall time of this equilibrium from rest
+    std::vector<Eigen::Vector3d> joint_positions; // c_i at equilibrium, m (empty if failed)
   };
 
   class ChainValidation
@@ -53,6 +54,9 @@ namespace softchain::chain
     // angle about z, atan2(R_yx, R_xx) [deg] (negative: toward -y, the fabric
     // side), plus the total rotation angle [deg].
     data::CsvTable                       fem_tip_table() const;
+    // The chain's joints and tip at equilibrium, for pictures over the FEM
+    // finger: sample, model, point (joint 1..n, then "tip"), x, y, z [m].
+    data::CsvTable                       pose_table() const;
 
   private:
     struct FemSample

@@ -40,10 +40,12 @@ namespace softchain::report
     std::string html() const;
 
   private:
+    void summary_section(HtmlDocument &page) const;
     void design_section(HtmlDocument &page) const;
     void finger_section(HtmlDocument &page) const;
     void stiffness_section(HtmlDocument &page) const;
     void validation_section(HtmlDocument &page) const;
+    void chain_pictures(HtmlDocument &page) const;
     void timing_section(HtmlDocument &page) const;
     void claims_section(HtmlDocument &page) const;
 

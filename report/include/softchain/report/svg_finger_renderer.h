@@ -29,8 +29,11 @@ namespace softchain::report
     void include(const Positions &positions);
 
     // The SVG document of the finger at `deformed` (node positions, same
-    // numbering as the reference) over its rest shape, `title` at the top.
-    std::string render(const Positions &deformed, const std::string &title) const;
+    // numbering as the reference) over its rest shape, `title` at the top;
+    // `chain` (joint positions, then the tip) is drawn on top as a red
+    // polyline with a dot at every point.
+    std::string render(const Positions &deformed, const std::string &title,
+                       const std::vector<Eigen::Vector3d> &chain = {}) const;
 
     // Painter's algorithm: the indices of `depths` from the farthest face
     // (smallest depth) to the nearest; ties keep their order.
@@ -49,6 +52,7 @@ namespace softchain::report
     std::vector<ScreenPolygon> facing_polygons(const Positions &x) const;
     std::string                polygons_svg(const Positions &x, bool shaded) const;
     std::string                axes_svg() const;
+    std::string                chain_svg(const std::vector<Eigen::Vector3d> &chain) const;
     Eigen::Vector2d            to_pixels(const Eigen::Vector2d &screen) const;
 
     SurfaceMesh     surface_;
