@@ -245,7 +245,7 @@ namespace softchain::report
   }
 
   // The selected chain (chain/chain_poses.csv) drawn over the deformed FEM
-  // finger of every validation sample.
+  // finger of every validation sample, by increasing load.
   void HtmlReport::chain_pictures(HtmlDocument &page) const
   {
     page.heading("The chain over the FEM finger", 3);
@@ -259,6 +259,10 @@ namespace softchain::report
     for (const auto &s : samples_)
       if (s.converged() && s.actuation.role == "validation")
         shown.push_back(&s);
+    std::sort(shown.begin(), shown.end(), [](const auto *a, const auto *b) {
+      return std::make_pair(a->actuation.pressure, largest_force(a->actuation)) <
+             std::make_pair(b->actuation.pressure, largest_force(b->actuation));
+    });
     const SurfaceMesh surface(mesh_);
     SvgFingerRenderer renderer(surface, mesh_.X);
     for (const auto *s : shown)

@@ -126,3 +126,22 @@ TEST_CASE("pressure tables: one row per joint and distinct nonzero pressure, res
   REQUIRE(kp.n_rows() == 2 * 5);
   CHECK(kp.number(0, "pressure") == 1e4);
 }
+
+TEST_CASE("a joint that transmits no torque passes its rotation on to the next joint")
+{
+  // The cavity starts at plane 12 (x = 12 mm): a closed cavity distal to
+  // joint 1 (x = 5 mm), whose pressure has no net moment about it, like
+  // P10's base fill. Bending onto an arc of radius R turns slab i by m_i / R
+  // (m_i its middle): joint 1 reads 0, and joint 2 the whole m_2 / R from
+  // the base, so that the chain, which holds joint 1 rigid, keeps it.
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50), 12);
+  const double          R      = -0.3;
+  const MethodReduction r      = reduce(finger, {bent(finger, 2e4, R)});
+  const auto           &joints = r.samples().front().joints();
+  CHECK(joints[0].torque.norm() <= 1e-6 * joints[1].torque.norm());
+  CHECK(joints[0].angles.phi == 0);
+  // b = a/2: slab middles at 5, 15 mm (rotations exact, joint_kinematics_test).
+  CHECK(joints[1].angles.phi == Approx(15 * mm / R).epsilon(1e-10));
+  CHECK(joints[2].angles.phi == Approx(10 * mm / R).epsilon(1e-10));
+  CHECK(std::isnan(r.stiffness().joints()[0].at_largest_load(2))); // held rigid by the chain
+}
