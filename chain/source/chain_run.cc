@@ -72,18 +72,36 @@ namespace softchain::chain
       return p;
     }
 
+    // The MJCF of `model` with K and J_p at the database's largest pressure
+    // p*, where MuJoCo finds the chain's pose exactly; at p*/2 the constant
+    // K and J_p differ from the chain's K(p), J_p(p), and the tip distance
+    // between the two chains is printed.
     void export_model(const ChainModel &model, const data::ActuationDatabase &database,
-                      const std::string &path)
+                      const std::string &path, const EquilibriumSettings &settings)
     {
       const auto  box = bounding_box(database.mesh());
       MjcfOptions options;
       // Capsules as thick as the finger's thinner dimension (height or width).
       options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
       options.max_pressure = max_pressure(database);
+      options.pressure     = options.max_pressure;
       const ChainModel named(database.design().name + "_" + model.name(), model.chain(),
                              model.stiffness(), model.actuation());
-      MjcfExport(named, options).write(path);
+      const MjcfExport mjcf(named, options);
+      mjcf.write(path);
       std::cout << "chain: MuJoCo model " << path << "\n";
+      if (options.pressure <= 0)
+        return;
+      const ChainModel  exported = mjcf.exported_model();
+      ChainEquilibrium  chain(model, settings), frozen(exported, settings);
+      const double      half = 0.5 * options.pressure;
+      const Equilibrium a = chain.solve({half, {}}), b = frozen.solve({half, {}});
+      if (a.converged && b.converged)
+        std::cout << "chain: the MuJoCo model is exact at " << options.pressure
+                  << " Pa; at " << half << " Pa its tip lies "
+                  << 100 * (chain.pose().tip_position - frozen.pose().tip_position).norm() /
+                       (box.second.x() - box.first.x())
+                  << " % of L from the chain's\n";
     }
 
     void report(const ChainValidation &validation, const std::string &directory)
@@ -150,7 +168,7 @@ namespace softchain::chain
     const ChainModel        selected =
       *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
     if (export_mjcf)
-      export_model(selected, database, chain_dir + "/finger.xml");
+      export_model(selected, database, chain_dir + "/finger.xml", p.newton);
     models.push_back(baseline_of(selected, mesh, p.baseline_youngs_modulus));
     return validate(models, validation, p, chain_dir) > 0 ? 2 : 0;
   }

@@ -32,17 +32,32 @@ namespace softchain::chain
     {
       return "joint" + std::to_string(i + 1) + "_" + axis_names[axis];
     }
+
+    // The chain with K and J_p frozen at pressure p* (> 0), or with the
+    // CSV's K and the rest J_p (p* = 0): one K and one J_p, as in MJCF.
+    ChainModel constant_model(const ChainModel &model, double pressure)
+    {
+      std::vector<Eigen::Vector3d> k;
+      const Eigen::VectorXd diagonal = model.stiffness().diagonal(pressure);
+      for (int i = 0; i < model.chain().n_joints(); ++i)
+        k.push_back(pressure > 0 ? Eigen::Vector3d(diagonal.segment<3>(3 * i)) : model.stiffness().joint(i));
+      const Eigen::VectorXd jp = pressure > 0 ? Eigen::VectorXd(model.actuation().torque(pressure) / pressure)
+                                              : model.actuation().rest_torque_per_pascal();
+      return ChainModel(model.name(), model.chain(), JointStiffness(k), PressureActuation(jp));
+    }
   } // namespace
 
   MjcfExport::MjcfExport(const ChainModel &model, MjcfOptions options)
-    : model_(model)
-    , options_(options)
+    : options_(options)
+    , exported_(constant_model(model, options.pressure))
   {}
+
+  ChainModel MjcfExport::exported_model() const { return exported_; }
 
   // Body of link i (nested: the XML of the distal links inside).
   std::string MjcfExport::body(int i) const
   {
-    const KinematicChain &chain = model_.chain();
+    const KinematicChain &chain = exported_.chain();
     const bool            last  = i + 1 == chain.n_joints();
     const Eigen::Vector3d to_next =
       (last ? chain.tip() : chain.joint_centre(i + 1)) - chain.joint_centre(i);
@@ -53,7 +68,7 @@ namespace softchain::chain
     s << indent << "<body name=\"link" << i + 1 << "\" pos=\"" << triple(offset) << "\">\n";
     for (int axis = 0; axis < 3; ++axis)
       {
-        const double k = model_.stiffness().joint(i)[axis];
+        const double k = exported_.stiffness().joint(i)[axis];
         s << indent << "  <joint name=\"" << joint_name(i, axis) << "\" axis=\""
           << axis_vectors[axis] << "\" stiffness=\"" << number(k) << "\" damping=\""
           << number(k * options_.damping_time) << "\"/>\n";
@@ -70,7 +85,7 @@ namespace softchain::chain
 
   std::string MjcfExport::pressure_actuator() const
   {
-    const Eigen::VectorXd &jp = model_.actuation().rest_torque_per_pascal();
+    const Eigen::VectorXd &jp = exported_.actuation().rest_torque_per_pascal();
     std::ostringstream     coefficients;
     for (Eigen::Index j = 0; j < jp.size(); ++j)
       if (jp[j] != 0.0)
@@ -89,7 +104,7 @@ namespace softchain::chain
   std::string MjcfExport::text() const
   {
     std::ostringstream s;
-    s << "<mujoco model=\"" << model_.name() << "\">\n"
+    s << "<mujoco model=\"" << exported_.name() << "\">\n"
       << "  <!-- SoftChain chain tier: spherical joint = hinges x, y, z (R = Rx Ry Rz),\n"
       << "       stiffness from the reduction's CSV, control 'pressure' in Pa. -->\n"
       << "  <compiler angle=\"radian\"/>\n"

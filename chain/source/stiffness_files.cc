@@ -312,9 +312,11 @@ namespace softchain::chain
                                                         table.stiffness, rigid_where_missing,
                                                         n_pressures));
         // k_psi(p), k_theta(p) where the torsion (lateral) samples were made
-        // at more than one pressure; otherwise k stays the stiffness table's.
+        // at more than one pressure; otherwise (also without any such
+        // sample: a table of no rows) k stays the stiffness table's.
         for (const int axis : {0, 1})
-          if (std::filesystem::exists(force_in_pressure_paths_[axis]))
+          if (std::filesystem::exists(force_in_pressure_paths_[axis]) &&
+              CsvTable::read(force_in_pressure_paths_[axis]).n_rows() > 0)
             {
               auto tables = read_k_in_pressure(force_in_pressure_paths_[axis], n, axis,
                                                table.stiffness, rigid_where_missing, n_pressures);

@@ -57,6 +57,67 @@ TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness an
 }
 
 #ifdef SOFTCHAIN_HAVE_MUJOCO
+namespace
+{
+  struct RestPose
+  {
+    Eigen::VectorXd angles;
+    Eigen::Vector3d tip;
+  };
+
+  // MuJoCo's rest pose of the MJCF of `model` (options `options`) under
+  // pressure p and the dead tip force f, gravity off, stepped with damping
+  // until the joint speeds are below 1e-11 rad/s. With damping c = k * 0.01 s
+  // the unbalanced spring torque left is c |qdot| = 1e-13 k, i.e. an angle
+  // error of 1e-13 rad.
+  RestPose mujoco_rest_pose(const ChainModel &model, const MjcfOptions &options, double p,
+                            const Eigen::Vector3d &f)
+  {
+    softchain::testing::ScratchDirectory dir("chain_mjcf");
+    MjcfExport(model, options).write(dir.file("finger.xml"));
+    char     error[1000] = "";
+    mjModel *m = mj_loadXML(dir.file("finger.xml").c_str(), nullptr, error, sizeof(error));
+    INFO(error);
+    REQUIRE(m != nullptr);
+    REQUIRE(m->nq == 27);
+    mjData *d = mj_makeData(m);
+    m->opt.gravity[2] = 0.0;
+    d->ctrl[0]        = p;
+    const int last = m->nbody - 1, site = mj_name2id(m, mjOBJ_SITE, "tip");
+    // The dead tip force as MuJoCo's applied wrench on the last body (at
+    // its centre of mass): force f and torque (tip - com) x f, every step.
+    const auto apply_tip_force = [&] {
+      const Eigen::Map<const Eigen::Vector3d> at(d->site_xpos + 3 * site), com(d->xipos + 3 * last);
+      Eigen::Map<Eigen::Matrix<double, 6, 1>>(d->xfrc_applied + 6 * last) << f, (at - com).cross(f);
+    };
+    long steps = 0;
+    for (mj_forward(m, d); steps < 2000000; ++steps)
+      {
+        apply_tip_force();
+        mj_step(m, d);
+        if (Eigen::Map<const Eigen::VectorXd>(d->qvel, m->nv).cwiseAbs().maxCoeff() < 1e-11 && steps > 10)
+          break;
+      }
+    mj_forward(m, d);
+    INFO("steps to rest: " << steps);
+    const RestPose pose{Eigen::Map<const Eigen::VectorXd>(d->qpos, m->nq),
+                        Eigen::Map<const Eigen::Vector3d>(d->site_xpos + 3 * site)};
+    mj_deleteData(d);
+    mj_deleteModel(m);
+    return pose;
+  }
+
+  // Tolerance: the chain's Newton tolerance 1e-10 (relative residual) gives
+  // angles to ~1e-10 of their size (0.2 rad); MuJoCo's rest criterion adds
+  // 1e-13 rad: 1e-10 rad per hinge, and 9 hinges times 0.1 m arm bound the
+  // tip position error by 1e-10 m.
+  void check_same_pose(const RestPose &mujoco, const Equilibrium &e, const ChainPose &pose)
+  {
+    CHECK((mujoco.angles - e.angles).cwiseAbs().maxCoeff() < 1e-10);
+    CHECK((mujoco.tip - pose.tip_position).norm() < 1e-10);
+  }
+} // namespace
+
 TEST_CASE("MuJoCo comes to rest in the chain solver's pose")
 {
   const ChainModel model = tapered_finger();
@@ -66,46 +127,42 @@ TEST_CASE("MuJoCo comes to rest in the chain solver's pose")
   const Equilibrium     e = solver.solve({p, {{tip, f}}});
   REQUIRE(e.converged);
   REQUIRE(e.angles.cwiseAbs().maxCoeff() > 0.1); // far from linear: ~100 deg of bending
+  check_same_pose(mujoco_rest_pose(model, {}, p, f), e, solver.pose());
+}
 
-  softchain::testing::ScratchDirectory dir("chain_mjcf");
-  MjcfExport(model, {}).write(dir.file("finger.xml"));
-  char     error[1000] = "";
-  mjModel *m = mj_loadXML(dir.file("finger.xml").c_str(), nullptr, error, sizeof(error));
-  INFO(error);
-  REQUIRE(m != nullptr);
-  REQUIRE(m->nq == 27);
-  mjData *d = mj_makeData(m);
-  m->opt.gravity[2] = 0.0;
-  d->ctrl[0]        = p;
-  const int last = m->nbody - 1, site = mj_name2id(m, mjOBJ_SITE, "tip");
-  // The dead tip force as MuJoCo's applied wrench on the last body (at its
-  // centre of mass): force f and torque (tip - com) x f, updated every step.
-  const auto apply_tip_force = [&] {
-    const Eigen::Map<const Eigen::Vector3d> at(d->site_xpos + 3 * site), com(d->xipos + 3 * last);
-    Eigen::Map<Eigen::Matrix<double, 6, 1>>(d->xfrc_applied + 6 * last) << f, (at - com).cross(f);
-  };
-  // Rest: joint speeds below 1e-11 rad/s. With damping c = k * 0.01 s, the
-  // unbalanced spring torque left is c |qdot| = 1e-13 k, i.e. an angle
-  // error of 1e-13 rad.
-  long steps = 0;
-  for (mj_forward(m, d); steps < 2000000; ++steps)
-    {
-      apply_tip_force();
-      mj_step(m, d);
-      if (Eigen::Map<const Eigen::VectorXd>(d->qvel, m->nv).cwiseAbs().maxCoeff() < 1e-11 && steps > 10)
-        break;
-    }
-  mj_forward(m, d);
-  INFO("steps to rest: " << steps);
-  // Tolerance: the chain's Newton tolerance 1e-10 (relative residual) gives
-  // angles to ~1e-10 of their size (0.2 rad); MuJoCo's rest criterion adds
-  // 1e-13 rad: 1e-10 rad per hinge, and 9 hinges times 0.1 m arm bound the
-  // tip position error by 1e-10 m.
-  const Eigen::Map<const Eigen::VectorXd> qpos(d->qpos, m->nq);
-  CHECK((qpos - e.angles).cwiseAbs().maxCoeff() < 1e-10);
-  const Eigen::Map<const Eigen::Vector3d> mujoco_tip(d->site_xpos + 3 * site);
-  CHECK((mujoco_tip - solver.pose().tip_position).norm() < 1e-10);
-  mj_deleteData(d);
-  mj_deleteModel(m);
+TEST_CASE("With K(p) and J_p(p), the MJCF at p* is exact at p* and is the frozen chain elsewhere")
+{
+  // The tapered finger with k_phi falling and J_p growing linearly in p.
+  ChainModel       base  = tapered_finger();
+  const double     p_max = 5e4;
+  JointStiffness   k     = base.stiffness();
+  std::vector<PiecewiseLinear> k_phi, jp;
+  for (int i = 0; i < 9; ++i)
+    k_phi.emplace_back(std::vector<double>{0, p_max}, std::vector<double>{k.joint(i)[2], 0.6 * k.joint(i)[2]});
+  k.set_in_pressure(2, k_phi);
+  const Eigen::VectorXd rest = base.actuation().rest_torque_per_pascal();
+  for (Eigen::Index j = 0; j < rest.size(); ++j)
+    jp.emplace_back(std::vector<double>{0, p_max}, std::vector<double>{rest[j], 1.3 * rest[j]});
+  PressureActuation actuation(rest);
+  actuation.set_torque_in_pressure(jp);
+  const ChainModel model("in pressure", base.chain(), k, actuation);
+  MjcfOptions      options;
+  options.pressure = p_max;
+  const Eigen::Vector3d f(0.0, 0.02, 0.02), tip = model.chain().tip();
+
+  ChainEquilibrium  chain(model);
+  const Equilibrium at_p_max = chain.solve({p_max, {{tip, f}}});
+  REQUIRE(at_p_max.converged);
+  check_same_pose(mujoco_rest_pose(model, options, p_max, f), at_p_max, chain.pose());
+
+  // At p*/2 MuJoCo is the chain with K(p*) and J_p(p*), not the chain with
+  // K(p) and J_p(p); the two differ (k_phi 20 % higher, J_p 15 % lower).
+  const ChainModel  frozen = MjcfExport(model, options).exported_model();
+  ChainEquilibrium  frozen_chain(frozen);
+  const Equilibrium half = frozen_chain.solve({0.5 * p_max, {{tip, f}}});
+  REQUIRE(half.converged);
+  check_same_pose(mujoco_rest_pose(model, options, 0.5 * p_max, f), half, frozen_chain.pose());
+  REQUIRE(chain.solve({0.5 * p_max, {{tip, f}}}).converged);
+  CHECK((chain.pose().tip_position - frozen_chain.pose().tip_position).norm() > 1e-3);
 }
 #endif

@@ -12,8 +12,10 @@
 // pressure in Pa (joint torque = J_p p). Hinge damping c = k * damping_time
 // makes MuJoCo's Euler step (implicit in damping) stable for timestep
 // < 2 c / k = 2 damping_time whatever the link inertia; the model uses
-// damping_time / 10. MJCF has one K and one J_p: the CSV's values and the
-// rest row, not the pressure tables.
+// damping_time / 10. MJCF has one K and one J_p: with `pressure` > 0 those
+// of the chain at that pressure, K(p*) and J_p(p*), so that MuJoCo finds the
+// chain's pose exactly at p* (and at 0); otherwise the CSV's K and the rest
+// J_p. exported_model() is the chain MuJoCo then simulates.
 #include <softchain/chain/chain_model.h>
 
 #include <string>
@@ -26,15 +28,17 @@ namespace softchain::chain
     double density      = 1070;  // kg/m^3, silicone rubber
     double damping_time = 0.01;  // s, hinge damping / stiffness
     double max_pressure = 0.0;   // Pa, control range of the pressure (0: unlimited)
+    double pressure     = 0.0;   // Pa, p* whose K and J_p are exported (0: CSV K, rest J_p)
   };
 
   class MjcfExport
   {
   public:
-    // Keeps a reference to `model`.
     MjcfExport(const ChainModel &model, MjcfOptions options);
 
     std::string text() const;
+    // The chain with the exported constant K and J_p (what MuJoCo simulates).
+    ChainModel exported_model() const;
     // Writes the model to `path` (parent directories created); InputError
     // naming the file if it cannot be written.
     void write(const std::string &path) const;
@@ -43,7 +47,7 @@ namespace softchain::chain
     std::string body(int i) const;
     std::string pressure_actuator() const;
 
-    const ChainModel &model_;
-    MjcfOptions       options_;
+    MjcfOptions options_;
+    ChainModel  exported_;
   };
 } // namespace softchain::chain
