@@ -34,8 +34,12 @@ namespace
 
   // The chain tier's forward kinematics (KinematicChain) at the relative
   // angles the reduction measured, against the FEM tip pose.
+  // With `moving_base`, the chain starts at the deformed J_1 instead of
+  // J_1,0: the share of the floor that the base's deformation (proximal to
+  // joint 1) causes.
   Floor floor_of(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
-                 const chain::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
+                 const chain::TipPoseFit &tip_fit, const data::MeshRecord &mesh,
+                 bool moving_base = false)
   {
     const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
                                         geometry.reference_points(), geometry.points(sample.x),
@@ -51,8 +55,11 @@ namespace
     const chain::KinematicChain chain(centres, tip_fit.reference_centroid());
     chain::ChainPose            pose = chain.rest_pose();
     chain.update_pose(q, pose);
-    const chain::TipPose fem = tip_fit.fit(chain::select_nodes(sample.x, mesh.tip_nodes));
-    return {(pose.tip_position - fem.position).norm(),
+    const chain::TipPose  fem = tip_fit.fit(chain::select_nodes(sample.x, mesh.tip_nodes));
+    const Eigen::Vector3d base_shift =
+      moving_base ? Eigen::Vector3d(geometry.deformed_centre(0, frames, sample.x) - centres[0])
+                  : Eigen::Vector3d::Zero();
+    return {(pose.tip_position + base_shift - fem.position).norm(),
             chain::rotation_angle_between(pose.link_rotations.back(), fem.rotation)};
   }
 } // namespace
@@ -81,7 +88,7 @@ int main(int argc, char **argv)
 
       const reduction::JointLayout layout(mesh.X, a, 0, argv[1]);
       const auto body = std::make_shared<const reduction::BodySamples>(mesh, a / 8, argv[1]);
-      const reduction::NeutralLayer layer(*body, layout, bending);
+      const reduction::NeutralLayer layer(body, layout, mesh, bending);
       const double                  bottom = body->reference_box().min()(1);
       const double                  length = body->reference_box().sizes()(0);
       std::printf("%s: %s\n", argv[1], layer.description().c_str());
@@ -95,6 +102,7 @@ int main(int argc, char **argv)
       placements.push_back({"paper: bounding-box centres", {layout, mesh, fraction * a}});
       placements.push_back({"bottom face", {layout, body, bottom + 1e-6, fraction * a}});
       placements.push_back({"strain-limiting layer", {layout, body, layer.height(), fraction * a}});
+      const std::size_t layer_index = placements.size() - 1;
 
       const chain::TipPoseFit tip_fit = chain::TipPoseFit::of_mesh(mesh, argv[1]);
       std::printf("\ntip error of the chain driven by the FEM's M2 rotations (b = %.2f a), "
@@ -103,11 +111,12 @@ int main(int argc, char **argv)
       std::printf("| sample | role | p [kPa] | |f| [N] |");
       for (const auto &p : placements)
         std::printf(" %s |", p.name.c_str());
+      std::printf(" layer, chain from the deformed J_1 |");
       std::printf("\n| --- | --- | ---: | ---: |");
-      for (std::size_t k = 0; k < placements.size(); ++k)
+      for (std::size_t k = 0; k <= placements.size(); ++k)
         std::printf(" ---: |");
       std::printf("\n");
-      std::vector<Floor> worst(placements.size(), {0, 0});
+      std::vector<Floor> worst(placements.size() + 1, {0, 0});
       for (const auto &s : samples)
         {
           double force = 0;
@@ -115,9 +124,11 @@ int main(int argc, char **argv)
             force += Eigen::Vector3d(f.force[0], f.force[1], f.force[2]).norm();
           std::printf("| %s | %s | %.0f | %.2f |", s.id.substr(0, 8).c_str(),
                       s.actuation.role.c_str(), 1e-3 * s.actuation.pressure, force);
-          for (std::size_t k = 0; k < placements.size(); ++k)
+          for (std::size_t k = 0; k <= placements.size(); ++k)
             {
-              const Floor f = floor_of(placements[k].geometry, s, tip_fit, mesh);
+              const bool  moving_base = k == placements.size();
+              const Floor f = floor_of(placements[moving_base ? layer_index : k].geometry, s, tip_fit,
+                                       mesh, moving_base);
               worst[k]      = {std::max(worst[k].position, f.position), std::max(worst[k].angle, f.angle)};
               std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
             }

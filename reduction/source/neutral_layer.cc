@@ -1,4 +1,6 @@
-// NeutralLayer: y_n from the axial stretch of probe lines in bending samples.
+// NeutralLayer: y_n where the chain of rigid links through the joints on a
+// layer lands on the layer's deformed joints best.
+#include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/neutral_layer.h>
 #include <softchain/reduction/vector_of_point.h>
 
@@ -23,95 +25,119 @@ namespace softchain::reduction
                                       sum / double(body.lattice().size());
     }
 
-    // Least-squares line v = alpha + beta y.
-    std::pair<double, double> line_fit(const std::vector<double> &y, const std::vector<double> &v)
+    // Vertex of the parabola through (y - h, e0), (y, e1), (y + h, e2),
+    // clamped to [y - h, y + h]; y itself when the three do not curve up.
+    double parabola_vertex(double y, double h, double e0, double e1, double e2)
     {
-      const double n  = double(y.size());
-      double       my = 0, mv = 0, syy = 0, syv = 0;
-      for (std::size_t k = 0; k < y.size(); ++k)
-        my += y[k] / n, mv += v[k] / n;
-      for (std::size_t k = 0; k < y.size(); ++k)
-        syy += (y[k] - my) * (y[k] - my), syv += (y[k] - my) * (v[k] - mv);
-      const double beta = syv / syy;
-      return {mv - beta * my, beta};
+      const double curvature = e0 - 2 * e1 + e2;
+      if (!(curvature > 0))
+        return y;
+      return y + std::clamp(0.5 * h * (e0 - e2) / curvature, -h, h);
     }
   } // namespace
 
-  NeutralLayer::NeutralLayer(const BodySamples &body, const JointLayout &layout,
+  NeutralLayer::NeutralLayer(std::shared_ptr<const BodySamples> body, const JointLayout &layout,
+                             const data::MeshRecord                        &mesh,
                              const std::vector<const data::SampleRecord *> &bending_samples)
-    : body_(body)
-    , z_centre_(body.reference_box().center()(2))
-    , height_(centroid_height(body))
+    : body_(std::move(body))
+    , tip_nodes_(mesh.tip_nodes)
+    , z_centre_(body_->reference_box().center()(2))
+    , height_(centroid_height(*body_))
   {
-    const double first = layout.x(1), last = layout.x(layout.n_joints());
-    const int    n_steps = std::max(1, int(std::lround(4 * (last - first) / layout.spacing())));
-    for (int k = 0; k <= n_steps; ++k)
-      s_.push_back(first + (last - first) * k / n_steps);
-
-    // The heights from the bottom up while the whole line lies in the body.
-    const Eigen::AlignedBox3d &box = body.reference_box();
-    std::vector<double>                  heights;
-    std::vector<std::vector<CellPoint>>  lines;
+    for (int joint = 1; joint <= layout.n_joints(); ++joint)
+      x_joints_.push_back(layout.x(joint));
+    for (const auto node : tip_nodes_)
+      tip_centroid_ += vector_of(mesh.X[node]) / double(tip_nodes_.size());
+    // The heights from the bottom up while every joint lies in the body.
+    const Eigen::AlignedBox3d          &box  = body_->reference_box();
+    const double                        step = box.sizes()(1) / n_heights;
+    std::vector<double>                 heights;
+    std::vector<std::vector<CellPoint>> joints;
     for (int j = 0; j < n_heights; ++j)
       {
-        const double y    = box.min()(1) + (j + 0.5) * box.sizes()(1) / n_heights;
-        auto         line = probe_line(y);
-        if (line.empty())
+        const double y        = box.min()(1) + (j + 0.5) * step;
+        auto         at_height = joints_at(y);
+        if (at_height.empty())
           {
             if (!heights.empty())
               break;
             continue;
           }
         heights.push_back(y);
-        lines.push_back(std::move(line));
+        joints.push_back(std::move(at_height));
       }
-    if (heights.size() < 2 || first == last)
+    if (heights.size() < 3 || x_joints_.size() < 2 || tip_nodes_.empty() || bending_samples.empty())
       return;
 
-    double sum_alpha = 0, sum_beta = 0;
+    // The links' rotations (M2 of their slabs) do not depend on the joints' height.
+    const JointGeometry                       geometry(layout, body_, heights.front(), 0.5 * layout.spacing());
+    std::vector<std::vector<Eigen::Matrix3d>> rotations;
     for (const data::SampleRecord *sample : bending_samples)
       {
-        std::vector<double> stretches;
-        for (const auto &line : lines)
-          stretches.push_back(stretch(sample->x, line));
-        const auto [alpha, beta] = line_fit(heights, stretches);
-        if (!std::isfinite(alpha) || !std::isfinite(beta))
-          continue;
-        sum_alpha += alpha;
-        sum_beta += beta;
-        ++n_samples_;
+        const JointFrames frames(RotationMethod::affine_fit, geometry.slabs(),
+                                 geometry.reference_points(), geometry.points(sample->x), sample->id);
+        rotations.emplace_back();
+        for (std::size_t i = 0; i < frames.size(); ++i)
+          rotations.back().push_back(frames[i].rotation);
       }
-    // A line that does not change with height (no bending) has no root.
-    if (n_samples_ == 0 || std::abs(sum_beta) * (heights.back() - heights.front()) < 1e-9 * n_samples_)
+    n_samples_           = int(bending_samples.size());
+    const auto total_at = [&](double y, const std::vector<CellPoint> &at_height) {
+      double total = 0;
+      for (std::size_t s = 0; s < bending_samples.size(); ++s)
+        total += mismatch(y, at_height, bending_samples[s]->x, rotations[s]);
+      return total;
+    };
+    std::vector<double> total;
+    for (std::size_t k = 0; k < heights.size(); ++k)
+      total.push_back(total_at(heights[k], joints[k]));
+    const auto [lowest, highest] = std::minmax_element(total.begin(), total.end());
+    // A mismatch that does not change with height (no bending) has no minimum.
+    if (!(*highest - *lowest > 1e-9 * *highest))
       return;
-    measured_ = true;
-    height_   = std::clamp(-sum_alpha / sum_beta, heights.front(), heights.back());
-    const auto line = probe_line(height_);
-    for (const data::SampleRecord *sample : bending_samples)
-      residual_stretch_ += stretch(sample->x, line) / n_samples_;
+    measured_           = true;
+    const std::size_t k = std::size_t(lowest - total.begin());
+    height_             = k == 0 || k + 1 == total.size() ?
+                            heights[k] :
+                            parabola_vertex(heights[k], step, total[k - 1], total[k], total[k + 1]);
+    auto at_height = joints_at(height_);
+    if (at_height.empty())
+      height_ = heights[k], at_height = joints[k];
+    residual_ = std::sqrt(total_at(height_, at_height) / (n_samples_ * double(x_joints_.size())));
   }
 
-  std::vector<CellPoint> NeutralLayer::probe_line(double y) const
+  std::vector<CellPoint> NeutralLayer::joints_at(double y) const
   {
-    std::vector<CellPoint> line;
-    for (const double s : s_)
+    std::vector<CellPoint> joints;
+    for (const double x : x_joints_)
       {
-        const auto located = body_.locate(Eigen::Vector3d(s, y, z_centre_));
+        const auto located = body_->locate(Eigen::Vector3d(x, y, z_centre_));
         if (!located)
           return {};
-        line.push_back(*located);
+        joints.push_back(*located);
       }
-    return line;
+    return joints;
   }
 
-  double NeutralLayer::stretch(const std::vector<data::Point3> &x, const std::vector<CellPoint> &line) const
+  double NeutralLayer::mismatch(double y, const std::vector<CellPoint> &joints,
+                                const std::vector<data::Point3>    &x,
+                                const std::vector<Eigen::Matrix3d> &rotations) const
   {
-    if (line.size() < 2)
-      return NAN;
-    double deformed = 0;
-    for (std::size_t k = 0; k + 1 < line.size(); ++k)
-      deformed += (body_.deformed(line[k + 1], x) - body_.deformed(line[k], x)).norm();
-    return deformed / (s_.back() - s_.front()) - 1;
+    double          sum   = 0;
+    Eigen::Vector3d error = Eigen::Vector3d::Zero(); // c_k - x(J_k,0), with c_1 = x(J_1,0)
+    for (std::size_t i = 0; i + 1 < joints.size(); ++i)
+      {
+        const Eigen::Vector3d d = body_->deformed(joints[i + 1], x) - body_->deformed(joints[i], x);
+        const Eigen::Vector3d D(x_joints_[i + 1] - x_joints_[i], 0, 0);
+        error += rotations[i] * D - d;
+        sum += error.squaredNorm();
+      }
+    // The last link carries the tip face's centroid T_0 to T.
+    Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+    for (const auto node : tip_nodes_)
+      tip += vector_of(x[node]) / double(tip_nodes_.size());
+    const Eigen::Vector3d J_n(x_joints_.back(), y, z_centre_);
+    error += rotations.back() * (tip_centroid_ - J_n) - (tip - body_->deformed(joints.back(), x));
+    return sum + error.squaredNorm();
   }
 
   std::string NeutralLayer::description() const
@@ -119,9 +145,9 @@ namespace softchain::reduction
     std::ostringstream text;
     text.precision(3);
     if (measured_)
-      text << "joints on the neutral layer at y = " << 1e3 * height_ << " mm, measured on "
-           << n_samples_ << " bending sample(s) (mean axial strain there " << residual_stretch_
-           << ")";
+      text << "joints on the layer at y = " << 1e3 * height_ << " mm that rigid links follow best, "
+           << "measured on " << n_samples_ << " bending sample(s) (rms joint position error there "
+           << 1e3 * residual_ << " mm)";
     else
       text << "no bending sample: joints at the body's centroid height y = " << 1e3 * height_
            << " mm";

@@ -72,7 +72,7 @@ namespace softchain::reduction
         layer_height_ = parameters.joint_height;
         if (std::isnan(layer_height_))
           {
-            const NeutralLayer layer(*body_, layout, bending_samples(parameters, samples));
+            const NeutralLayer layer(body_, layout, mesh_, bending_samples(parameters, samples));
             layer_height_ = layer.height();
             std::cout << "softchain reduce: " << layer.description() << "\n";
           }
