@@ -14,7 +14,7 @@ namespace softchain::reduction
       section.declare("Joint placement", "strain-limiting layer",
                       "strain-limiting layer | paper (bounding-box centres, Sec. III-C)");
       section.declare("Joint height", "auto",
-                      "y of the strain-limiting layer [m]; auto: measured neutral layer");
+                      "y of the strain-limiting layer [m]; auto: fitted to the bending samples");
       section.declare("Slab half-widths", "1, 0.5, 0.3333333333333333", "b as fractions of a");
       section.declare("Methods", "M1, M2", "M1: bounding box, M2: affine fit");
       section.declare("Rotation threshold", "0.0017453292519943296",
