@@ -87,7 +87,8 @@ int main(int argc, char **argv)
           bending.push_back(&s);
 
       const reduction::JointLayout layout(mesh.X, a, 0, argv[1]);
-      const auto body = std::make_shared<const reduction::BodySamples>(mesh, a / 8, argv[1]);
+      const auto body = std::make_shared<const reduction::BodySamples>(
+        mesh, a / reduction::lattice_points_per_spacing, argv[1]);
       const reduction::NeutralLayer layer(body, layout, mesh, bending);
       const double                  bottom = body->reference_box().min()(1);
       const double                  length = body->reference_box().sizes()(0);

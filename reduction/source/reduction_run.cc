@@ -37,10 +37,6 @@ namespace softchain::reduction
       return converged;
     }
 
-    // The body lattice is a/8 apart: a slab of the smallest default half-width
-    // b = a/3 holds 5 planes of it, and a 2 mm wall 1-2 points across.
-    constexpr double lattice_points_per_spacing = 8;
-
     // The samples whose role feeds k_phi, at a nonzero pressure: they bend
     // the finger about z and locate its neutral layer.
     std::vector<const data::SampleRecord *> bending_samples(const ReductionParameters &parameters,

@@ -27,6 +27,11 @@
 
 namespace softchain::reduction
 {
+  // The reduction's lattice spacing is h = a / lattice_points_per_spacing (a
+  // the joint spacing): a slab of the smallest default half-width b = a/3
+  // holds 5 planes of it, and a 2 mm wall 1-2 points across.
+  constexpr double lattice_points_per_spacing = 8;
+
   // A material point located in a cell: the corners' shape-function values.
   struct CellPoint
   {
