@@ -25,11 +25,11 @@ namespace softchain::chain
     }
   } // namespace
 
-  ChainParameters ChainParameters::read(const std::string &prm_path)
+  ChainParameters ChainParameters::read(const data::PrmFile &file)
   {
     data::PrmSection section;
     declare(section);
-    data::PrmFile::read(prm_path).parse_section("Chain", section);
+    file.parse_section("Chain", section);
 
     ChainParameters p;
     p.method = section.get("Stiffness method");

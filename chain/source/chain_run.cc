@@ -116,8 +116,8 @@ namespace softchain::chain
                   << " deg (" << summary.text(r, "n_samples") << " samples, "
                   << summary.text(r, "n_failed") << " failed)\n";
       for (const ValidationRecord &r : validation.records())
-        if (r.status != "converged")
-          std::cerr << "chain: " << r.model << " failed on sample " << r.sample << ": " << r.status
+        if (!r.converged)
+          std::cerr << "chain: " << r.model << " failed on sample " << r.sample << ": " << r.failure
                     << "\n";
       std::cout << "chain: tables in " << directory << "\n";
       std::cout.precision(precision);
@@ -148,10 +148,10 @@ namespace softchain::chain
     }
   } // namespace
 
-  int run_chain(const std::string &prm_path, const std::string &database_path,
+  int run_chain(const data::PrmFile &prm, const std::string &database_path,
                 const std::string &output_dir, bool export_mjcf)
   {
-    const ChainParameters          p        = ChainParameters::read(prm_path);
+    const ChainParameters          p        = ChainParameters::read(prm);
     const data::ActuationDatabase  database = data::ActuationDatabase::open(database_path);
     const data::MeshRecord        &mesh     = database.mesh();
     const std::string stiffness_dir = (std::filesystem::path(output_dir) / "stiffness").string();

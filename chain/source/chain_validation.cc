@@ -42,7 +42,7 @@ namespace softchain::chain
       ErrorStatistics s;
       for (const ValidationRecord *r : records)
         {
-          if (r->status != "converged")
+          if (!r->converged)
             {
               ++s.failed;
               continue;
@@ -90,7 +90,7 @@ namespace softchain::chain
         const Equilibrium e     = solver.solve(s.load);
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         ValidationRecord  r{s.id, s.role, model.name(), s.load.pressure, force_norm(s.load),
-                            NAN, NAN, e.iterations, e.converged ? "converged" : e.failure};
+                            NAN, NAN, e.iterations, e.converged, e.failure};
         r.solve_time = elapsed.count();
         if (e.converged)
           {
@@ -110,7 +110,7 @@ namespace softchain::chain
   int ChainValidation::n_failed(const std::string &model) const
   {
     return static_cast<int>(std::count_if(records_.begin(), records_.end(), [&](const auto &r) {
-      return r.model == model && r.status != "converged";
+      return r.model == model && !r.converged;
     }));
   }
 
@@ -128,7 +128,8 @@ namespace softchain::chain
                        CsvTable::cell(1e3 * r.position_error),
                        CsvTable::cell(100.0 * r.position_error / finger_length_),
                        CsvTable::cell(degrees(r.orientation_error)),
-                       CsvTable::cell(double(r.iterations)), r.status,
+                       CsvTable::cell(double(r.iterations)),
+                       r.converged ? std::string("converged") : r.failure,
                        CsvTable::cell(1e3 * r.tip_position.x()),
                        CsvTable::cell(1e3 * r.tip_position.y()),
                        CsvTable::cell(1e3 * r.tip_position.z()),

@@ -2,8 +2,10 @@
 // A logical line is one or more physical lines joined at a trailing "\";
 // "#" starts a comment; the statements are "subsection NAME", "end" and
 // "set NAME = VALUE".
+#include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/prm_file.h>
+#include <softchain/data/prm_subsections.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -16,6 +18,9 @@ namespace softchain::data
 {
   namespace
   {
+    using Statement = PrmFile::Statement;
+    using Kind      = Statement::Kind;
+
     std::string trim(const std::string &s)
     {
       const auto first = s.find_first_not_of(" \t\r");
@@ -24,50 +29,32 @@ namespace softchain::data
       return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
     }
 
-    enum class Kind
-    {
-      subsection,
-      set,
-      end
-    };
-
-    struct Statement
-    {
-      Kind        kind;
-      std::string name;  // subsection or parameter name
-      std::string value; // set only
-      int         first_line;
-      int         last_line;
-    };
-
     std::string where(const std::string &path, int line)
     {
       return path + ":" + std::to_string(line) + ": ";
     }
 
-    Statement parse_statement(const std::string &content, int first, int last,
-                              const std::string &path)
+    Statement parse_statement(const std::string &content, int line, const std::string &path)
     {
       const auto word_end = content.find_first_of(" \t");
       const std::string keyword = content.substr(0, word_end);
       const std::string rest =
         word_end == std::string::npos ? "" : trim(content.substr(word_end));
       if (keyword == "end" && rest.empty())
-        return {Kind::end, "", "", first, last};
+        return {Kind::end, "", "", line};
       if (keyword == "subsection" && !rest.empty())
-        return {Kind::subsection, rest, "", first, last};
+        return {Kind::subsection, rest, "", line};
       const auto equal = rest.find('=');
       if (keyword == "set" && equal != std::string::npos && !trim(rest.substr(0, equal)).empty())
-        return {Kind::set, trim(rest.substr(0, equal)), trim(rest.substr(equal + 1)), first, last};
-      throw InputError(where(path, first) + "expected 'subsection NAME', 'set NAME = VALUE' or "
-                                            "'end', found '" + content + "'");
+        return {Kind::set, trim(rest.substr(0, equal)), trim(rest.substr(equal + 1)), line};
+      throw InputError(where(path, line) + "expected 'subsection NAME', 'set NAME = VALUE' or "
+                                           "'end', found '" + content + "'");
     }
 
     struct LogicalLine
     {
       std::string content; // comment removed, trimmed
       int         first_line;
-      int         last_line;
     };
 
     // Joins physical lines ending in "\" with the next one (a trailing "\"
@@ -79,7 +66,7 @@ namespace softchain::data
       std::string              physical, joined;
       int                      line = 0, first = 1;
       const auto               finish = [&] {
-        lines.push_back({trim(joined.substr(0, joined.find('#'))), first, line});
+        lines.push_back({trim(joined.substr(0, joined.find('#'))), first});
         joined.clear();
         first = line + 1;
       };
@@ -97,7 +84,24 @@ namespace softchain::data
       return lines;
     }
 
-    // Splits the text into statements; checks that subsection/end balance.
+
+    // A top-level subsection must be one of prm_subsections(): a misspelled
+    // title would otherwise leave all its entries at their defaults.
+    void check_known_subsection(const Statement &s, const std::string &path)
+    {
+      std::string known;
+      for (const auto &subsection : prm_subsections())
+        {
+          if (subsection.title == s.name)
+            return;
+          known += (known.empty() ? "" : ", ") + subsection.title;
+        }
+      throw InputError(where(path, s.line) + "unknown subsection '" + s.name +
+                       "' (a SoftChain .prm has: " + known + ")");
+    }
+
+    // Splits the text into statements; checks that subsection/end balance
+    // and that every top-level subsection is one of prm_subsections().
     std::vector<Statement> statements(const std::string &text, const std::string &path)
     {
       std::vector<Statement> result;
@@ -106,16 +110,23 @@ namespace softchain::data
         {
           if (line.content.empty())
             continue;
-          result.push_back(parse_statement(line.content, line.first_line, line.last_line, path));
-          if (result.back().kind == Kind::subsection)
-            opened_at.push_back(line.first_line);
-          else if (result.back().kind == Kind::end)
+          result.push_back(parse_statement(line.content, line.first_line, path));
+          const Statement &s = result.back();
+          if (s.kind == Kind::subsection)
             {
               if (opened_at.empty())
-                throw InputError(where(path, line.first_line) +
-                                 "'end' without a matching 'subsection'");
+                check_known_subsection(s, path);
+              opened_at.push_back(s.line);
+            }
+          else if (s.kind == Kind::end)
+            {
+              if (opened_at.empty())
+                throw InputError(where(path, s.line) + "'end' without a matching 'subsection'");
               opened_at.pop_back();
             }
+          else if (opened_at.empty())
+            throw InputError(where(path, s.line) + "parameter '" + s.name +
+                             "' outside every subsection");
         }
       if (!opened_at.empty())
         throw InputError(where(path, opened_at.back()) + "subsection is never closed by 'end'");
@@ -136,6 +147,35 @@ namespace softchain::data
           if (s.kind == Kind::end)
             open.pop_back();
         }
+    }
+
+    bool is_number(const std::string &text)
+    {
+      char *end = nullptr;
+      std::strtod(text.c_str(), &end);
+      return !text.empty() && *end == '\0';
+    }
+
+    // `value` with each number between the separators , ; : rewritten by
+    // canonical() and the blanks around separators dropped.
+    std::string canonical_value(const std::string &value)
+    {
+      std::string result, token;
+      const auto  flush = [&] {
+        const std::string t = trim(token);
+        result += is_number(t) ? canonical(std::strtod(t.c_str(), nullptr)) : t;
+        token.clear();
+      };
+      for (const char c : value)
+        if (c == ',' || c == ';' || c == ':')
+          {
+            flush();
+            result += c;
+          }
+        else
+          token += c;
+      flush();
+      return result;
     }
   } // namespace
 
@@ -170,11 +210,8 @@ namespace softchain::data
   double PrmSection::get_double(const std::string &name) const
   {
     const std::string value = get(name);
-    char             *end   = nullptr;
-    const double      v     = std::strtod(value.c_str(), &end);
-    if (value.empty() || *end != '\0')
-      throw InputError(describe(name) + ": '" + value + "' is not a number");
-    return v;
+    require(is_number(value), name, "'" + value + "' is not a number");
+    return std::strtod(value.c_str(), nullptr);
   }
 
   int PrmSection::get_integer(const std::string &name) const
@@ -182,8 +219,7 @@ namespace softchain::data
     const std::string value = get(name);
     char             *end   = nullptr;
     const long        v     = std::strtol(value.c_str(), &end, 10);
-    if (value.empty() || *end != '\0')
-      throw InputError(describe(name) + ": '" + value + "' is not an integer");
+    require(!value.empty() && *end == '\0', name, "'" + value + "' is not an integer");
     return static_cast<int>(v);
   }
 
@@ -206,8 +242,8 @@ namespace softchain::data
       items.push_back(trim(item));
     if (items.size() == 1 && items[0].empty())
       items.clear();
-    if (std::count(items.begin(), items.end(), "") > 0)
-      throw InputError(describe(name) + ": empty item in the comma separated list");
+    require(std::count(items.begin(), items.end(), "") == 0, name,
+            "empty item in the comma separated list");
     return items;
   }
 
@@ -216,13 +252,30 @@ namespace softchain::data
     std::vector<double> values;
     for (const auto &item : get_list(name))
       {
-        char        *end = nullptr;
-        const double v   = std::strtod(item.c_str(), &end);
-        if (*end != '\0')
-          throw InputError(describe(name) + ": list item '" + item + "' is not a number");
-        values.push_back(v);
+        require(is_number(item), name, "list item '" + item + "' is not a number");
+        values.push_back(std::strtod(item.c_str(), nullptr));
       }
     return values;
+  }
+
+  std::string PrmSection::get_selection(const std::string              &name,
+                                        const std::vector<std::string> &options) const
+  {
+    const std::string value = get(name);
+    if (std::find(options.begin(), options.end(), value) != options.end())
+      return value;
+    std::string list;
+    for (const auto &option : options)
+      list += (list.empty() ? "" : ", ") + option;
+    throw InputError(describe(name) + ": '" + value + "' is not one of: " + list);
+  }
+
+  std::string PrmSection::canonical_values() const
+  {
+    std::string text;
+    for (const auto &[name, entry] : entries)
+      text += title + "/" + name + " = " + canonical_value(entry.value) + "\n";
+    return text;
   }
 
   PrmFile PrmFile::read(const std::string &path)
@@ -233,9 +286,9 @@ namespace softchain::data
     std::ostringstream text;
     text << in.rdbuf();
     PrmFile file;
-    file.path_ = path;
-    file.text_ = text.str();
-    statements(file.text_, path); // validates the structure now
+    file.path_       = path;
+    file.text_       = text.str();
+    file.statements_ = statements(file.text_, path);
     return file;
   }
 
@@ -243,7 +296,7 @@ namespace softchain::data
   {
     section.file  = path_;
     section.title = title;
-    walk(statements(text_, path_), [&](const Statement &s, const std::vector<std::string> &open) {
+    walk(statements_, [&](const Statement &s, const std::vector<std::string> &open) {
       if (s.kind != Kind::set || open.empty() || open[0] != title)
         return;
       std::string key;
@@ -252,28 +305,20 @@ namespace softchain::data
       key += s.name;
       const auto entry = section.entries.find(key);
       if (entry == section.entries.end())
-        throw InputError(where(path_, s.first_line) + "unknown parameter '" + key +
+        throw InputError(where(path_, s.line) + "unknown parameter '" + key +
                          "' in subsection '" + title + "'");
       entry->second.value = s.value;
-      entry->second.line  = s.first_line;
+      entry->second.line  = s.line;
     });
   }
 
-  std::string PrmFile::text_without(const std::vector<std::string> &titles) const
+  std::vector<std::string> PrmFile::subsection_names(const std::string &title) const
   {
-    std::vector<bool> removed;
-    walk(statements(text_, path_), [&](const Statement &s, const std::vector<std::string> &open) {
-      if (open.empty() || std::find(titles.begin(), titles.end(), open[0]) == titles.end())
-        return;
-      removed.resize(std::max<std::size_t>(removed.size(), s.last_line), false);
-      for (int line = s.first_line; line <= s.last_line; ++line)
-        removed[line - 1] = true;
+    std::vector<std::string> names;
+    walk(statements_, [&](const Statement &s, const std::vector<std::string> &open) {
+      if (s.kind == Kind::subsection && open.size() == 2 && open[0] == title)
+        names.push_back(s.name);
     });
-    std::istringstream in(text_);
-    std::ostringstream out;
-    std::string        line;
-    for (std::size_t i = 0; std::getline(in, line); ++i)
-      out << (i < removed.size() && removed[i] ? "" : line) << '\n';
-    return out.str();
+    return names;
   }
 } // namespace softchain::data

@@ -63,11 +63,11 @@ namespace softchain::reduction
     return method == RotationMethod::bounding_box ? "M1" : "M2";
   }
 
-  ReductionParameters ReductionParameters::read(const std::string &prm_path)
+  ReductionParameters ReductionParameters::read(const data::PrmFile &file)
   {
     data::PrmSection section;
     declare(section);
-    data::PrmFile::read(prm_path).parse_section("Reduction", section);
+    file.parse_section("Reduction", section);
 
     ReductionParameters p;
     p.joint_spacing = section.get_double("Joint spacing");

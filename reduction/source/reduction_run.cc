@@ -120,16 +120,16 @@ namespace softchain::reduction
     }
   } // namespace
 
-  ReductionRun::ReductionRun(std::string prm_path, std::string database_path,
+  ReductionRun::ReductionRun(const data::PrmFile &prm, std::string database_path,
                              std::string output_dir)
-    : prm_path_(std::move(prm_path))
+    : parameters_(ReductionParameters::read(prm))
     , database_path_(std::move(database_path))
     , output_dir_(std::move(output_dir))
   {}
 
   ReductionSummary ReductionRun::run() const
   {
-    const auto parameters = ReductionParameters::read(prm_path_);
+    const auto &parameters = parameters_;
     const auto database   = data::ActuationDatabase::open(database_path_);
     const JointLayout layout(database.mesh().X, parameters.joint_spacing, parameters.n_joints,
                              database_path_);
@@ -152,10 +152,10 @@ namespace softchain::reduction
     return summary;
   }
 
-  int run_reduction(const std::string &prm_path, const std::string &database_path,
+  int run_reduction(const data::PrmFile &prm, const std::string &database_path,
                     const std::string &output_dir)
   {
-    ReductionRun(prm_path, database_path, output_dir).run();
+    ReductionRun(prm, database_path, output_dir).run();
     return 0;
   }
 } // namespace softchain::reduction

@@ -69,10 +69,10 @@ namespace softchain::report
     }
   } // namespace
 
-  HtmlReport::HtmlReport(const std::string &prm_path, const std::string &database_path,
+  HtmlReport::HtmlReport(const data::PrmFile &prm, const std::string &database_path,
                          const std::string &output_directory)
     : output_directory_(output_directory)
-    , chain_(chain::ChainParameters::read(prm_path))
+    , chain_(chain::ChainParameters::read(prm))
   {
     require(database_path, "sweep");
     require(output("stiffness/" + chain_label() + ".csv"), "reduce");

@@ -7,10 +7,10 @@
 
 namespace softchain::report
 {
-  int run_report(const std::string &prm_path, const std::string &database_path,
+  int run_report(const data::PrmFile &prm, const std::string &database_path,
                  const std::string &output_dir, const std::optional<std::vector<StageTime>> &stage_times)
   {
-    HtmlReport report(prm_path, database_path, output_dir);
+    HtmlReport report(prm, database_path, output_dir);
     if (stage_times)
       report.set_stage_times(*stage_times);
     // Written beside and renamed over: a reader never sees half a report.

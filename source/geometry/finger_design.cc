@@ -148,20 +148,24 @@ namespace softchain::geometry
     }
   } // namespace
 
-  FingerDesign FingerDesign::read(const std::string &prm_path)
+  FingerDesign FingerDesign::read(const data::PrmFile &file)
   {
-    const data::PrmFile file = data::PrmFile::read(prm_path);
-    PrmSection          section;
+    PrmSection section;
     declare(section);
     file.parse_section(subsection, section);
     FingerDesign design;
-    design.source = prm_path;
+    design.source = file.path();
     read_mesh_choice(section, design);
     if (design.parametric())
       read_parametric(section, design);
     else
       read_surface(section, design);
     return design;
+  }
+
+  FingerDesign FingerDesign::read(const std::string &prm_path)
+  {
+    return read(data::PrmFile::read(prm_path));
   }
 
   double FingerDesign::length() const

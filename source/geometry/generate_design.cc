@@ -55,9 +55,9 @@ namespace softchain::geometry
     return result;
   }
 
-  GeneratedDesign generate_design(const std::string &prm_path, const std::string &cache_dir)
+  GeneratedDesign generate_design(const FingerDesign &design, const std::string &cache_dir)
   {
     GmshMesher mesher(cache_dir);
-    return generate_design(FingerDesign::read(prm_path), mesher);
+    return generate_design(design, mesher);
   }
 } // namespace softchain::geometry

@@ -20,7 +20,7 @@ using namespace softchain;
 
 namespace
 {
-  const char *chain_prm = "subsection Geometry\n  set Length = 0.09\nend\n"
+  const char *chain_prm = "subsection Finger design\n  set Length = 0.09\nend\n"
                           "subsection Chain\n"
                           "  set Stiffness method = M2\n"
                           "  set Slab half-width = 0.5\n"
@@ -94,7 +94,7 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
   chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", "M1", 0.5), m1);
   write_database(dir.file("database.h5"), m2_files.read_model("M2", {0.09, 0, 0}, "value", true), mesh);
 
-  REQUIRE(run_chain(prm, dir.file("database.h5"), out, true) == 0);
+  REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
   const data::CsvTable table = data::CsvTable::read(out + "/chain/validation.csv");
   REQUIRE(table.n_rows() == 9); // 3 samples of the validation roles x 3 models
   for (std::size_t r = 0; r < table.n_rows(); ++r)
@@ -190,7 +190,7 @@ TEST_CASE("the Chain subsection is read and checked")
   SECTION("values")
   {
     std::ofstream(prm) << chain_prm;
-    const ChainParameters p = ChainParameters::read(prm);
+    const ChainParameters p = ChainParameters::read(data::PrmFile::read(prm));
     CHECK(p.method == "M2");
     CHECK(p.validation_roles == std::vector<std::string>{"validation", "pressure"});
     CHECK(p.newton.max_iterations == 50);
@@ -198,7 +198,7 @@ TEST_CASE("the Chain subsection is read and checked")
   SECTION("a bad method names file, line and parameter")
   {
     std::ofstream(prm) << "subsection Chain\n  set Stiffness method = M3\nend\n";
-    CHECK_THROWS_WITH(ChainParameters::read(prm),
+    CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
                       Catch::Contains(prm + ":2") && Catch::Contains("Stiffness method") &&
                         Catch::Contains("M3"));
   }
@@ -207,6 +207,6 @@ TEST_CASE("the Chain subsection is read and checked")
     std::ofstream(prm) << chain_prm;
     const data::DesignRecord design{"box", "0123456789abcdef", "Q1", "test", chain_prm};
     data::ActuationDatabase::open_or_create(dir.file("db.h5"), design, chain::testing::box_mesh({}));
-    CHECK_THROWS_AS(run_chain(prm, dir.file("db.h5"), dir.file("out"), false), data::InputError);
+    CHECK_THROWS_AS(run_chain(data::PrmFile::read(prm), dir.file("db.h5"), dir.file("out"), false), data::InputError);
   }
 }

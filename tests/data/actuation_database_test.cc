@@ -15,7 +15,7 @@ namespace
 {
   DesignRecord design(const std::string &hash)
   {
-    return {"cube", hash, "Q1", "test", "subsection Geometry\nend\n"};
+    return {"cube", hash, "Q1", "test", "subsection Finger design\nend\n"};
   }
 
   // One hexahedron (unit cube) with a "cavity" made of two triangles.

@@ -1,5 +1,6 @@
 // PrmFile / PrmSection: nested subsections, unknown entries with file:line,
-// continuation lines, text_without, typed getters.
+// continuation lines, unknown subsections, typed getters, enums and the
+// canonical values that key the design hash.
 #include <softchain/data/input_error.h>
 #include <softchain/data/prm_file.h>
 
@@ -16,8 +17,8 @@ using softchain::testing::ScratchDirectory;
 namespace
 {
   const char *const example = "# a design\n"                        // 1
-                              "subsection Geometry\n"               // 2
-                              "  set Length = 0.09\n"               // 3
+                              "subsection Mesh\n"                   // 2
+                              "  set Bender length = 0.09\n"        // 3
                               "end\n"                               // 4
                               "subsection Reduction\n"              // 5
                               "  set Joint spacing = 0.01 # [m]\n"  // 6
@@ -78,31 +79,85 @@ TEST_CASE("prm: an unknown parameter names file and line")
 TEST_CASE("prm: malformed structure names file and line")
 {
   ScratchDirectory dir("prm_malformed");
-  CHECK_THROWS_WITH(PrmFile::read(write(dir, "subsection A\n  set x 1\nend\n")),
+  CHECK_THROWS_WITH(PrmFile::read(write(dir, "subsection Chain\n  set x 1\nend\n")),
                     Catch::Contains(dir.file("p.prm") + ":2:"));
   CHECK_THROWS_WITH(PrmFile::read(write(dir, "end\n")), Catch::Contains(":1: 'end' without"));
-  CHECK_THROWS_WITH(PrmFile::read(write(dir, "\nsubsection A\n")),
+  CHECK_THROWS_WITH(PrmFile::read(write(dir, "\nsubsection Chain\n")),
                     Catch::Contains(":2: subsection is never closed"));
   CHECK_THROWS_WITH(PrmFile::read(dir.file("none.prm")), Catch::Contains(dir.file("none.prm")));
   // A "\" on the last line continues into nothing: the statement still counts.
-  CHECK_NOTHROW(PrmFile::read(write(dir, "subsection A\nend \\")));
-  CHECK_THROWS_WITH(PrmFile::read(write(dir, "subsection A \\")),
+  CHECK_NOTHROW(PrmFile::read(write(dir, "subsection Chain\nend \\")));
+  CHECK_THROWS_WITH(PrmFile::read(write(dir, "subsection Chain \\")),
                     Catch::Contains(":1: subsection is never closed"));
 }
 
-TEST_CASE("prm: text_without blanks the named subsections and keeps line numbers")
+TEST_CASE("prm: a top-level subsection SoftChain does not know names file and line")
 {
-  ScratchDirectory  dir("prm_without");
-  const PrmFile     file = PrmFile::read(write(dir, example));
-  const std::string rest = file.text_without({"Reduction"});
-  std::istringstream original(example), stripped(rest);
-  std::string        a, b;
-  for (int line = 1; std::getline(original, a); ++line)
-    {
-      REQUIRE(std::getline(stripped, b));
-      CHECK(b == (line >= 5 && line <= 12 ? "" : a));
-    }
-  CHECK_FALSE(std::getline(stripped, b));
+  // A misspelled title would leave all its entries at their defaults.
+  ScratchDirectory dir("prm_unknown_subsection");
+  CHECK_THROWS_WITH(PrmFile::read(write(dir, "subsection Mesh\nend\nsubsection Reduktion\nend\n")),
+                    Catch::StartsWith(dir.file("p.prm") + ":3: unknown subsection 'Reduktion'") &&
+                      Catch::Contains("Reduction"));
+  CHECK_THROWS_WITH(PrmFile::read(write(dir, "set Pressure = 1\n")),
+                    Catch::Contains(":1: parameter 'Pressure' outside every subsection"));
+  // Nested subsections are the tiers' business (material regions).
+  CHECK_NOTHROW(PrmFile::read(write(dir, "subsection Materials\n subsection rubber\n end\nend\n")));
+}
+
+TEST_CASE("prm: subsection_names lists the nested subsections in file order")
+{
+  ScratchDirectory dir("prm_subsection_names");
+  const PrmFile    file = PrmFile::read(write(dir, "subsection Materials\n"
+                                                    "  set Density = 1000\n"
+                                                    "  subsection silicone\n  end\n"
+                                                    "  subsection fabric\n"
+                                                    "    subsection inner\n    end\n"
+                                                    "  end\n"
+                                                    "end\n"));
+  CHECK(file.subsection_names("Materials") == std::vector<std::string>{"silicone", "fabric"});
+  CHECK(file.subsection_names("Mesh").empty());
+}
+
+TEST_CASE("prm: selections and enums accept their names only")
+{
+  enum class Shape
+  {
+    box,
+    tube
+  };
+  PrmSection section;
+  section.file  = "f.prm";
+  section.title = "T";
+  section.declare("Shape", "tube");
+  section.declare("Other", "sphere");
+  CHECK(section.get_enum<Shape>("Shape", {{"box", Shape::box}, {"tube", Shape::tube}}) ==
+        Shape::tube);
+  CHECK_THROWS_WITH(section.get_enum<Shape>("Other", {{"box", Shape::box}, {"tube", Shape::tube}}),
+                    Catch::Equals("f.prm: parameter 'Other' in subsection 'T': 'sphere' is not "
+                                  "one of: box, tube"));
+  CHECK(section.get_selection("Shape", {"tube"}) == "tube");
+}
+
+TEST_CASE("prm: canonical values do not depend on how a number is written")
+{
+  ScratchDirectory dir("prm_canonical");
+  const auto values = [&](const std::string &set_lines) {
+    PrmSection section;
+    section.declare("E", "2.6e5");
+    section.declare("Rigidity", "fabric: 2000, thread: 500");
+    section.declare("Name", "p10");
+    PrmFile::read(write(dir, "subsection Materials\n" + set_lines + "end\n"))
+      .parse_section("Materials", section);
+    return section.canonical_values();
+  };
+  const std::string defaults = values("");
+  CHECK(values("  set E = 260000\n") == defaults);
+  CHECK(values("  set E = 2.60e+05 # same\n  set Rigidity = fabric:2e3,thread : 500.0\n") ==
+        defaults);
+  CHECK(values("  set E = 2.6e5\n  set Name = p10\n") == defaults);
+  CHECK(values("  set E = 2.7e5\n") != defaults);
+  CHECK(values("  set Rigidity = fabric: 2000, thread: 501\n") != defaults);
+  CHECK(values("  set Name = p13\n") != defaults);
 }
 
 TEST_CASE("prm: typed getters reject malformed values")

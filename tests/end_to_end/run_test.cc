@@ -8,7 +8,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+
+#include <sys/wait.h>
 
 using softchain::testing::TinyDesign;
 
@@ -58,6 +62,47 @@ TEST_CASE("softchain run goes from the .prm to the stiffness and validation tabl
       CHECK(v.number(row, "orientation_error_deg") < 1);
     }
   CHECK(n_pressure == 3);
+}
+
+TEST_CASE("softchain run reads the .prm once: every tier gets the same parsed file")
+{
+  // The .prm comes through a pipe (/dev/stdin), which can be read only once:
+  // a second read would see an empty file, and the reduction and chain would
+  // fall back to their defaults (b = a, a/2, a/3 instead of the file's b = a).
+  const TinyDesign  design  = softchain::testing::pipeline_design("run_reads_once", false);
+  const std::string command = std::string("cat ") + design.prm() + " | " + SOFTCHAIN_EXECUTABLE +
+                              " run /dev/stdin > " + design.output() + ".log 2>&1";
+  const int status = std::system(command.c_str());
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(std::filesystem::exists(design.output() + "/stiffness/M2_b1.00a.csv"));
+  CHECK_FALSE(std::filesystem::exists(design.output() + "/stiffness/M2_b0.50a.csv"));
+  CHECK(std::filesystem::exists(design.output() + "/chain/validation.csv"));
+  CHECK(std::filesystem::exists(design.output() + "/report.html"));
+}
+
+TEST_CASE("reduce, chain and report need only the database, not the mesh file")
+{
+  // The deal.II-free tiers read subsection Design (where the database is)
+  // and their own; a .prm whose mesh file is gone still reduces its database.
+  const TinyDesign design = softchain::testing::pipeline_design("run_mesh_gone", false);
+  REQUIRE(design.run("sweep").status == 0);
+  std::ofstream(design.prm(), std::ios::app)
+    << "subsection Mesh\n  set Source = file\n  set Mesh file = " << design.output()
+    << "/gone.msh\nend\n";
+  for (const char *command : {"reduce", "chain", "report"})
+    {
+      const auto outcome = design.run(command);
+      INFO(command << ": " << outcome.output);
+      CHECK(outcome.status == 0);
+    }
+  CHECK(std::filesystem::exists(design.output() + "/stiffness/M2_b1.00a.csv"));
+  CHECK(std::filesystem::exists(design.output() + "/report.html"));
+  // The FEM does need the mesh, and says which file is missing.
+  const auto sweep = design.run("sweep");
+  CHECK(sweep.status == 1);
+  CHECK(sweep.output.find("Mesh/Mesh file") != std::string::npos);
+  CHECK(sweep.output.find("gone.msh") != std::string::npos);
 }
 
 TEST_CASE("tiny loads (1 Pa, 1e-5 N) give no stiffness rather than garbage")

@@ -10,9 +10,9 @@
 // 1e-2). The mean tip deflections must agree within 0.5 % (the goal of this cross-check).
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_average.h>
-#include <softchain/boundary_ids.h>
-#include <softchain/hyperelastic_material.h>
+#include <softchain/fem/boundary_average.h>
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/hyperelastic_material.h>
 
 
 #include <catch2/catch.hpp>
@@ -24,7 +24,9 @@
 #include <set>
 #include <sstream>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

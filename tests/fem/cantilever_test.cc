@@ -20,15 +20,17 @@
 //    -0.87 % for nu = 0.48). The tolerances are 1.5 times the L/h = 10 values.
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_average.h>
-#include <softchain/boundary_ids.h>
+#include <softchain/fem/boundary_average.h>
+#include <softchain/fem/boundary_ids.h>
 
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

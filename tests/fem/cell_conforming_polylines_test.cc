@@ -4,7 +4,7 @@
 // pattern.
 #include "fem_test_tools.h"
 
-#include <softchain/cell_conforming_polylines.h>
+#include <softchain/fem/cell_conforming_polylines.h>
 
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
@@ -13,7 +13,9 @@
 
 #include <catch2/catch.hpp>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

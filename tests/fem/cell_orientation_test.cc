@@ -1,7 +1,7 @@
 // Inverted and distorted cells: the corner test of
 // cell_orientation.h on meshes with a known answer, and the refusal of an
 // inverted cell before any solve.
-#include <softchain/cell_orientation.h>
+#include <softchain/fem/cell_orientation.h>
 #include <softchain/data/input_error.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -11,7 +11,9 @@
 
 #include <cmath>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

@@ -9,7 +9,7 @@
 // of the midpoint (48, 52) mm of the traction face, in mm.
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_ids.h>
+#include <softchain/fem/boundary_ids.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -19,7 +19,9 @@
 #include <cmath>
 #include <iomanip>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

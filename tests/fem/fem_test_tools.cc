@@ -1,6 +1,6 @@
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_ids.h>
+#include <softchain/fem/boundary_ids.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping.h>
@@ -11,8 +11,10 @@
 #include <iomanip>
 #include <random>
 
-namespace softchain::test
+namespace softchain::fem::test
 {
+  using namespace dealii;
+
   std::string write_prm(const std::string &name, const std::string &text)
   {
     const std::string file = name + ".prm";
@@ -118,4 +120,4 @@ namespace softchain::test
     space.fixed_dofs.set_zero(u);
     return u;
   }
-} // namespace softchain::test
+} // namespace softchain::fem::test

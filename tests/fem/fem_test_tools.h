@@ -2,15 +2,15 @@
 // Helpers of the FEM-tier tests: parameters from .prm text, solvers on the
 // built-in bender or on a mesh made in the test, random smooth displacement
 // fields, displacements at points.
-#include <softchain/finger_mesh.h>
-#include <softchain/parameters.h>
-#include <softchain/quasi_static_solver.h>
+#include <softchain/fem/finger_mesh.h>
+#include <softchain/fem/parameters.h>
+#include <softchain/fem/quasi_static_solver.h>
 
 #include <memory>
 #include <sstream>
 #include <string>
 
-namespace softchain::test
+namespace softchain::fem::test
 {
   // Writes `text` to `name`.prm in the test directory (rank 0 writes, all
   // ranks wait for it) and returns the file name.
@@ -34,14 +34,14 @@ namespace softchain::test
   // A block [0, length] x [0, height] x [0, height] of `cells` hexahedra
   // per direction, with the boundary ids `base` (x = 0, clamped) and `tip`
   // (x = length): the cantilever of the verification tests.
-  void cantilever_block(Triangulation<3> &mesh, const std::vector<unsigned int> &cells,
+  void cantilever_block(dealii::Triangulation<3> &mesh, const std::vector<unsigned int> &cells,
                         double length, double height);
 
   // A solver on a mesh built in the test (material id 0 = region `solid`,
   // boundary ids of boundary_ids.h), no springs.
   struct MeshSolverFixture
   {
-    MeshSolverFixture(const Parameters &p, const Triangulation<3> &mesh);
+    MeshSolverFixture(const Parameters &p, const dealii::Triangulation<3> &mesh);
     Parameters                         prm;
     std::ostringstream                 log;
     std::unique_ptr<QuasiStaticSolver> solver;
@@ -49,7 +49,7 @@ namespace softchain::test
 
   // Displacement of the solver's current state at reference point `p`
   // (inside the body or on its boundary), the same on every rank.
-  Tensor<1, 3> displacement_at(const QuasiStaticSolver &solver, const Point<3> &p);
+  dealii::Tensor<1, 3> displacement_at(const QuasiStaticSolver &solver, const dealii::Point<3> &p);
 
   struct SolverFixture
   {
@@ -63,7 +63,7 @@ namespace softchain::test
   // A smooth displacement field (a bend plus a twist plus a stretch of
   // amplitude `scale`) plus seeded noise of relative size `noise`, zero on the
   // clamped base.
-  TrilinosWrappers::MPI::Vector smooth_displacement(const QuasiStaticSolver &solver,
+  dealii::TrilinosWrappers::MPI::Vector smooth_displacement(const QuasiStaticSolver &solver,
                                                     double scale, double noise,
                                                     unsigned int seed);
-} // namespace softchain::test
+} // namespace softchain::fem::test

@@ -7,11 +7,13 @@
 // enclosed volume at rest is the bender's analytic cavity volume.
 #include "fem_test_tools.h"
 
-#include <softchain/built_in_bender.h>
+#include <softchain/fem/built_in_bender.h>
 
 #include <catch2/catch.hpp>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

@@ -10,7 +10,7 @@
 // these elements, so both hold to round-off.
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_ids.h>
+#include <softchain/fem/boundary_ids.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -21,7 +21,9 @@
 
 #include <catch2/catch.hpp>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

@@ -1,6 +1,6 @@
 // SampleSet: the lateral and torsion samples are repeated at every pressure
 // of `Force sample pressures`, each pressure a continuation chain of its own.
-#include <softchain/sample_set.h>
+#include <softchain/fem/sample_set.h>
 
 #include <catch2/catch.hpp>
 
@@ -8,6 +8,7 @@
 #include <fstream>
 
 using namespace softchain;
+using namespace softchain::fem;
 
 TEST_CASE("force samples are made at each force sample pressure, one chain per role and pressure")
 {

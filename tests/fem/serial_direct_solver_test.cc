@@ -4,14 +4,16 @@
 // the first.
 #include "fem_test_tools.h"
 
-#include <softchain/serial_direct_solver.h>
+#include <softchain/fem/serial_direct_solver.h>
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <catch2/catch.hpp>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

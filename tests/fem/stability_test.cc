@@ -3,9 +3,9 @@
 // crash or a silent wrong state.
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_average.h>
-#include <softchain/boundary_ids.h>
-#include <softchain/cell_orientation.h>
+#include <softchain/fem/boundary_average.h>
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/cell_orientation.h>
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -15,7 +15,9 @@
 #include <map>
 #include <tuple>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

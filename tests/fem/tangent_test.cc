@@ -6,7 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

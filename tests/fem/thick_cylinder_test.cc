@@ -16,8 +16,8 @@
 // (symmetry faces u_x = 0, u_y = 0; u_z = 0 on both flat faces).
 #include "fem_test_tools.h"
 
-#include <softchain/boundary_ids.h>
-#include <softchain/hyperelastic_material.h>
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/hyperelastic_material.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -27,7 +27,9 @@
 #include <array>
 #include <cmath>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {

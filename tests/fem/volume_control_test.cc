@@ -4,14 +4,16 @@
 // control stops.
 #include "fem_test_tools.h"
 
-#include <softchain/volume_controlled_inflation.h>
+#include <softchain/fem/volume_controlled_inflation.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {
@@ -55,7 +57,7 @@ TEST_CASE("volume control passes the balloon limit point where pressure control 
   load.pressure          = 40e3;
   const auto by_pressure = f.solver->solve(load);
   REQUIRE(!by_pressure.converged);
-  CHECK(by_pressure.limit_point);
+  CHECK(by_pressure.failure == QuasiStaticSolver::Failure::limit_point);
   const double p_limit = by_pressure.load_factor_reached * load.pressure;
 
   f.solver->reset();

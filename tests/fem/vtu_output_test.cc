@@ -7,7 +7,7 @@
 // (the pressure stretches the threads).
 #include "fem_test_tools.h"
 
-#include <softchain/commands.h>
+#include <softchain/app/commands.h>
 
 #include <zlib.h>
 
@@ -21,7 +21,9 @@
 #include <iterator>
 #include <regex>
 
+using namespace dealii;
 using namespace softchain;
+using namespace softchain::fem;
 
 namespace
 {
@@ -166,7 +168,7 @@ TEST_CASE("solve writes VTU files that read back with all fields", "[fem][output
                                    "subsection Loads\n  set Pressure = 5000\nend\n"
                                    "subsection Design\n  set Output directory = " +
                                      directory + "\nend\n"));
-  REQUIRE(solve_command(prm) == 0);
+  REQUIRE(softchain::app::solve_command(data::PrmFile::read(prm)) == 0);
   MPI_Barrier(MPI_COMM_WORLD); // every rank's piece written
 
   const std::string vtu    = directory + "/vtu/";

@@ -109,7 +109,7 @@ namespace
   std::string write_prm(const ScratchDirectory &dir, const std::string &reduction_body)
   {
     std::ofstream(dir.file("finger.prm"))
-      << "subsection Geometry\n  set Length = 0.05\nend\n"
+      << "subsection Finger design\n  set Length = 0.05\nend\n"
       << "subsection Reduction\n" << reduction_body << "end\n";
     return dir.file("finger.prm");
   }
@@ -181,11 +181,11 @@ TEST_CASE("run_reduction end to end on a synthetic database")
   const Scenario   s;
   s.write_database(dir.file("database.h5"));
   const std::string prm = write_prm(dir, good_prm);
-  const auto summary = reduction::ReductionRun(prm, dir.file("database.h5"), dir.file("out")).run();
+  const auto summary = reduction::ReductionRun(data::PrmFile::read(prm), dir.file("database.h5"), dir.file("out")).run();
   CHECK(summary.n_samples_used == 6);
   CHECK(summary.n_failed_skipped == 1);
   CHECK(summary.n_below_threshold == 0);
-  CHECK(reduction::run_reduction(prm, dir.file("database.h5"), dir.file("out")) == 0);
+  CHECK(reduction::run_reduction(data::PrmFile::read(prm), dir.file("database.h5"), dir.file("out")) == 0);
 
   for (const std::string method : {"M1", "M2"})
     for (const auto &[b, f] : {std::pair{a, "1.00"}, std::pair{a / 2, "0.50"}})
@@ -280,28 +280,28 @@ TEST_CASE("run_reduction: bad input is an InputError naming file or parameter")
 {
   ScratchDirectory dir("reduction_bad");
   Scenario().write_database(dir.file("database.h5"));
-  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Methods = M1, M3\n"),
+  CHECK_THROWS_WITH(reduction::run_reduction(data::PrmFile::read(write_prm(dir, "  set Methods = M1, M3\n")),
                                              dir.file("database.h5"), dir.file("out")),
                     Catch::Contains("finger.prm:5: parameter 'Methods'") &&
                       Catch::Contains("M3"));
-  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Color = red\n"),
+  CHECK_THROWS_WITH(reduction::run_reduction(data::PrmFile::read(write_prm(dir, "  set Color = red\n")),
                                              dir.file("database.h5"), dir.file("out")),
                     Catch::Contains("finger.prm:5: unknown parameter 'Color'"));
-  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, good_prm), dir.file("none.h5"),
+  CHECK_THROWS_WITH(reduction::run_reduction(data::PrmFile::read(write_prm(dir, good_prm)), dir.file("none.h5"),
                                              dir.file("out")),
                     Catch::Contains(dir.file("none.h5")));
-  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Joint placement = middle\n"),
+  CHECK_THROWS_WITH(reduction::run_reduction(data::PrmFile::read(write_prm(dir, "  set Joint placement = middle\n")),
                                              dir.file("database.h5"), dir.file("out")),
                     Catch::Contains("parameter 'Joint placement'") && Catch::Contains("middle"));
-  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Joint height = low\n"),
+  CHECK_THROWS_WITH(reduction::run_reduction(data::PrmFile::read(write_prm(dir, "  set Joint height = low\n")),
                                              dir.file("database.h5"), dir.file("out")),
                     Catch::Contains("parameter 'Joint height'"));
   // The default placement samples the body through its cells: a database
   // without cells is refused with the reason.
-  CHECK_THROWS_WITH(reduction::run_reduction(write_prm(dir, "  set Joint spacing = 0.01\n"),
+  CHECK_THROWS_WITH(reduction::run_reduction(data::PrmFile::read(write_prm(dir, "  set Joint spacing = 0.01\n")),
                                              dir.file("database.h5"), dir.file("out")),
                     Catch::Contains("database.h5") && Catch::Contains("/mesh/cells is empty"));
-  CHECK_THROWS_AS(reduction::run_reduction(write_prm(dir, "  set Joint spacing = 1\n"),
+  CHECK_THROWS_AS(reduction::run_reduction(data::PrmFile::read(write_prm(dir, "  set Joint spacing = 1\n")),
                                            dir.file("database.h5"), dir.file("out")),
                   data::InputError);
 }

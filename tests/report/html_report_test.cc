@@ -27,7 +27,7 @@ TEST_CASE("The report holds every section, its pictures and its tables")
 {
   const SyntheticOutputs outputs("report_sections");
   std::ofstream(outputs.file("stiffness/kpsi.png")) << "not really a PNG";
-  const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
+  const std::string html = HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   for (const char *section : {"Summary", "1. The design", "2. The deformed finger", "3. Stiffness profiles",
                               "4. Chain against FEM", "Baseline comparison", "5. Run times",
                               "6. The paper's claims"})
@@ -66,7 +66,7 @@ TEST_CASE("The chain of every validation sample is drawn over its FEM finger")
   poses.add_row({validation.id, "M2", "tip", "0.02", "-0.001", "0"});
   poses.add_row({validation.id, "baseline", "1", "0", "0", "0"});
   poses.write(outputs.file("chain/chain_poses.csv"));
-  const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
+  const std::string html = HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   CHECK(html.find("The chain over the FEM finger") != std::string::npos);
   // Three finger pictures and one with the chain (the M2 points only).
   CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == 4);
@@ -76,7 +76,7 @@ TEST_CASE("The chain of every validation sample is drawn over its FEM finger")
 TEST_CASE("The stage times of softchain run replace the 'not measured' line")
 {
   const SyntheticOutputs outputs("report_stage_times");
-  HtmlReport             report(outputs.prm(), outputs.database(), outputs.directory());
+  HtmlReport             report(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory());
   report.set_stage_times({{"FEM sample sweep", 12.5}, {"reduction", 0.25}});
   const std::string html = report.html();
   CHECK(html.find("<td>FEM sample sweep</td><td>12.5</td>") != std::string::npos);
@@ -89,7 +89,7 @@ TEST_CASE("Without a chain validation the report says so instead of failing")
   // the chain stage cannot build a chain, and the rest is still reported.
   const SyntheticOutputs outputs("report_no_chain");
   std::filesystem::remove(outputs.file("chain/validation_summary.csv"));
-  const std::string html = HtmlReport(outputs.prm(), outputs.database(), outputs.directory()).html();
+  const std::string html = HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   CHECK(html.find("No chain validation: chain/validation_summary.csv is missing") != std::string::npos);
   CHECK(html.find("3. Stiffness") != std::string::npos);
 }
@@ -100,7 +100,7 @@ TEST_CASE("A missing input is an error naming the file")
   for (const std::string missing : {"stiffness/M2_b0.50a.csv", "database.h5"})
     {
       std::filesystem::remove(outputs.file(missing));
-      CHECK_THROWS_WITH(HtmlReport(outputs.prm(), outputs.database(), outputs.directory()),
+      CHECK_THROWS_WITH(HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()),
                         Catch::Contains(outputs.file(missing)));
     }
 }

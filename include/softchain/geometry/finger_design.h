@@ -6,6 +6,8 @@
 // found on the planes x = Base plane x and x = Tip plane x).
 #include <softchain/geometry/finger_dimensions.h>
 
+#include <softchain/data/prm_file.h>
+
 #include <array>
 #include <string>
 
@@ -34,15 +36,18 @@ namespace softchain::geometry
   class FingerDesign
   {
   public:
-    // Reads the subsection "Finger design" of a .prm file (other subsections
-    // are ignored). Throws InputError naming file, line and parameter.
+    // Parses the subsection "Finger design" of a .prm file (other
+    // subsections are ignored). Throws InputError naming file, line and
+    // parameter.
+    static FingerDesign read(const data::PrmFile &file);
+    // Reads the .prm file at `prm_path` and parses it as above.
     static FingerDesign read(const std::string &prm_path);
 
     std::string      source;      // the .prm path, for messages
     std::string      shape;       // p10 | p13 | parallelepiped | stl
     int              resolution = 1; // 0 coarse, 1 default, 2 fine
     bool             hexahedra  = false;
-    std::array<double, 3> mesh_sizes{0.008, 0.004, 0.0018}; // m, per resolution
+    std::array<double, 3> mesh_sizes{{0.008, 0.004, 0.0018}}; // m, per resolution
     FingerDimensions dimensions;
     SpringLayout     springs;
     SurfaceDesign    surface;

@@ -19,6 +19,6 @@ namespace softchain::geometry
     double      length = 0;  // m, base face to tip face
   };
 
-  GeneratedDesign generate_design(const std::string &prm_path, const std::string &cache_dir);
+  GeneratedDesign generate_design(const FingerDesign &design, const std::string &cache_dir);
   GeneratedDesign generate_design(const FingerDesign &design, GmshMesher &mesher);
 } // namespace softchain::geometry

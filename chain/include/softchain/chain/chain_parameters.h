@@ -13,6 +13,7 @@
 //   end
 // Bad values are InputErrors naming file, line and parameter.
 #include <softchain/chain/chain_equilibrium.h>
+#include <softchain/data/prm_file.h>
 
 #include <string>
 #include <vector>
@@ -30,6 +31,6 @@ namespace softchain::chain
     double                   baseline_youngs_modulus = 2.6e5;
     EquilibriumSettings      newton;
 
-    static ChainParameters read(const std::string &prm_path);
+    static ChainParameters read(const data::PrmFile &file);
   };
 } // namespace softchain::chain

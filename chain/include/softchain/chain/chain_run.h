@@ -12,10 +12,12 @@
 //  4. with export_mjcf, writes <output_dir>/chain/finger.xml (MjcfExport).
 // Returns 0, or 2 if some chain equilibrium failed (named on stderr; the
 // tables are written anyway). Bad input throws data::InputError.
+#include <softchain/data/prm_file.h>
+
 #include <string>
 
 namespace softchain::chain
 {
-  int run_chain(const std::string &prm_path, const std::string &database_path,
+  int run_chain(const data::PrmFile &prm, const std::string &database_path,
                 const std::string &output_dir, bool export_mjcf);
 } // namespace softchain::chain

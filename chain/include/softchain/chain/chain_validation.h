@@ -26,7 +26,8 @@ namespace softchain::chain
     double      position_error    = 0.0; // m (NaN if the chain failed)
     double      orientation_error = 0.0; // rad (NaN if the chain failed)
     int         iterations        = 0;
-    std::string status;                  // "converged" or the chain's failure
+    bool        converged         = false;
+    std::string failure; // why the equilibrium failed (empty if converged)
     // The chain's own tip pose, so that it can be compared with another
     // reference than this database (benchmarks/p10_error_time):
     Eigen::Vector3d tip_position = Eigen::Vector3d::Constant(NAN); // m

@@ -2,6 +2,8 @@
 // ReductionParameters: the "subsection Reduction" of a design's .prm file
 // (reduction/README.md lists the entries). Everything else in the file belongs
 // to the other tiers and is ignored here.
+#include <softchain/data/prm_file.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -39,8 +41,8 @@ namespace softchain::reduction
     std::vector<std::string>    torsion_roles;            // feed k_psi
     bool                        plots = true;
 
-    // Reads and checks "subsection Reduction" of `prm_path`; throws
+    // Parses and checks "subsection Reduction" of `file`; throws
     // data::InputError naming file, line and parameter.
-    static ReductionParameters read(const std::string &prm_path);
+    static ReductionParameters read(const data::PrmFile &file);
   };
 } // namespace softchain::reduction

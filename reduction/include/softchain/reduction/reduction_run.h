@@ -2,6 +2,9 @@
 // ReductionRun: `softchain reduce` -- the .prm's subsection Reduction and the
 // database in, the stiffness CSV files (and plots) under
 // <output_dir>/stiffness/ out.
+#include <softchain/data/prm_file.h>
+#include <softchain/reduction/reduction_parameters.h>
+
 #include <string>
 
 namespace softchain::reduction
@@ -17,18 +20,19 @@ namespace softchain::reduction
   class ReductionRun
   {
   public:
-    ReductionRun(std::string prm_path, std::string database_path, std::string output_dir);
+    // Parses subsection Reduction of `prm` (throws data::InputError).
+    ReductionRun(const data::PrmFile &prm, std::string database_path, std::string output_dir);
 
     // Throws data::InputError for bad input; prints the warnings to stderr.
     ReductionSummary run() const;
 
   private:
-    std::string prm_path_;
+    ReductionParameters parameters_;
     std::string database_path_;
     std::string output_dir_;
   };
 
   // The command line's entry point: 0 on success; throws data::InputError.
-  int run_reduction(const std::string &prm_path, const std::string &database_path,
+  int run_reduction(const data::PrmFile &prm, const std::string &database_path,
                     const std::string &output_dir);
 } // namespace softchain::reduction

@@ -26,11 +26,11 @@ namespace softchain::report
   class HtmlReport
   {
   public:
-    // Reads the database, the chain's subsection of `prm_path` and the
+    // Reads the database, the chain's subsection of `prm` and the
     // outputs under `output_directory`. Throws data::InputError naming the
     // file when the database, the chain's stiffness table or the validation
     // summary is missing (plots are optional: gnuplot may be absent).
-    HtmlReport(const std::string &prm_path, const std::string &database_path,
+    HtmlReport(const data::PrmFile &prm, const std::string &database_path,
                const std::string &output_directory);
 
     // The stage times of `softchain run`; without them the report says

@@ -12,7 +12,7 @@
 
 namespace softchain::report
 {
-  int run_report(const std::string &prm_path, const std::string &database_path,
+  int run_report(const data::PrmFile &prm, const std::string &database_path,
                  const std::string &output_dir,
                  const std::optional<std::vector<StageTime>> &stage_times = std::nullopt);
 } // namespace softchain::report

@@ -1,0 +1,45 @@
+#pragma once
+// FollowerPressure: the cavity pressure p acting on the deformed cavity
+// surface. In the reference configuration (Nanson's formula) the traction is
+//     t0 = -p cof(F) N,   cof(F) = J F^-T,
+// with N the body's outward normal (pointing into the cavity), so the wall is
+// pushed away from the cavity. Its linearisation is the non-symmetric load
+// stiffness
+//     d cof(F)[G] = J ((F^-T : G) F^-T - F^-T G^T F^-T),   G = Grad du,
+// (Wriggers, Nonlinear Finite Element Methods, Sec. 4.2.5). This is the
+// continuum form of the paper's per-face force p A_f n_f / 3 (Skouras et al.).
+#include <softchain/fem/finite_element_space.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+namespace softchain::fem
+{
+  class FollowerPressure
+  {
+  public:
+    explicit FollowerPressure(const FiniteElementSpace &space);
+
+    // rhs += f_ext, matrix -= d f_ext / du (if given), for pressure p.
+    void assemble(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
+                  double                               pressure,
+                  const dealii::AffineConstraints<double>     &constraints,
+                  dealii::TrilinosWrappers::SparseMatrix      *matrix,
+                  dealii::TrilinosWrappers::MPI::Vector       &rhs) const;
+
+    // Total pressure force on the walls (zero for a closed cavity).
+    dealii::Tensor<1, 3> resultant(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double pressure) const;
+    // Enclosed cavity volume, V = -1/3 int x . cof(F) N dA (divergence theorem).
+    double cavity_volume(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u) const;
+    bool   has_cavity() const { return n_faces > 0; }
+
+  private:
+    const FiniteElementSpace &space;
+    unsigned long             n_faces; // cavity faces on all ranks
+
+    // Calls f(fe_face_values, q, F, cof(F) N) at each cavity quadrature point
+    // of the locally owned cells.
+    template <typename Function>
+    void for_each_cavity_point(const dealii::TrilinosWrappers::MPI::Vector &u, Function f) const;
+  };
+} // namespace softchain::fem

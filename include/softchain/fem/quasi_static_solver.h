@@ -1,0 +1,129 @@
+#pragma once
+// QuasiStaticSolver: total-Lagrangian, quasi-static, large-deformation
+// equilibrium of a hyperelastic body with a follower cavity pressure,
+// embedded tension-only springs and point loads:
+//     R(u) = f_int(u) + f_springs(u) - f_pressure(u) - f_points = 0,
+// solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
+// stepping (cut on divergence or J <= 0, grow after easy steps) and a
+// backtracking line search on |R|.
+#include <softchain/fem/dead_surface_traction.h>
+#include <softchain/fem/embedded_points.h>
+#include <softchain/fem/embedded_spring_network.h>
+#include <softchain/fem/finite_element_space.h>
+#include <softchain/fem/follower_pressure.h>
+#include <softchain/fem/hyperelastic_material.h>
+#include <softchain/fem/load_state.h>
+#include <softchain/fem/parameters.h>
+#include <softchain/fem/serial_direct_solver.h>
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace softchain::fem
+{
+  class QuasiStaticSolver
+  {
+  public:
+    // Why a solve stopped short of its target.
+    enum class Failure
+    {
+      none,
+      not_converged, // Newton failed even at the smallest load step
+      inverted,      // elements inverted (J <= 0) even at the smallest load step
+      limit_point    // pressure control passed a physical limit point (dp/dV -> 0)
+    };
+
+    struct Result
+    {
+      bool                converged = false;
+      Failure             failure   = Failure::none;
+      std::string         reason; // why not converged, for people
+      double              load_factor_reached = 0.0;
+      unsigned int        newton_iterations   = 0;
+      unsigned int        load_steps          = 0;
+      double              wall_time           = 0.0;
+      std::vector<double> residual_history; // |R| of every Newton iteration
+    };
+
+    // `material_names[id]` names the .prm material region of material id.
+    QuasiStaticSolver(const Parameters                  &parameters,
+                      const dealii::Triangulation<3>            &serial_mesh,
+                      const std::vector<std::string>    &material_names,
+                      const std::vector<SpringPolyline> &springs,
+                      MPI_Comm                           communicator,
+                      std::ostream                      &log);
+
+    // Moves the current state (rest, or the last converged state) to
+    // `target` along the straight load path between them.
+    Result solve(const LoadState &target);
+    // Back to the undeformed state with no load.
+    void reset();
+
+    // The pieces, for tests and output.
+    const FiniteElementSpace            &space() const { return *fe_space; }
+    const dealii::TrilinosWrappers::MPI::Vector &displacement() const { return u_ghosted; }
+    void set_displacement(const dealii::TrilinosWrappers::MPI::Vector &owned_u);
+    // Restart from a stored equilibrium: `owned_u` balances `state` (the
+    // next solve() continues from there; used by the sample sweep).
+    void set_state(const dealii::TrilinosWrappers::MPI::Vector &owned_u, const LoadState &state)
+    {
+      set_displacement(owned_u);
+      load = state;
+    }
+    // Assembles rhs = -R(u) (and K = dR/du when with_matrix) at `state`.
+    // Returns false if some quadrature point has J <= 0.
+    bool assemble(const LoadState &state, bool with_matrix);
+    const dealii::TrilinosWrappers::SparseMatrix &tangent() const { return matrix; }
+    const dealii::TrilinosWrappers::MPI::Vector  &negative_residual() const { return rhs; }
+    const FollowerPressure              &pressure_load() const { return *pressure; }
+    const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
+    const HyperelasticMaterial &material(dealii::types::material_id id) const { return *materials.at(id); }
+    // Deformed positions of `points` (reference, inside the body).
+    std::vector<dealii::Point<3>> deformed_points(const std::vector<dealii::Point<3>> &points) const;
+    dealii::TimerOutput          &timer() { return computing_timer; }
+
+  private:
+    const Parameters                                   &prm;
+    std::ostream                                       &log;
+    std::unique_ptr<FiniteElementSpace>                 fe_space;
+    std::vector<std::unique_ptr<HyperelasticMaterial>> materials;
+    std::unique_ptr<FollowerPressure>                   pressure;
+    std::unique_ptr<DeadSurfaceTraction>                tip_traction;
+    std::unique_ptr<EmbeddedSpringNetwork>              springs;
+    dealii::TimerOutput                                         computing_timer;
+    std::unique_ptr<SerialDirectSolver>                 serial_direct; // UMFPACK, one rank
+
+    dealii::TrilinosWrappers::SparseMatrix matrix;
+    dealii::TrilinosWrappers::MPI::Vector  rhs;       // writable ghosts
+    dealii::TrilinosWrappers::MPI::Vector  u_owned;   // the displacement
+    dealii::TrilinosWrappers::MPI::Vector  u_ghosted; // same, with ghost values
+    dealii::TrilinosWrappers::MPI::Vector  du;
+    dealii::IndexSet                       writable_dofs;
+    LoadState                      load; // at u
+    double                         f_ext_norm = 0.0;
+
+    void setup_system();
+    bool assemble_cells(bool with_matrix, double gravity_factor);
+    void assemble_point_loads(const std::vector<PointLoad> &point_loads);
+    bool solve_linear(); // false if the linear solver failed
+
+    struct NewtonOutcome
+    {
+      bool         converged;
+      bool         inverted;
+      unsigned int iterations;
+    };
+    NewtonOutcome newton(const LoadState &state, Result &result);
+    bool          converged(double residual, double update) const;
+    bool          line_search(const LoadState &state, double s0, bool valid);
+    // Sets result.failure and result.reason of a solve that stalled.
+    void          classify_failure(const std::vector<std::pair<double, double>> &pv,
+                                   bool inverted, Result &result) const;
+  };
+} // namespace softchain::fem

@@ -1,0 +1,56 @@
+#pragma once
+// SampleGroup: the solver of one MPI sample group (a sub-communicator of the
+// sweep): one QuasiStaticSolver on the group's ranks, its DatabaseExport, and
+// the solve of one sample starting from rest or from a stored converged
+// neighbour (continuation).
+#include <softchain/fem/database_export.h>
+#include <softchain/fem/finger_mesh.h>
+#include <softchain/fem/quasi_static_solver.h>
+#include <softchain/fem/sample_set.h>
+
+#include <ostream>
+#include <vector>
+
+namespace softchain::fem
+{
+  class SampleGroup
+  {
+  public:
+    SampleGroup(const Parameters &prm, const FingerMesh &mesh, MPI_Comm group, std::ostream &log);
+
+    const data::MeshRecord &mesh() const { return nodes.mesh(); }
+    // Rank 0 of the group: it sends the group's results to world rank 0.
+    bool leader() const
+    {
+      return dealii::Utilities::MPI::this_mpi_process(solver.space().communicator) == 0;
+    }
+
+    // Throws data::InputError naming the file and the first sample with a
+    // force point outside the body.
+    void check_points(const std::vector<Sample> &samples) const;
+
+    // Solves `sample` from rest (start == nullptr) or from the converged
+    // sample `start` (its stored positions and actuation). A failed solve
+    // returns the last converged state, its reason and load factor along the
+    // path from the start. Writes vtu/sample_<id>_* when Output/Write VTU.
+    data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
+                             unsigned int index);
+
+    // Wall time of assembly and linear solves over all samples solved so
+    // far, to the log (Output/Verbose).
+    void print_timing() { solver.timer().print_summary(); }
+
+  private:
+    // The solver reads its parameters from here; solve() sets the initial
+    // load step of each sample (see first_step()).
+    Parameters        prm;
+    QuasiStaticSolver solver;
+    DatabaseExport    nodes;
+    const double      initial_load_step;
+
+    // The first load factor of a solve from `start` to `target`: the .prm's
+    // initial load step scaled so that the first increment is as large as
+    // that of a solve from rest (a continued sample often needs one step).
+    double first_step(const data::Actuation *start, const data::Actuation &target) const;
+  };
+} // namespace softchain::fem

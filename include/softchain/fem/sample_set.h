@@ -1,0 +1,67 @@
+#pragma once
+// SampleSet: the actuation samples of a sweep (the paper's S_i = (p_i, force
+// points, forces), Sec. III-A), read from the .prm's subsection Samples:
+//
+//   subsection Samples
+//     set Pressure sweep     = 10e3, 20e3, 30e3   # Pa, no force; role pressure
+//     set Lateral tip forces = 0.1, 0.2           # N along +z at the force
+//                                                 # point; role lateral
+//     set Torsion couples    = 0.1, 0.2           # N: +F y at force point
+//                                                 # + (0,0,d), -F y at - (0,0,d),
+//                                                 # role torsion
+//     set Force sample pressures = 0              # Pa: the lateral and torsion
+//                                                 # samples at each pressure
+//     set Torsion arm        = 0                  # d [m]; 0: a quarter of the
+//                                                 # tip face's extent along z
+//     set Force point        =                    # x,y,z; empty: the centre of
+//                                                 # the tip face
+//     set Validation samples = 40e3 : tip : 0,0,0.2 ; 20e3 : 0.07,0.006,0.009 : 0,-0.1,0
+//                            # p : point : force [: point : force ...] ; ...
+//                            # role validation; 'tip' is the force point
+//     set Sample groups      = 1     # MPI sample groups (1: all ranks per solve)
+//     set Continuation       = true  # start from the converged neighbour
+//   end
+//
+// Samples with the same role, the same force points and (with forces) the
+// same pressure form a continuation chain, ordered by increasing load, so that each continues from the one
+// before it. deal.II-free: the FEM tier checks that the points lie inside the
+// body before any solve.
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/prm_file.h>
+
+#include <string>
+#include <vector>
+
+namespace softchain::fem
+{
+  struct Sample
+  {
+    data::Actuation actuation;
+    std::string     label; // for messages and progress lines, e.g. "lateral 0.3 N"
+    std::string     id;    // data::sample_id(design hash, actuation)
+  };
+
+  // |p| + sum |f|: the order of the samples along a chain [mixed units,
+  // compared only within one chain].
+  double load_size(const data::Actuation &actuation);
+
+  class SampleSet
+  {
+  public:
+    // The tip face (from the mesh), for the default force point and arm.
+    struct TipFace
+    {
+      data::Point3 centre;
+      double       width = 0.0; // extent along z
+    };
+
+    // Throws data::InputError naming file, parameter and sample.
+    static SampleSet read(const data::PrmFile &prm, const TipFace &tip,
+                          const std::string &design_hash);
+
+    std::vector<Sample>                   samples; // chain after chain
+    std::vector<std::vector<std::size_t>> chains;  // indices into samples
+    unsigned int                          sample_groups = 1;
+    bool                                  continuation  = true;
+  };
+} // namespace softchain::fem

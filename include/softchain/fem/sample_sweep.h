@@ -1,0 +1,70 @@
+#pragma once
+// SampleSweep: `softchain sweep FILE.prm` -- the paper's database generation
+// (Sec. III-A). Meshes the design, and for every sample of subsection Samples
+// (SampleSet) that <output dir>/database.h5 does not hold yet (the cache, keyed
+// by design hash and actuation) solves the quasi-static problem, continuing
+// from the nearest converged sample of its chain, and stores the sample
+// atomically (converged or failed). Samples are spread over MPI sample groups
+// (whole chains per group, so the results do not depend on the rank count);
+// world rank 0 writes the database and prints one progress line per sample.
+#include <softchain/data/prm_file.h>
+#include <softchain/fem/finger_mesh.h>
+#include <softchain/fem/parameters.h>
+#include <softchain/fem/sample_set.h>
+
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace softchain::fem
+{
+  class SampleGroup;
+  class SweepProgress;
+
+  class SampleSweep
+  {
+  public:
+    // Reads the .prm and builds the mesh (collective on MPI_COMM_WORLD).
+    explicit SampleSweep(const data::PrmFile &prm_file);
+
+    struct Summary
+    {
+      std::size_t              n_samples = 0, n_cached = 0, n_solved = 0;
+      std::vector<std::string> failed; // "label (id): reason", on every rank
+      std::string              database;
+
+      // Prints the counts to `out` and the failed samples to `err`; returns
+      // the exit status (0, or 2 if some sample failed).
+      int report(std::ostream &out, std::ostream &err) const;
+    };
+    // Throws data::InputError (bad input, force point outside the body)
+    // before any solve.
+    Summary run();
+
+  private:
+    Parameters    prm;
+    data::PrmFile prm_file;
+    FingerMesh    mesh;
+    std::string   hash;
+    SampleSet     set;
+    std::string   database_path;
+
+    using Records = std::map<std::size_t, data::SampleRecord>; // by sample index
+
+    Records                  read_cached() const;
+    void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
+                                           SweepProgress &progress, unsigned int n_groups) const;
+    void                     solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
+                                          std::optional<data::ActuationDatabase> &database,
+                                          Records &known, SweepProgress &progress) const;
+    std::vector<std::size_t> share_of(const std::vector<std::size_t> &pending, unsigned int group,
+                                      unsigned int n_groups) const;
+    std::vector<const data::SampleRecord *> known_before(std::size_t sample, const Records &known) const;
+    const data::SampleRecord *start_of(std::size_t sample, const Records &known) const;
+    const data::SampleRecord *stopped_before(std::size_t sample, const Records &known) const;
+    data::SampleRecord        beyond_limit_point(std::size_t sample, const data::SampleRecord &stop) const;
+    void                      write_series() const;
+  };
+} // namespace softchain::fem

@@ -1,0 +1,31 @@
+#pragma once
+// SolutionOutput: ParaView files of a solved state. The body as VTU (PVTU
+// under MPI) with displacement, Cauchy stress, von Mises stress, J and
+// material id, high-order cells for Q2/P2; the springs as a second VTU of
+// line cells with their tension; a .pvd series over load steps or samples.
+#include <softchain/fem/quasi_static_solver.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace softchain::fem
+{
+  class SolutionOutput
+  {
+  public:
+    SolutionOutput(const std::string &directory, unsigned int subdivisions);
+
+    // Writes `name`_NNNN files for `solver`'s current state and adds them to
+    // the series; returns the body file name.
+    std::string write(const QuasiStaticSolver &solver, const std::string &name, double time);
+
+  private:
+    std::string                                 directory;
+    unsigned int                                subdivisions;
+    unsigned int                                counter = 0;
+    std::vector<std::pair<double, std::string>> body_series, spring_series;
+
+    void write_springs(const QuasiStaticSolver &solver, const std::string &file) const;
+  };
+} // namespace softchain::fem

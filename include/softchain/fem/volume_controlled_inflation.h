@@ -1,0 +1,61 @@
+#pragma once
+// VolumeControlledInflation: the cavity as a fluid cavity. Instead of the
+// pressure p, the enclosed volume V is prescribed and p becomes an unknown:
+//     R(u, p) = f_int(u) + f_springs(u) - p g(u) - f_other = 0,
+//     V(u) - V_target = 0,
+// where g = dV/du is the follower load of a unit pressure (p dV is the
+// pressure's virtual work). Newton on the bordered system
+//     [ K   -g ] [du]   [ -R           ]
+//     [ g^T  0 ] [dp] = [ V_target - V ]
+// is solved with two solves of one factorisation of K (K a = -R, K b = g,
+// dp = (V_target - V - g.a) / g.b, du = a + dp b). The volume rises
+// monotonically through a balloon limit point, where pressure control has no
+// equilibrium beyond the peak (Crisfield, Non-linear Finite Element Analysis
+// of Solids and Structures, Vol. 1, Sec. 9.5, displacement control as the
+// simplest way past a load maximum).
+#include <softchain/fem/quasi_static_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace softchain::fem
+{
+  class VolumeControlledInflation
+  {
+  public:
+    struct PressureVolumePoint
+    {
+      double volume;   // m^3
+      double pressure; // Pa
+    };
+    struct Result
+    {
+      bool                             converged = false;
+      std::string                      reason; // why not
+      unsigned int                     newton_iterations = 0;
+      std::vector<PressureVolumePoint> curve; // every converged step, from the start
+    };
+
+    // Drives `solver` (its current state: at rest, or a converged state at
+    // pressure `start_pressure`); no other loads are applied.
+    VolumeControlledInflation(QuasiStaticSolver &solver, const Parameters &prm,
+                              double start_pressure = 0.0);
+
+    double volume() const;
+    double pressure() const { return p; }
+    // g = dV/du: the nodal load of a unit follower pressure at the current state.
+    dealii::TrilinosWrappers::MPI::Vector unit_pressure_load() const;
+
+    // Inflates to `target_volume` in adaptive volume steps.
+    Result solve(double target_volume);
+
+  private:
+    QuasiStaticSolver &solver;
+    const Parameters  &prm;
+    double             p;
+
+    // Newton at a fixed volume; false if it fails (state restored by caller).
+    bool newton(double target_volume, Result &result);
+    dealii::TrilinosWrappers::MPI::Vector owned_displacement() const;
+  };
+} // namespace softchain::fem

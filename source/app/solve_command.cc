@@ -1,0 +1,83 @@
+// `softchain solve FILE.prm`: one quasi-static solve of the .prm's Loads,
+// written as VTU for ParaView, with a timing summary.
+#include <softchain/fem/boundary_average.h>
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/app/commands.h>
+#include <softchain/data/csv_table.h>
+#include <softchain/fem/finger_mesh.h>
+#include <softchain/fem/quasi_static_solver.h>
+#include <softchain/fem/solution_output.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <iostream>
+
+namespace softchain::app
+{
+  using namespace dealii;
+  using namespace softchain::fem;
+
+  namespace
+  {
+    // <output directory>/solve_summary.csv, one header and one data row, 17
+    // significant digits (doubles round-trip), written by rank 0: the
+    // machine-readable result that tests compare between runs.
+    void write_summary(const std::string &directory, const QuasiStaticSolver::Result &result,
+                       const Tensor<1, 3> &tip, const double cavity_volume)
+    {
+      data::CsvTable summary({"converged", "load_factor", "newton_iterations", "load_steps",
+                              "tip_displacement_x", "tip_displacement_y", "tip_displacement_z",
+                              "cavity_volume"});
+      summary.add_row(std::vector<double>{double(result.converged), result.load_factor_reached,
+                                          double(result.newton_iterations),
+                                          double(result.load_steps), tip[0], tip[1], tip[2],
+                                          cavity_volume});
+      summary.write(directory + "/solve_summary.csv");
+    }
+  } // namespace
+
+  int solve_command(const data::PrmFile &prm_file)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
+    const Parameters   prm = Parameters::read(prm_file);
+    if (prm.solver.threads > 0)
+      MultithreadInfo::set_thread_limit(prm.solver.threads);
+
+    FingerMesh mesh;
+    FingerMesh::build(prm, mesh);
+    QuasiStaticSolver solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, comm,
+                             out.get_stream());
+    out << "softchain solve: " << prm.design.name << " (" << mesh.description << "), "
+        << name(prm.mesh.element_type) << ", " << solver.space().triangulation.n_global_active_cells()
+        << " cells, " << solver.space().dof_handler.n_dofs() << " DoFs, "
+        << Utilities::MPI::n_mpi_processes(comm) << " rank(s)\n";
+
+    LoadState target;
+    target.pressure       = prm.loads.pressure;
+    target.point_loads    = prm.loads.point_loads;
+    target.gravity_factor = prm.loads.gravity ? 1.0 : 0.0;
+    target.tip_traction   = prm.loads.tip_traction;
+    const auto result     = solver.solve(target);
+
+    const Tensor<1, 3> tip = mean_boundary_displacement(solver.space(), solver.displacement(),
+                                                        boundary::tip);
+    out << (result.converged ? "converged" : "FAILED: " + result.reason) << " after "
+        << result.load_steps << " load steps, " << result.newton_iterations
+        << " Newton iterations, " << result.wall_time << " s\n"
+        << "mean tip displacement [m]: " << tip << '\n';
+    const double cavity_volume = solver.pressure_load().cavity_volume(solver.displacement());
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_summary(prm.design.output_directory, result, tip, cavity_volume);
+    if (prm.output.write_vtu)
+      {
+        TimerOutput::Scope timer_section(solver.timer(), "output");
+        SolutionOutput output(prm.design.output_directory + "/vtu", prm.output.subdivisions);
+        out << "wrote " << prm.design.output_directory << "/vtu/"
+            << output.write(solver, "solution", result.load_factor_reached) << '\n';
+      }
+    solver.timer().print_summary();
+    return result.converged ? 0 : 2;
+  }
+} // namespace softchain::app

@@ -1,0 +1,30 @@
+#include <softchain/fem/load_state.h>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  LoadState LoadState::interpolate(const LoadState &start, const LoadState &target, const double s)
+  {
+    LoadState state;
+    state.pressure       = (1 - s) * start.pressure + s * target.pressure;
+    state.gravity_factor = (1 - s) * start.gravity_factor + s * target.gravity_factor;
+    state.tip_traction   = (1 - s) * start.tip_traction + s * target.tip_traction;
+    // Forces at the same point blend; a point present at one end only ramps
+    // from or to zero.
+    auto add = [&state](const PointLoad &load, const double factor) {
+      for (auto &existing : state.point_loads)
+        if (existing.point.distance(load.point) == 0.0)
+          {
+            existing.force += factor * load.force;
+            return;
+          }
+      state.point_loads.push_back({load.point, factor * load.force});
+    };
+    for (const auto &l : start.point_loads)
+      add(l, 1 - s);
+    for (const auto &l : target.point_loads)
+      add(l, s);
+    return state;
+  }
+} // namespace softchain::fem

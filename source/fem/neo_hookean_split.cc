@@ -1,0 +1,45 @@
+#include <softchain/fem/neo_hookean_split.h>
+
+#include <cmath>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  NeoHookeanSplit::NeoHookeanSplit(const double E, const double nu)
+    : constants(E, nu)
+  {}
+
+  double NeoHookeanSplit::strain_energy(const Tensor<2, 3> &F) const
+  {
+    const double J       = determinant(F);
+    const double I1_bar  = std::pow(J, -2.0 / 3.0) * trace(transpose(F) * F);
+    return 0.5 * constants.mu * (I1_bar - 3.0) +
+           0.25 * constants.kappa * (J * J - 1.0 - 2.0 * std::log(J));
+  }
+
+  SymmetricTensor<2, 3> NeoHookeanSplit::kirchhoff_stress(const Tensor<2, 3> &F) const
+  {
+    const double                J     = determinant(F);
+    const SymmetricTensor<2, 3> b_bar = std::pow(J, -2.0 / 3.0) * symmetrize(F * transpose(F));
+    return constants.mu * deviator(b_bar) +
+           0.5 * constants.kappa * (J * J - 1.0) * unit_symmetric_tensor<3>();
+  }
+
+  SymmetricTensor<4, 3> NeoHookeanSplit::spatial_tangent(const Tensor<2, 3> &F) const
+  {
+    const double                J       = determinant(F);
+    const SymmetricTensor<2, 3> I       = unit_symmetric_tensor<3>();
+    const SymmetricTensor<2, 3> b_bar   = std::pow(J, -2.0 / 3.0) * symmetrize(F * transpose(F));
+    const SymmetricTensor<2, 3> tau_iso = constants.mu * deviator(b_bar);
+    const double                tr_tau_bar = constants.mu * trace(b_bar);
+
+    const SymmetricTensor<4, 3> Jc_iso =
+      (2.0 / 3.0) * tr_tau_bar * deviator_tensor<3>() -
+      (2.0 / 3.0) * (outer_product(tau_iso, I) + outer_product(I, tau_iso));
+    const SymmetricTensor<4, 3> Jc_vol =
+      constants.kappa * J * J * outer_product(I, I) -
+      constants.kappa * (J * J - 1.0) * identity_tensor<3>();
+    return Jc_iso + Jc_vol;
+  }
+} // namespace softchain::fem

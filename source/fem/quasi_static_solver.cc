@@ -1,0 +1,485 @@
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/data/input_error.h>
+#include <softchain/fem/quasi_static_solver.h>
+#include <softchain/fem/cell_conforming_polylines.h>
+
+#include <deal.II/base/work_stream.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // WorkStream scratch and copy data of the cell assembly (step-44 style).
+    struct CellScratch
+    {
+      CellScratch(const FiniteElementSpace &space)
+        : fe_values(*space.mapping, *space.fe, space.cell_quadrature,
+                    update_values | update_gradients | update_JxW_values)
+        , grad_u(space.cell_quadrature.size())
+        , grad_Nx(space.fe->n_dofs_per_cell())
+        , symm_grad_Nx(space.fe->n_dofs_per_cell())
+      {}
+      CellScratch(const CellScratch &other)
+        : fe_values(other.fe_values.get_mapping(), other.fe_values.get_fe(),
+                    other.fe_values.get_quadrature(), other.fe_values.get_update_flags())
+        , grad_u(other.grad_u)
+        , grad_Nx(other.grad_Nx)
+        , symm_grad_Nx(other.symm_grad_Nx)
+      {}
+      FEValues<3>                        fe_values;
+      std::vector<Tensor<2, 3>>          grad_u;
+      std::vector<Tensor<2, 3>>          grad_Nx;
+      std::vector<SymmetricTensor<2, 3>> symm_grad_Nx;
+    };
+
+    struct CellCopy
+    {
+      CellCopy(unsigned int n)
+        : matrix(n, n), rhs(n), dofs(n)
+      {}
+      FullMatrix<double>                   matrix;
+      Vector<double>                       rhs;
+      std::vector<types::global_dof_index> dofs;
+      bool                                 inverted = false;
+    };
+
+    double seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } // namespace
+
+  QuasiStaticSolver::QuasiStaticSolver(const Parameters                  &parameters,
+                                       const Triangulation<3>            &serial_mesh,
+                                       const std::vector<std::string>    &material_names,
+                                       const std::vector<SpringPolyline> &spring_polylines,
+                                       MPI_Comm                           communicator,
+                                       std::ostream                      &log_stream)
+    : prm(parameters)
+    , log(log_stream)
+    , fe_space(std::make_unique<FiniteElementSpace>(serial_mesh, parameters.mesh.element_type,
+                                                    communicator))
+    , computing_timer(communicator, log_stream, TimerOutput::never, TimerOutput::wall_times)
+  {
+    for (const auto &name : material_names)
+      {
+        const auto region = prm.materials.regions.find(name);
+        if (region == prm.materials.regions.end())
+          throw data::InputError(prm.file + ": the mesh has material region '" + name +
+                                 "' but subsection Materials has no subsection '" + name + "'");
+        materials.push_back(HyperelasticMaterial::create(prm.materials.strain_energy,
+                                                         region->second.youngs_modulus,
+                                                         region->second.poissons_ratio));
+      }
+    pressure     = std::make_unique<FollowerPressure>(*fe_space);
+    tip_traction = std::make_unique<DeadSurfaceTraction>(*fe_space, boundary::tip);
+    if (!spring_polylines.empty())
+      springs = std::make_unique<EmbeddedSpringNetwork>(*fe_space,
+                                                         cell_conforming_polylines(
+                                                           spring_polylines, serial_mesh,
+                                                           *fe_space->mapping),
+                                                         prm.springs.axial_rigidity,
+                                                         prm.springs.smoothing_strain);
+    setup_system();
+  }
+
+  void QuasiStaticSolver::setup_system()
+  {
+    const FiniteElementSpace &s = *fe_space;
+    writable_dofs = s.relevant_dofs;
+    if (springs)
+      writable_dofs.add_indices(springs->touched_dofs(s.dof_handler.n_dofs()));
+
+    DynamicSparsityPattern pattern(writable_dofs);
+    DoFTools::make_sparsity_pattern(s.dof_handler, pattern, s.fixed_dofs, false);
+    if (springs)
+      springs->add_couplings(s.fixed_dofs, pattern);
+    SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
+                                               writable_dofs);
+    matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
+
+    rhs.reinit(s.owned_dofs, writable_dofs, s.communicator, true);
+    u_owned.reinit(s.owned_dofs, s.communicator);
+    du.reinit(s.owned_dofs, s.communicator);
+    u_ghosted.reinit(s.owned_dofs, s.relevant_dofs, s.communicator);
+    reset();
+  }
+
+  void QuasiStaticSolver::reset()
+  {
+    u_owned   = 0;
+    u_ghosted = u_owned;
+    load      = LoadState();
+  }
+
+  void QuasiStaticSolver::set_displacement(const TrilinosWrappers::MPI::Vector &owned_u)
+  {
+    u_owned   = owned_u;
+    u_ghosted = u_owned;
+  }
+
+  bool QuasiStaticSolver::assemble_cells(const bool with_matrix, const double gravity_factor)
+  {
+    const FiniteElementSpace        &s = *fe_space;
+    const FEValuesExtractors::Vector displacement(0);
+    const unsigned int               n = s.fe->n_dofs_per_cell();
+    Tensor<1, 3>                     body_force;
+    body_force[1] = -9.81 * prm.materials.density * gravity_factor;
+    std::atomic<bool> inverted(false);
+
+    auto worker = [&](const DoFHandler<3>::active_cell_iterator &cell, CellScratch &scratch,
+                      CellCopy &copy) {
+      copy.matrix = 0;
+      copy.rhs    = 0;
+      cell->get_dof_indices(copy.dofs);
+      scratch.fe_values.reinit(cell);
+      scratch.fe_values[displacement].get_function_gradients(u_ghosted, scratch.grad_u);
+      const HyperelasticMaterial &mat = *materials.at(cell->material_id());
+      for (unsigned int q = 0; q < scratch.fe_values.n_quadrature_points; ++q)
+        {
+          const Tensor<2, 3> F = unit_symmetric_tensor<3>() + scratch.grad_u[q];
+          if (!(determinant(F) > 0))
+            {
+              copy.inverted = true;
+              return;
+            }
+          const Tensor<2, 3>          F_inv = invert(F);
+          const SymmetricTensor<2, 3> tau   = mat.kirchhoff_stress(F);
+          const double                JxW   = scratch.fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              scratch.grad_Nx[i]      = scratch.fe_values[displacement].gradient(i, q) * F_inv;
+              scratch.symm_grad_Nx[i] = symmetrize(scratch.grad_Nx[i]);
+              // rhs = f_ext - f_int, f_int_i = int tau : sym(grad_x N_i) dV0
+              copy.rhs(i) -= (scratch.symm_grad_Nx[i] * tau) * JxW;
+              if (gravity_factor != 0.0)
+                copy.rhs(i) += (scratch.fe_values[displacement].value(i, q) * body_force) * JxW;
+            }
+          if (!with_matrix)
+            continue;
+          const SymmetricTensor<4, 3> Jc = mat.spatial_tangent(F);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int          ci        = s.fe->system_to_component_index(i).first;
+              const SymmetricTensor<2, 3> Jc_grad_i = Jc * scratch.symm_grad_Nx[i];
+              const Tensor<1, 3>          tau_Nx_i  = tau * scratch.grad_Nx[i][ci];
+              // Material and geometric stiffness; symmetric, lower half here.
+              for (unsigned int j = 0; j <= i; ++j)
+                {
+                  double k = scratch.symm_grad_Nx[j] * Jc_grad_i;
+                  if (s.fe->system_to_component_index(j).first == ci)
+                    k += scratch.grad_Nx[j][ci] * tau_Nx_i;
+                  copy.matrix(i, j) += k * JxW;
+                }
+            }
+        }
+      if (with_matrix)
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = i + 1; j < n; ++j)
+            copy.matrix(i, j) = copy.matrix(j, i);
+    };
+
+    auto copier = [&](const CellCopy &copy) {
+      if (copy.inverted)
+        inverted = true;
+      else if (with_matrix)
+        s.fixed_dofs.distribute_local_to_global(copy.matrix, copy.rhs, copy.dofs, matrix, rhs);
+      else
+        s.fixed_dofs.distribute_local_to_global(copy.rhs, copy.dofs, rhs);
+    };
+
+    using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
+    WorkStream::run(CellFilter(IteratorFilters::LocallyOwnedCell(), s.dof_handler.begin_active()),
+                    CellFilter(IteratorFilters::LocallyOwnedCell(), s.dof_handler.end()),
+                    worker, copier, CellScratch(s), CellCopy(n));
+    return !Utilities::MPI::logical_or(inverted.load(), s.communicator);
+  }
+
+  void QuasiStaticSolver::assemble_point_loads(const std::vector<PointLoad> &point_loads)
+  {
+    std::vector<Point<3>> points;
+    for (const auto &l : point_loads)
+      points.push_back(l.point);
+    const EmbeddedPoints located(*fe_space, points, "point load");
+    for (unsigned int k = 0; k < located.size(); ++k)
+      if (located.owned(k))
+        {
+          const auto    &stencil = located.stencil(k);
+          Vector<double> local(stencil.dof.size());
+          for (unsigned int i = 0; i < stencil.dof.size(); ++i)
+            local(i) = stencil.weight[i] * point_loads[k].force[stencil.component[i]];
+          fe_space->fixed_dofs.distribute_local_to_global(local, stencil.dof, rhs);
+        }
+  }
+
+  bool QuasiStaticSolver::assemble(const LoadState &state, const bool with_matrix)
+  {
+    TimerOutput::Scope timer_section(computing_timer, "assembly");
+    if (with_matrix)
+      matrix = 0;
+    rhs = 0;
+    // External loads first: their norm scales the convergence test.
+    if (state.pressure != 0.0 && pressure->has_cavity())
+      pressure->assemble(u_ghosted, state.pressure, fe_space->fixed_dofs,
+                         with_matrix ? &matrix : nullptr, rhs);
+    if (!state.point_loads.empty())
+      assemble_point_loads(state.point_loads);
+    if (state.tip_traction.norm() > 0)
+      tip_traction->assemble(state.tip_traction, fe_space->fixed_dofs, rhs);
+    rhs.compress(VectorOperation::add);
+    f_ext_norm = rhs.l2_norm();
+
+    const bool valid = assemble_cells(with_matrix, state.gravity_factor);
+    if (springs)
+      springs->assemble(u_ghosted, fe_space->fixed_dofs, with_matrix ? &matrix : nullptr, rhs);
+    if (with_matrix)
+      matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    return valid;
+  }
+
+  bool QuasiStaticSolver::solve_linear()
+  {
+    TimerOutput::Scope timer_section(computing_timer, "linear solve");
+    const FiniteElementSpace &s      = *fe_space;
+    using LinearSolver                 = SolverParameters::LinearSolver;
+    const bool                direct = prm.solver.linear_solver == LinearSolver::direct ||
+                        (prm.solver.linear_solver == LinearSolver::automatic &&
+                         s.dof_handler.n_dofs() <= prm.solver.direct_solver_max_dofs);
+    SolverControl control(1000, prm.solver.krylov_tolerance * rhs.l2_norm());
+    du = 0;
+    if (direct && prm.solver.direct_solver_package == "UMFPACK" &&
+        Utilities::MPI::n_mpi_processes(s.communicator) == 1)
+      {
+        if (!serial_direct)
+          serial_direct = std::make_unique<SerialDirectSolver>(matrix);
+        serial_direct->solve(matrix, du, rhs);
+      }
+    else if (direct)
+      {
+        const std::string package = prm.solver.direct_solver_package == "UMFPACK" ?
+                                      std::string("Amesos_Mumps") :
+                                      prm.solver.direct_solver_package;
+        TrilinosWrappers::SolverDirect solver(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false, package));
+        solver.solve(matrix, du, rhs);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData amg;
+        DoFTools::extract_constant_modes(s.dof_handler, ComponentMask(3, true),
+                                         amg.constant_modes);
+        amg.elliptic              = true;
+        amg.higher_order_elements = s.degree > 1;
+        amg.smoother_sweeps       = 2;
+        amg.aggregation_threshold = 0.02;
+        TrilinosWrappers::PreconditionAMG preconditioner;
+        preconditioner.initialize(matrix, amg);
+        TrilinosWrappers::SolverGMRES solver(
+          control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+        try
+          {
+            solver.solve(matrix, du, rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &failure)
+          {
+            log << "      GMRES did not converge in " << failure.last_step
+                << " iterations (residual " << failure.last_residual << ")\n";
+            return false;
+          }
+      }
+    s.fixed_dofs.distribute(du);
+    return std::isfinite(du.l2_norm());
+  }
+
+  bool QuasiStaticSolver::converged(const double residual, const double update) const
+  {
+    const double u_norm = u_owned.l2_norm();
+    return residual <= prm.solver.residual_tolerance * std::max(f_ext_norm, 1e-300) &&
+           update <= prm.solver.displacement_tolerance * std::max(u_norm, 1e-300);
+  }
+
+  // Line search on the energy along the Newton direction (Crisfield, Non-
+  // linear Finite Element Analysis of Solids and Structures, Sec. 9.3): with
+  // s(a) = du . R(u_old + a du), s(0) = -du.K du < 0. The full step is kept
+  // when |s(1)| <= 0.8 |s(0)| (the residual norm itself may grow in a good
+  // step of a nearly incompressible solid); otherwise the step goes to the
+  // zero of the secant of s, kept in [0.1, 1]. A step that inverts an element
+  // is halved. On entry u = u_old + du and rhs = -R(u); returns false if no
+  // admissible step was found.
+  bool QuasiStaticSolver::line_search(const LoadState &state, const double s0, const bool valid)
+  {
+    double step = 1.0;
+    if (valid)
+      {
+        const double s1 = -(du * rhs);
+        if (std::abs(s1) <= 0.8 * std::abs(s0))
+          return true;
+        step = std::clamp(s0 / (s0 - s1), 0.1, 1.0);
+      }
+    else
+      step = 0.5;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        u_owned.add(step - 1.0, du); // from u_old + du to u_old + step du
+        du *= step;
+        u_ghosted = u_owned;
+        if (prm.output.verbose)
+          log << "      line search: step " << step << '\n';
+        if (assemble(state, true))
+          return true;
+        step = 0.5;
+      }
+    return false;
+  }
+
+  QuasiStaticSolver::NewtonOutcome QuasiStaticSolver::newton(const LoadState &state,
+                                                             Result          &result)
+  {
+    double s0 = 0.0; // du . R before the step
+    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
+      {
+        bool valid = assemble(state, true);
+        if (it > 0 && prm.solver.line_search)
+          valid = line_search(state, s0, valid);
+        if (!valid)
+          return {false, true, it};
+        const double residual = rhs.l2_norm();
+        result.residual_history.push_back(residual);
+        if (!std::isfinite(residual))
+          return {false, false, it};
+        if (residual == 0.0 || (it > 0 && converged(residual, du.l2_norm())))
+          return {true, false, it};
+        if (it == prm.solver.max_newton_iterations)
+          break;
+        if (!solve_linear())
+          return {false, false, it};
+        s0 = -(du * rhs);
+        if (prm.output.verbose)
+          log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
+              << std::setprecision(3) << residual << "  |du| = " << du.l2_norm()
+              << std::defaultfloat << '\n';
+        u_owned += du;
+        u_ghosted = u_owned;
+      }
+    return {false, false, prm.solver.max_newton_iterations};
+  }
+
+  // Load stepping along s in [0, 1] from the current state to `target`. Each
+  // step starts from the secant extrapolation of the last two converged
+  // states (a first-order continuation predictor), which leaves Newton only
+  // the correction; a failed step is retried from the last converged state
+  // with a quarter of the increment.
+  QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target)
+  {
+    const auto start_time = std::chrono::steady_clock::now();
+    Result     result;
+    const LoadState start = load;
+    double     s = 0.0, s_previous = 0.0, step = prm.solver.initial_load_step;
+    bool       last_inverted = false;
+    // (pressure, cavity volume) of converged states, to tell a limit point.
+    std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};
+    TrilinosWrappers::MPI::Vector          u_converged(u_owned), u_before(u_owned);
+    while (s < 1.0)
+      {
+        const double    s_try = std::min(1.0, s + step);
+        const LoadState state = LoadState::interpolate(start, target, s_try);
+        if (prm.solver.secant_predictor && s > s_previous) // predictor: u + (ds / ds_previous) (u - u_before)
+          {
+            u_owned.add((s_try - s) / (s - s_previous), u_converged);
+            u_owned.add(-(s_try - s) / (s - s_previous), u_before);
+            u_ghosted = u_owned;
+          }
+        const auto outcome = newton(state, result);
+        result.newton_iterations += outcome.iterations;
+        if (outcome.converged)
+          {
+            s_previous  = s;
+            s           = s_try;
+            load        = state;
+            u_before    = u_converged;
+            u_converged = u_owned;
+            ++result.load_steps;
+            pv.emplace_back(state.pressure, pressure->cavity_volume(u_ghosted));
+            log << "    load step " << result.load_steps << ": factor " << s << ", "
+                << outcome.iterations << " Newton iterations\n";
+            // Grow after steps that took at most two thirds of the allowed
+            // iterations (a hard but converging problem still speeds up).
+            if (3 * outcome.iterations <= 2 * prm.solver.max_newton_iterations)
+              step = std::min(prm.solver.max_load_step, 1.5 * step);
+            continue;
+          }
+        set_displacement(u_converged);
+        s_previous    = s; // no predictor right after a failure
+        last_inverted = outcome.inverted;
+        step *= 0.25;
+        log << "    load factor " << s_try << " failed ("
+            << (outcome.inverted ? "an element inverted, J <= 0" : "Newton did not converge")
+            << "); cutting the step to " << step << '\n';
+        if (step < prm.solver.min_load_step)
+          {
+            classify_failure(pv, last_inverted, result);
+            break;
+          }
+      }
+    result.converged           = s >= 1.0;
+    result.load_factor_reached = s;
+    result.wall_time           = seconds_since(start_time);
+    return result;
+  }
+
+  // A pressure ramp that stalls while the pressure-volume curve flattens has
+  // reached a limit point (balloon instability, dp/dV -> 0): a physical end
+  // of pressure control, not a numerical failure.
+  void QuasiStaticSolver::classify_failure(const std::vector<std::pair<double, double>> &pv,
+                                           const bool inverted, Result &result) const
+  {
+    std::ostringstream why;
+    const double       p_last = pv.back().first;
+    if (pv.size() >= 3 && p_last != 0.0)
+      {
+        const auto   slope = [&](std::size_t k) {
+          return (pv[k].first - pv[k - 1].first) / (pv[k].second - pv[k - 1].second);
+        };
+        const double ratio = slope(pv.size() - 1) / slope(1);
+        if (std::isfinite(ratio) && ratio < 0.1)
+          {
+            why << "limit point at p = " << p_last << " Pa: dp/dV fell to " << 100 * ratio
+                << "% of its initial value (the walls balloon; pressure control has no "
+                   "equilibrium beyond it)";
+            result.failure = Failure::limit_point;
+            result.reason  = why.str();
+            return;
+          }
+      }
+    why << (inverted ? "elements inverted (J <= 0)" : "Newton did not converge")
+        << " even with load steps below " << prm.solver.min_load_step << " (last converged pressure "
+        << p_last << " Pa)";
+    result.failure = inverted ? Failure::inverted : Failure::not_converged;
+    result.reason  = why.str();
+  }
+
+  std::vector<Point<3>> QuasiStaticSolver::deformed_points(const std::vector<Point<3>> &points) const
+  {
+    return EmbeddedPoints(*fe_space, points, "force point").deformed(u_ghosted);
+  }
+} // namespace softchain::fem

@@ -1,0 +1,90 @@
+#include <softchain/fem/sample_group.h>
+#include <softchain/fem/solution_output.h>
+
+#include <algorithm>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::vector<Point<3>> points_of(const data::Actuation &actuation)
+    {
+      std::vector<Point<3>> points;
+      for (const auto &f : actuation.point_forces)
+        points.emplace_back(f.point[0], f.point[1], f.point[2]);
+      return points;
+    }
+
+    LoadState load_of(const data::Actuation &actuation)
+    {
+      LoadState load;
+      load.pressure = actuation.pressure;
+      for (const auto &f : actuation.point_forces)
+        load.point_loads.push_back({Point<3>(f.point[0], f.point[1], f.point[2]),
+                                    Point<3>(f.force[0], f.force[1], f.force[2])});
+      return load;
+    }
+  } // namespace
+
+  SampleGroup::SampleGroup(const Parameters &parameters, const FingerMesh &mesh,
+                           const MPI_Comm group, std::ostream &log)
+    : prm(parameters)
+    , solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, group, log)
+    , nodes(solver.space())
+    , initial_load_step(parameters.solver.initial_load_step)
+  {}
+
+  double SampleGroup::first_step(const data::Actuation *start, const data::Actuation &target) const
+  {
+    if (!start || start->point_forces.size() != target.point_forces.size())
+      return initial_load_step;
+    data::Actuation increment = target; // the forces at the same points, in chain order
+    increment.pressure -= start->pressure;
+    for (std::size_t k = 0; k < increment.point_forces.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        increment.point_forces[k].force[c] -= start->point_forces[k].force[c];
+    const double step = load_size(increment);
+    return step > 0 ? std::min(1.0, initial_load_step * load_size(target) / step) : 1.0;
+  }
+
+  void SampleGroup::check_points(const std::vector<Sample> &samples) const
+  {
+    for (const auto &sample : samples)
+      if (!sample.actuation.point_forces.empty())
+        EmbeddedPoints(solver.space(), points_of(sample.actuation),
+                       prm.file + ": subsection 'Samples', sample '" + sample.label +
+                         "': force point");
+  }
+
+  data::SampleRecord SampleGroup::solve(const Sample &sample, const data::SampleRecord *start,
+                                        const unsigned int index)
+  {
+    if (start)
+      solver.set_state(nodes.displacement(start->x), load_of(start->actuation));
+    else
+      solver.reset();
+    prm.solver.initial_load_step = first_step(start ? &start->actuation : nullptr, sample.actuation);
+    const auto         result = solver.solve(load_of(sample.actuation));
+    data::SampleRecord record;
+    record.id                  = sample.id;
+    record.actuation           = sample.actuation;
+    record.status              = result.converged ? "converged" : "failed";
+    record.reason              = result.converged ? "" :
+                                   result.reason + (start ? " (load path from sample " + start->id + ")" :
+                                                            " (load path from rest)");
+    record.load_factor_reached = result.load_factor_reached;
+    record.newton_iterations   = result.newton_iterations;
+    record.load_steps          = result.load_steps;
+    record.wall_time           = result.wall_time;
+    record.x                   = nodes.deformed_nodes(solver.displacement());
+    if (!sample.actuation.point_forces.empty())
+      for (const auto &p : solver.deformed_points(points_of(sample.actuation)))
+        record.force_points_deformed.push_back({p[0], p[1], p[2]});
+    if (prm.output.write_vtu)
+      SolutionOutput(prm.design.output_directory + "/vtu", prm.output.subdivisions)
+        .write(solver, "sample_" + sample.id, index);
+    return record;
+  }
+} // namespace softchain::fem

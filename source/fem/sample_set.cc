@@ -1,0 +1,195 @@
+#include <softchain/data/content_hash.h>
+#include <softchain/data/input_error.h>
+#include <softchain/fem/sample_set.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace softchain::fem
+{
+  namespace
+  {
+    void declare(data::PrmSection &section)
+    {
+      section.declare("Pressure sweep", "", "Pa, pressure-only samples (role pressure)");
+      section.declare("Lateral tip forces", "", "N along +z at the force point (role lateral)");
+      section.declare("Torsion couples", "", "N, two opposite forces along y (role torsion)");
+      section.declare("Force sample pressures", "0",
+                      "Pa: the lateral and torsion samples are made at each of these "
+                      "pressures, for k_theta(p) and k_psi(p)");
+      section.declare("Torsion arm", "0", "m, half the z distance of the couple's points; "
+                                          "0: a quarter of the tip face width");
+      section.declare("Force point", "", "x,y,z; empty: centre of the tip face");
+      section.declare("Validation samples", "", "p : point : force [: point : force] ; ...");
+      section.declare("Sample groups", "1", "MPI sample groups solving samples in parallel");
+      section.declare("Continuation", "true", "start each sample from its converged neighbour");
+    }
+
+    std::string trim(const std::string &s)
+    {
+      const auto first = s.find_first_not_of(" \t");
+      return first == std::string::npos ? "" :
+                                          s.substr(first, s.find_last_not_of(" \t") - first + 1);
+    }
+
+    std::vector<std::string> split(const std::string &text, const char separator)
+    {
+      std::vector<std::string> items;
+      std::istringstream       in(text);
+      std::string              item;
+      while (std::getline(in, item, separator))
+        items.push_back(trim(item));
+      return items;
+    }
+
+    double number(const std::string &text, const std::string &where)
+    {
+      std::size_t used = 0;
+      try
+        {
+          const double value = std::stod(text, &used);
+          if (used == text.size() && std::isfinite(value))
+            return value;
+        }
+      catch (const std::exception &)
+        {}
+      throw data::InputError(where + ": '" + text + "' is not a number");
+    }
+
+    data::Point3 triple(const std::string &text, const std::string &where)
+    {
+      const auto items = split(text, ',');
+      if (items.size() != 3)
+        throw data::InputError(where + ": '" + text + "' needs three components x,y,z");
+      return {number(items[0], where), number(items[1], where), number(items[2], where)};
+    }
+
+    std::string label(const std::string &role, const double value, const char *unit,
+                      const double pressure = 0)
+    {
+      std::ostringstream text;
+      text << role << ' ' << value << ' ' << unit;
+      if (pressure != 0)
+        text << " at " << pressure << " Pa";
+      return text.str();
+    }
+
+    // One validation entry "p : point : force [: point : force ...]".
+    data::Actuation validation(const std::string &entry, const data::Point3 &tip,
+                               const std::string &where)
+    {
+      const auto fields = split(entry, ':');
+      if (fields.size() % 2 == 0)
+        throw data::InputError(where + ": '" + entry + "' needs 'p' followed by "
+                                       "'point : force' pairs");
+      data::Actuation a;
+      a.role     = "validation";
+      a.pressure = number(fields[0], where);
+      for (std::size_t k = 1; k < fields.size(); k += 2)
+        a.point_forces.push_back({fields[k] == "tip" ? tip : triple(fields[k], where),
+                                  triple(fields[k + 1], where)});
+      return a;
+    }
+
+    // The chain key: role, force points and, for samples with forces, the
+    // pressure (a chain of forces grows at one pressure).
+    std::string chain_key(const data::Actuation &a)
+    {
+      std::string key = a.role;
+      if (!a.point_forces.empty())
+        key += " p " + data::canonical(a.pressure);
+      for (const auto &f : a.point_forces)
+        for (const double v : f.point)
+          key += ' ' + data::canonical(v);
+      return key;
+    }
+
+    std::vector<Sample> listed_samples(const data::PrmSection &s, const SampleSet::TipFace &tip)
+    {
+      const data::Point3 at =
+        s.get("Force point").empty() ? tip.centre : triple(s.get("Force point"), s.describe("Force point"));
+      const double arm = s.get_double("Torsion arm") > 0 ? s.get_double("Torsion arm") : tip.width / 4;
+      std::vector<Sample> samples;
+      for (const double p : s.get_double_list("Pressure sweep"))
+        samples.push_back({{p, {}, "pressure"}, label("pressure", p, "Pa"), ""});
+      for (const double p : s.get_double_list("Force sample pressures"))
+        {
+          for (const double f : s.get_double_list("Lateral tip forces"))
+            samples.push_back({{p, {{at, {0, 0, f}}}, "lateral"}, label("lateral", f, "N", p), ""});
+          for (const double f : s.get_double_list("Torsion couples"))
+            samples.push_back({{p,
+                                {{{at[0], at[1], at[2] + arm}, {0, f, 0}},
+                                 {{at[0], at[1], at[2] - arm}, {0, -f, 0}}},
+                                "torsion"},
+                               label("torsion", f, "N", p),
+                               ""});
+        }
+      const auto entries = split(s.get("Validation samples"), ';');
+      for (std::size_t k = 0; k < entries.size(); ++k)
+        if (!entries[k].empty())
+          {
+            const std::string name = "validation " + std::to_string(k + 1);
+            samples.push_back(
+              {validation(entries[k], at, s.describe("Validation samples") + ", sample '" + name + "'"),
+               name, ""});
+          }
+      return samples;
+    }
+  } // namespace
+
+  double load_size(const data::Actuation &actuation)
+  {
+    double size = std::abs(actuation.pressure);
+    for (const auto &f : actuation.point_forces)
+      size += std::hypot(f.force[0], f.force[1], f.force[2]);
+    return size;
+  }
+
+  SampleSet SampleSet::read(const data::PrmFile &prm, const TipFace &tip,
+                            const std::string &design_hash)
+  {
+    data::PrmSection section;
+    declare(section);
+    prm.parse_section("Samples", section);
+    SampleSet set;
+    set.continuation  = section.get_bool("Continuation");
+    const int groups  = section.get_integer("Sample groups");
+    if (groups < 1)
+      throw data::InputError(section.describe("Sample groups") + ": must be at least 1");
+    set.sample_groups = groups;
+
+    // Chains in order of first appearance, each by increasing load.
+    std::map<std::string, std::size_t>    chain_of;
+    std::vector<std::vector<Sample>>      chains;
+    std::map<std::string, std::string>    label_of_id;
+    for (auto &sample : listed_samples(section, tip))
+      {
+        sample.id = data::sample_id(design_hash, sample.actuation);
+        if (!label_of_id.emplace(sample.id, sample.label).second)
+          throw data::InputError(prm.path() + ": subsection 'Samples': sample '" + sample.label +
+                                 "' repeats the actuation of sample '" +
+                                 label_of_id[sample.id] + "'");
+        const std::string key = set.continuation ? chain_key(sample.actuation) : sample.id;
+        if (chain_of.emplace(key, chains.size()).second)
+          chains.emplace_back();
+        chains[chain_of[key]].push_back(sample);
+      }
+    for (auto &chain : chains)
+      {
+        std::stable_sort(chain.begin(), chain.end(), [](const Sample &a, const Sample &b) {
+          return load_size(a.actuation) < load_size(b.actuation);
+        });
+        set.chains.emplace_back();
+        for (auto &sample : chain)
+          {
+            set.chains.back().push_back(set.samples.size());
+            set.samples.push_back(sample);
+          }
+      }
+    if (set.samples.empty())
+      throw data::InputError(prm.path() + ": subsection 'Samples' lists no sample");
+    return set;
+  }
+} // namespace softchain::fem

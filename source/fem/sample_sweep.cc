@@ -1,0 +1,325 @@
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/data/input_error.h>
+#include <softchain/fem/design_hash.h>
+#include <softchain/fem/sample_group.h>
+#include <softchain/fem/sample_sweep.h>
+#include <softchain/fem/sweep_progress.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <boost/serialization/array.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <numeric>
+#include <optional>
+
+// A sample's result travels from its group to world rank 0 (the actuation is
+// known there by the id).
+namespace boost::serialization
+{
+  template <class Archive>
+  void serialize(Archive &archive, softchain::data::SampleRecord &s, const unsigned int)
+  {
+    archive &s.id &s.status &s.reason &s.load_factor_reached &s.newton_iterations &s.load_steps
+      &s.wall_time &s.x &s.force_points_deformed;
+  }
+} // namespace boost::serialization
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    unsigned int world_rank()
+    {
+      return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    }
+
+    // Centre and z extent of the bounding box of the `tip` faces.
+    SampleSet::TipFace tip_face(const Triangulation<3> &mesh, const std::string &file)
+    {
+      const double inf = std::numeric_limits<double>::infinity();
+      Point<3>     low(inf, inf, inf), high(-inf, -inf, -inf);
+      for (const auto &face : mesh.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == boundary::tip)
+          for (const unsigned int v : face->vertex_indices())
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                low[c]  = std::min(low[c], face->vertex(v)[c]);
+                high[c] = std::max(high[c], face->vertex(v)[c]);
+              }
+      if (low[0] > high[0])
+        throw data::InputError(file + ": the mesh has no face in the physical group 'tip' "
+                                      "(needed for the samples' default force point)");
+      const Point<3> centre = 0.5 * (low + high);
+      return {{centre[0], centre[1], centre[2]}, high[2] - low[2]};
+    }
+
+    // Temporary copies left by a sweep killed while storing a sample
+    // (data/source/atomic_file.cc names them <database>.tmp<pid>).
+    void remove_leftovers(const std::string &database)
+    {
+      const fs::path    path(database);
+      const std::string prefix = path.filename().string() + ".tmp";
+      for (const auto &entry : fs::directory_iterator(path.parent_path()))
+        if (entry.path().filename().string().rfind(prefix, 0) == 0)
+          fs::remove(entry.path());
+    }
+
+    data::DesignRecord design_record(const Parameters &prm, const data::PrmFile &file,
+                                     const std::string &hash)
+    {
+      return {prm.design.name, hash, name(prm.mesh.element_type), "softchain 0.1", file.text()};
+    }
+  } // namespace
+
+  int SampleSweep::Summary::report(std::ostream &out, std::ostream &err) const
+  {
+    out << n_samples << " samples: " << n_cached << " cached, " << n_solved << " solved, "
+        << failed.size() << " failed; database " << database << std::endl;
+    for (const auto &f : failed)
+      err << "softchain: sample failed: " << f << '\n';
+    return failed.empty() ? 0 : 2;
+  }
+
+  SampleSweep::SampleSweep(const data::PrmFile &file)
+    : prm(Parameters::read(file))
+    , prm_file(file)
+    , database_path(prm.design.database_path())
+  {
+    if (prm.solver.threads > 0)
+      MultithreadInfo::set_thread_limit(prm.solver.threads);
+    FingerMesh::build(prm, mesh);
+    hash = design_hash(prm, mesh);
+    set  = SampleSet::read(prm_file, tip_face(mesh.triangulation, file.path()), hash);
+  }
+
+  SampleSweep::Records SampleSweep::read_cached() const
+  {
+    Records known;
+    if (!fs::exists(database_path))
+      return known;
+    const auto database = data::ActuationDatabase::open(database_path);
+    if (database.design().design_hash != hash)
+      return known;
+    for (std::size_t i = 0; i < set.samples.size(); ++i)
+      if (database.has_sample(set.samples[i].id))
+        known[i] = database.read_sample(set.samples[i].id);
+    return known;
+  }
+
+  SampleSweep::Summary SampleSweep::run()
+  {
+    Records known = read_cached();
+    MPI_Barrier(MPI_COMM_WORLD); // all have read before rank 0 may replace the file
+    std::vector<std::size_t> pending;
+    for (std::size_t i = 0; i < set.samples.size(); ++i)
+      if (known.count(i) == 0)
+        pending.push_back(i);
+    const unsigned int n_groups =
+      std::min(set.sample_groups, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    std::ostream  silent(nullptr);
+    SweepProgress progress(world_rank() == 0 ? std::cout : silent, set.samples.size(),
+                           pending.size(), n_groups);
+    for (const auto &[i, record] : known)
+      progress.cached(set.samples[i], record);
+    if (!pending.empty())
+      solve_pending(pending, known, progress, n_groups);
+
+    Summary summary{set.samples.size(), set.samples.size() - pending.size(), pending.size(), {},
+                    database_path};
+    if (world_rank() == 0)
+      for (const auto &[i, record] : known)
+        if (!record.converged())
+          summary.failed.push_back(set.samples[i].label + " (" + record.id + "): " + record.reason);
+    summary.failed = Utilities::MPI::broadcast(MPI_COMM_WORLD, summary.failed, 0);
+    if (prm.output.write_vtu && world_rank() == 0 && !pending.empty())
+      write_series();
+    return summary;
+  }
+
+  void SampleSweep::solve_pending(const std::vector<std::size_t> &pending, Records &known,
+                                  SweepProgress &progress, const unsigned int n_groups) const
+  {
+    const unsigned int rank  = world_rank();
+    const unsigned int color = rank * n_groups / Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    MPI_Comm           group_comm;
+    MPI_Comm_split(MPI_COMM_WORLD, color, rank, &group_comm);
+    std::ostream log(prm.output.verbose && rank == 0 ? std::cout.rdbuf() : nullptr);
+    {
+      SampleGroup group(prm, mesh, group_comm, log);
+      group.check_points(set.samples);
+      std::optional<data::ActuationDatabase> database;
+      if (rank == 0)
+        {
+          fs::create_directories(prm.design.output_directory);
+          remove_leftovers(database_path);
+          database = data::ActuationDatabase::open_or_create(database_path,
+                                                             design_record(prm, prm_file, hash),
+                                                             group.mesh());
+        }
+      solve_rounds(group, share_of(pending, color, n_groups), database, known, progress);
+      group.print_timing();
+    }
+    MPI_Comm_free(&group_comm);
+  }
+
+  // Rounds: each group solves its next sample, then world rank 0 stores the
+  // round's results (in group order) and prints their progress lines.
+  void SampleSweep::solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
+                                 std::optional<data::ActuationDatabase> &database, Records &known,
+                                 SweepProgress &progress) const
+  {
+    std::map<std::string, std::size_t> index_of;
+    for (std::size_t i = 0; i < set.samples.size(); ++i)
+      index_of[set.samples[i].id] = i;
+    const auto rounds = Utilities::MPI::max(mine.size(), MPI_COMM_WORLD);
+    for (std::size_t r = 0; r < rounds; ++r)
+      {
+        std::vector<data::SampleRecord> outcome;
+        if (r < mine.size())
+          {
+            const std::size_t i    = mine[r];
+            const auto       *stop = stopped_before(i, known);
+            known[i] = stop ? beyond_limit_point(i, *stop) : group.solve(set.samples[i], start_of(i, known), i);
+            if (group.leader())
+              outcome.push_back(known[i]);
+          }
+        for (auto &records : Utilities::MPI::gather(MPI_COMM_WORLD, outcome, 0))
+          for (auto &record : records)
+            {
+              const std::size_t i = index_of.at(record.id);
+              record.actuation    = set.samples[i].actuation;
+              database->store_sample(record);
+              progress.solved(set.samples[i], record, database->mesh());
+              known[i] = std::move(record);
+            }
+      }
+  }
+
+  // Whole chains per group (so that every sample continues from the same
+  // neighbour whatever the grouping), the largest first to the least loaded.
+  std::vector<std::size_t> SampleSweep::share_of(const std::vector<std::size_t> &pending,
+                                                 const unsigned int              group,
+                                                 const unsigned int              n_groups) const
+  {
+    std::vector<std::vector<std::size_t>> work;
+    for (const auto &chain : set.chains)
+      {
+        work.emplace_back();
+        for (const auto i : chain)
+          if (std::binary_search(pending.begin(), pending.end(), i))
+            work.back().push_back(i);
+      }
+    std::vector<std::size_t> order(work.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return work[a].size() > work[b].size(); });
+    std::vector<std::size_t>              load(n_groups, 0);
+    std::vector<std::vector<std::size_t>> chains_of(n_groups);
+    for (const auto c : order)
+      {
+        const auto g = std::min_element(load.begin(), load.end()) - load.begin();
+        load[g] += work[c].size();
+        chains_of[g].push_back(c);
+      }
+    std::sort(chains_of[group].begin(), chains_of[group].end());
+    std::vector<std::size_t> mine;
+    for (const auto c : chains_of[group])
+      mine.insert(mine.end(), work[c].begin(), work[c].end());
+    return mine;
+  }
+
+  // The records of the samples before `sample` in its chain, nearest first.
+  std::vector<const data::SampleRecord *> SampleSweep::known_before(const std::size_t sample,
+                                                                    const Records    &known) const
+  {
+    std::vector<const data::SampleRecord *> before;
+    for (const auto &chain : set.chains)
+      {
+        const auto at = std::find(chain.begin(), chain.end(), sample);
+        if (at == chain.end())
+          continue;
+        for (auto k = std::make_reverse_iterator(at); k != chain.rend(); ++k)
+          if (const auto record = known.find(*k); record != known.end())
+            before.push_back(&record->second);
+      }
+    return before;
+  }
+
+  // The nearest converged sample before `sample` in its chain, or nullptr
+  // (start from rest).
+  const data::SampleRecord *SampleSweep::start_of(const std::size_t sample,
+                                                  const Records    &known) const
+  {
+    for (const auto *record : known_before(sample, known))
+      if (record->converged())
+        return record;
+    return nullptr;
+  }
+
+  // The nearest sample before `sample` in its chain with a result, if that
+  // result is a stop at a limit point (or a sample beyond one), else nullptr.
+  const data::SampleRecord *SampleSweep::stopped_before(const std::size_t sample,
+                                                        const Records    &known) const
+  {
+    const auto before = known_before(sample, known);
+    return !before.empty() && !before.front()->converged() &&
+               before.front()->reason.find("limit point") != std::string::npos ?
+             before.front() :
+             nullptr;
+  }
+
+  // A chain loads proportionally, so a sample further along it than a limit
+  // point has no equilibrium on that load path either (pressure control cannot
+  // pass a limit point): it is stored as failed without a solve, holding the
+  // state at the limit.
+  data::SampleRecord SampleSweep::beyond_limit_point(const std::size_t         sample,
+                                                     const data::SampleRecord &stop) const
+  {
+    data::SampleRecord record = stop;
+    record.id                 = set.samples[sample].id;
+    record.actuation          = set.samples[sample].actuation;
+    record.reason             = stop.reason.rfind("not solved", 0) == 0 ?
+                                  stop.reason :
+                                  "not solved: beyond the limit point of sample " + stop.id + " (" +
+                                    stop.reason + ")";
+    record.load_factor_reached = 0.0;
+    record.newton_iterations   = 0;
+    record.load_steps          = 0;
+    record.wall_time           = 0.0;
+    return record;
+  }
+
+  // vtu/samples.pvd: the samples' VTU files in sample order (time = index).
+  void SampleSweep::write_series() const
+  {
+    const std::string directory = prm.design.output_directory + "/vtu/";
+    std::vector<std::pair<double, std::string>> series;
+    for (std::size_t i = 0; i < set.samples.size(); ++i)
+      for (const char *extension : {".pvtu", ".vtu"})
+        {
+          const std::string file = "sample_" + set.samples[i].id + "_0000" + extension;
+          if (fs::exists(directory + file))
+            {
+              series.emplace_back(i, file);
+              break;
+            }
+        }
+    if (series.empty())
+      return;
+    std::ofstream out(directory + "samples.pvd");
+    DataOutBase::write_pvd_record(out, series);
+  }
+} // namespace softchain::fem

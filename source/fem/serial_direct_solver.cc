@@ -1,0 +1,110 @@
+#include <softchain/fem/serial_direct_solver.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/vector.h>
+
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void check(SuiteSparse_long status, const std::string &step)
+    {
+      AssertThrow(status == UMFPACK_OK,
+                  ExcMessage("UMFPACK " + step + " failed with status " + std::to_string(status) +
+                             (status == UMFPACK_WARNING_singular_matrix ?
+                                " (the tangent stiffness matrix is singular)" :
+                                "")));
+    }
+  } // namespace
+
+  SerialDirectSolver::SerialDirectSolver(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    AssertThrow(Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator()) == 1,
+                ExcMessage("SerialDirectSolver runs on one MPI rank only"));
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    row_start.assign(1, 0);
+    for (int row = 0; row < epetra.NumMyRows(); ++row)
+      {
+        int  n;
+        int *local_columns;
+        epetra.Graph().ExtractMyRowView(row, n, local_columns);
+        // This row's entries in increasing global column.
+        std::vector<SuiteSparse_long> global(n), order(n);
+        for (int k = 0; k < n; ++k)
+          global[k] = epetra.GCID(local_columns[k]);
+        std::iota(order.begin(), order.end(), 0);
+        std::sort(order.begin(), order.end(),
+                  [&](SuiteSparse_long a, SuiteSparse_long b) { return global[a] < global[b]; });
+        const SuiteSparse_long first = row_start.back();
+        place.resize(first + n);
+        for (int k = 0; k < n; ++k)
+          {
+            column.push_back(global[order[k]]);
+            place[first + order[k]] = first + k;
+          }
+        row_start.push_back(first + n);
+      }
+    value.resize(column.size());
+    umfpack_dl_defaults(control.data());
+  }
+
+  SerialDirectSolver::~SerialDirectSolver()
+  {
+    if (numeric)
+      umfpack_dl_free_numeric(&numeric);
+    if (symbolic)
+      umfpack_dl_free_symbolic(&symbolic);
+  }
+
+  void SerialDirectSolver::copy_values(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    for (int row = 0; row < epetra.NumMyRows(); ++row)
+      {
+        int     n;
+        double *values;
+        epetra.ExtractMyRowView(row, n, values);
+        for (int k = 0; k < n; ++k)
+          value[place[row_start[row] + k]] = values[k];
+      }
+  }
+
+  // The symbolic analysis once, the numeric factorisation every call.
+  void SerialDirectSolver::factorise()
+  {
+    const SuiteSparse_long n = row_start.size() - 1;
+    if (!symbolic)
+      check(umfpack_dl_symbolic(n, n, row_start.data(), column.data(), value.data(), &symbolic,
+                                control.data(), nullptr),
+            "symbolic analysis");
+    if (numeric)
+      umfpack_dl_free_numeric(&numeric);
+    check(umfpack_dl_numeric(row_start.data(), column.data(), value.data(), symbolic, &numeric,
+                             control.data(), nullptr),
+          "numeric factorisation");
+  }
+
+  void SerialDirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                                 TrilinosWrappers::MPI::Vector        &solution,
+                                 const TrilinosWrappers::MPI::Vector  &rhs)
+  {
+    copy_values(matrix);
+    factorise();
+    const Vector<double> b(rhs);
+    Vector<double>       x(b.size());
+    check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(), x.data(),
+                           b.data(), numeric, control.data(), nullptr),
+          "solve");
+    for (types::global_dof_index i = 0; i < x.size(); ++i)
+      solution[i] = x[i];
+    solution.compress(VectorOperation::insert);
+  }
+} // namespace softchain::fem

@@ -1,0 +1,118 @@
+#include <softchain/fem/volume_controlled_inflation.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  VolumeControlledInflation::VolumeControlledInflation(QuasiStaticSolver &solver,
+                                                       const Parameters  &prm,
+                                                       const double       start_pressure)
+    : solver(solver)
+    , prm(prm)
+    , p(start_pressure)
+  {}
+
+  double VolumeControlledInflation::volume() const
+  {
+    return solver.pressure_load().cavity_volume(solver.displacement());
+  }
+
+  TrilinosWrappers::MPI::Vector VolumeControlledInflation::owned_displacement() const
+  {
+    const FiniteElementSpace     &s = solver.space();
+    TrilinosWrappers::MPI::Vector u(s.owned_dofs, s.communicator);
+    u = solver.displacement();
+    return u;
+  }
+
+  TrilinosWrappers::MPI::Vector VolumeControlledInflation::unit_pressure_load() const
+  {
+    TrilinosWrappers::MPI::Vector g(solver.negative_residual());
+    g = 0;
+    solver.pressure_load().assemble(solver.displacement(), 1.0, solver.space().fixed_dofs, nullptr, g);
+    g.compress(VectorOperation::add);
+    return g;
+  }
+
+  bool VolumeControlledInflation::newton(const double target_volume, Result &result)
+  {
+    const FiniteElementSpace &s = solver.space();
+    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
+      {
+        LoadState state;
+        state.pressure = p;
+        if (!solver.assemble(state, true))
+          return false; // J <= 0 somewhere
+        const TrilinosWrappers::MPI::Vector g        = unit_pressure_load();
+        const double                        residual = solver.negative_residual().l2_norm();
+        const double                        misfit   = target_volume - volume();
+        if (residual <= prm.solver.residual_tolerance * std::max(std::abs(p) * g.l2_norm(), 1e-300) &&
+            std::abs(misfit) <= prm.solver.residual_tolerance * target_volume)
+          return true;
+        if (it == prm.solver.max_newton_iterations)
+          break;
+        ++result.newton_iterations;
+
+        // Two solves with one factorisation of K.
+        TrilinosWrappers::MPI::Vector a(s.owned_dofs, s.communicator), b(a);
+        SolverControl                  control(1, 0);
+        TrilinosWrappers::SolverDirect direct(control);
+        direct.initialize(solver.tangent());
+        direct.solve(a, solver.negative_residual());
+        direct.solve(b, g);
+        const double dp = (misfit - g * a) / (g * b);
+        TrilinosWrappers::MPI::Vector u = owned_displacement();
+        u.add(1.0, a, dp, b);
+        s.fixed_dofs.distribute(u);
+        if (!std::isfinite(u.l2_norm()) || !std::isfinite(dp))
+          return false;
+        solver.set_displacement(u);
+        p += dp;
+      }
+    return false;
+  }
+
+  VolumeControlledInflation::Result VolumeControlledInflation::solve(const double target_volume)
+  {
+    Result       result;
+    const double v_start = volume();
+    double       s = 0.0, step = prm.solver.initial_load_step;
+    result.curve.push_back({v_start, p});
+    while (s < 1.0)
+      {
+        const double                        s_try = std::min(1.0, s + step);
+        const TrilinosWrappers::MPI::Vector u_converged = owned_displacement();
+        const double                        p_converged = p;
+        const unsigned int                  before      = result.newton_iterations;
+        if (newton(v_start + s_try * (target_volume - v_start), result))
+          {
+            s = s_try;
+            result.curve.push_back({volume(), p});
+            if (3 * (result.newton_iterations - before) <= 2 * prm.solver.max_newton_iterations)
+              step = std::min(prm.solver.max_load_step, 1.5 * step);
+            continue;
+          }
+        solver.set_displacement(u_converged);
+        p = p_converged;
+        step *= 0.25;
+        if (step < prm.solver.min_load_step)
+          {
+            std::ostringstream why;
+            why << "volume control did not converge even with volume steps below "
+                << prm.solver.min_load_step << " (last converged V = " << result.curve.back().volume
+                << " m^3, p = " << p << " Pa)";
+            result.reason = why.str();
+            return result;
+          }
+      }
+    result.converged = true;
+    return result;
+  }
+} // namespace softchain::fem
