@@ -175,7 +175,7 @@ TEST_CASE("a database built by several interrupted writers reads back fully")
   check_all_samples(path, n);
 }
 
-TEST_CASE("a second writer gets an error naming the database; readers are not refused")
+TEST_CASE("a second writer gets an error naming the database, readers are let in")
 {
   ScratchDirectory  dir("db_second_writer");
   const std::string path = dir.file("finger.h5");
