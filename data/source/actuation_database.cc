@@ -1,16 +1,24 @@
 // ActuationDatabase on the HDF5 C API (layout in actuation_database.h and
-// reduction/README.md). Every change is written to a copy of the file in the
-// same directory and renamed over the original (atomic_file.h), so the
-// database on disk is always either the old or the new complete file.
+// data/README.md). The database file holds the design and the
+// mesh and is written once, atomically; every sample is a file of its own in
+// the sample directory, written to a temporary, fsync'ed and renamed into
+// place (atomic_file.h). So storing a sample costs the same however many are
+// stored, and a crash leaves every stored sample intact. One writer at a
+// time (WriterLock).
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 
 #include "atomic_file.h"
 #include "hdf5_io.h"
+#include "sample_directory.h"
+#include "writer_lock.h"
 
 #include <algorithm>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
+#include <iterator>
 #include <stdexcept>
 
 namespace softchain::data
@@ -90,9 +98,9 @@ namespace softchain::data
       return mesh;
     }
 
-    void write_sample(hid_t samples, const SampleRecord &sample, const std::string &path)
+    // The sample's attributes and datasets in `group` (a sample file's root).
+    void write_sample(hid_t group, const SampleRecord &sample, const std::string &path)
     {
-      Handle group = create_group(samples, sample.id, path);
       write_attribute(group, "pressure", sample.actuation.pressure, path);
       write_attribute(group, "role", sample.actuation.role, path);
       write_attribute(group, "status", sample.status, path);
@@ -146,6 +154,58 @@ namespace softchain::data
                 " rows, the mesh has " + std::to_string(n_nodes) + " nodes");
       return sample;
     }
+
+    // Test hook (actuation_database.h): SOFTCHAIN_TEST_KILL_IN_STORE=k kills
+    // the process while it stores a sample into a database of k samples.
+    void kill_if_requested(std::size_t samples_in_database)
+    {
+      const char *k = std::getenv("SOFTCHAIN_TEST_KILL_IN_STORE");
+      if (k != nullptr && std::to_string(samples_in_database) == k)
+        std::raise(SIGKILL);
+    }
+
+    void write_sample_file(const std::string &file, const SampleRecord &sample,
+                           const std::string &design_hash, std::size_t samples_in_database,
+                           const std::string &path)
+    {
+      Handle root(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      require_written(root.valid() ? 0 : -1, path, "file " + file);
+      write_attribute(root, "design_hash", design_hash, path);
+      write_sample(root, sample, path);
+      kill_if_requested(samples_in_database); // datasets written, file not yet closed
+    }
+
+    // A sample file of another design would be a silent wrong answer.
+    SampleRecord read_sample_file(const std::string &file, const std::string &id,
+                                  const std::string &design_hash, std::size_t n_nodes)
+    {
+      Handle root = open_file(file, H5F_ACC_RDONLY);
+      require(read_string_attribute(root, "design_hash", file) == design_hash, file,
+              "sample file of another design (design_hash is not " + design_hash + ")");
+      return read_sample_group(root, id, n_nodes, file);
+    }
+
+    // The sorted union of two sorted id lists.
+    std::vector<std::string> merged(const std::vector<std::string> &a,
+                                    const std::vector<std::string> &b)
+    {
+      std::vector<std::string> ids;
+      std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(ids));
+      return ids;
+    }
+
+    // Moves the database at `path` and its samples to `path.<hash>.stale`:
+    // the sample directory first, so that a crash in between leaves the
+    // database file without samples, which the next sweep moves aside too.
+    void move_aside(const std::string &path, const std::string &hash)
+    {
+      const std::string stale = path + "." + hash + ".stale";
+      const SampleDirectory samples(path);
+      if (samples.exists())
+        samples.move_to(stale);
+      fs::rename(path, stale);
+      sync_directory(fs::absolute(path).parent_path().string());
+    }
   } // namespace
 
   std::string Actuation::canonical_text() const
@@ -178,8 +238,11 @@ namespace softchain::data
     database.path_       = path;
     database.design_     = read_design(file, path);
     database.mesh_       = read_mesh(file, path);
-    Handle samples       = open_group(file, "samples", path);
-    database.sample_ids_ = group_members(samples);
+    // Databases written by earlier versions hold their samples in /samples.
+    std::vector<std::string> in_file;
+    if (H5Lexists(file, "samples", H5P_DEFAULT) > 0)
+      in_file = group_members(open_group(file, "samples", path));
+    database.sample_ids_ = merged(in_file, SampleDirectory(path).ids());
     return database;
   }
 
@@ -187,22 +250,40 @@ namespace softchain::data
                                                       const DesignRecord &design,
                                                       const MeshRecord   &mesh)
   {
+    auto lock = std::make_shared<WriterLock>(path);
     if (fs::exists(path))
       {
         ActuationDatabase existing = open(path);
         if (existing.design_.design_hash == design.design_hash)
-          return existing;
-        fs::rename(path, path + "." + existing.design_.design_hash + ".stale");
+          {
+            existing.become_writer(lock);
+            return existing;
+          }
+        move_aside(path, existing.design_.design_hash);
       }
+    const SampleDirectory samples(path);
+    require(samples.ids().empty(), path,
+            "the file is missing but its sample directory '" + samples.path() +
+              "' holds samples; restore the file or move the directory away");
+    samples.create(); // before the file, so that a database file has its directory
     silence_errors();
     write_atomically(path, [&](const std::string &temporary) {
       Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
       require_written(file.valid() ? 0 : -1, path, "file " + temporary);
       write_design(file, design, path);
       write_mesh(file, mesh, path);
-      create_group(file, "samples", path);
     });
-    return open(path);
+    ActuationDatabase created = open(path);
+    created.become_writer(lock);
+    return created;
+  }
+
+  void ActuationDatabase::become_writer(std::shared_ptr<WriterLock> lock)
+  {
+    writer_lock_ = std::move(lock);
+    const SampleDirectory samples(path_);
+    samples.create(); // a database of an earlier version has none yet
+    samples.remove_leftovers();
   }
 
   bool ActuationDatabase::has_sample(const std::string &id) const
@@ -219,6 +300,9 @@ namespace softchain::data
   {
     require(has_sample(id), path_, "no sample '" + id + "'");
     silence_errors();
+    const std::string sample_file = SampleDirectory(path_).file_of(id);
+    if (fs::exists(sample_file))
+      return read_sample_file(sample_file, id, design_.design_hash, mesh_.X.size());
     Handle file    = open_file(path_, H5F_ACC_RDONLY);
     Handle samples = open_group(file, "samples", path_);
     Handle group   = open_group(samples, id, path_);
@@ -227,21 +311,18 @@ namespace softchain::data
 
   void ActuationDatabase::store_sample(const SampleRecord &sample)
   {
-    if (sample.id.empty() || sample.id.find('/') != std::string::npos || sample.id == ".")
+    if (sample.id.empty() || sample.id.find('/') != std::string::npos || sample.id[0] == '.')
       throw std::invalid_argument("store_sample: invalid sample id '" + sample.id + "'");
     if (sample.x.size() != mesh_.X.size())
       throw std::invalid_argument("store_sample: sample '" + sample.id + "' has " +
                                   std::to_string(sample.x.size()) + " positions for " +
                                   std::to_string(mesh_.X.size()) + " nodes");
+    if (!writer_lock_)
+      become_writer(std::make_shared<WriterLock>(path_));
     silence_errors();
-    write_atomically(path_, [&](const std::string &temporary) {
-      fs::copy_file(path_, temporary, fs::copy_options::overwrite_existing);
-      Handle file    = open_file(temporary, H5F_ACC_RDWR);
-      Handle samples = open_group(file, "samples", path_);
-      if (H5Lexists(samples, sample.id.c_str(), H5P_DEFAULT) > 0)
-        require_written(H5Ldelete(samples, sample.id.c_str(), H5P_DEFAULT), path_,
-                        "(replace) sample " + sample.id);
-      write_sample(samples, sample, path_);
+    const std::string sample_file = SampleDirectory(path_).file_of(sample.id);
+    write_atomically(sample_file, [&](const std::string &temporary) {
+      write_sample_file(temporary, sample, design_.design_hash, sample_ids_.size(), path_);
     });
     if (!has_sample(sample.id))
       sample_ids_.insert(std::lower_bound(sample_ids_.begin(), sample_ids_.end(), sample.id),

@@ -12,4 +12,8 @@ namespace softchain::data
   // temporary file is removed if anything throws.
   void write_atomically(const std::string                              &path,
                         const std::function<void(const std::string &)> &write);
+
+  // fsyncs a directory, which makes the creation, renaming or removal of its
+  // entries durable.
+  void sync_directory(const std::string &directory);
 } // namespace softchain::data

@@ -1,10 +1,15 @@
-// ActuationDatabase: round trip, replacement, cache, stale files, bad files.
+// ActuationDatabase: round trip, replacement, cache, stale files, bad files,
+// databases in the single-file layout of earlier versions.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/input_error.h>
 
 #include <catch2/catch.hpp>
 
+#include <hdf5.h>
+
+#include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "scratch_directory.h"
 
@@ -106,9 +111,14 @@ TEST_CASE("database round trip of design, mesh and samples")
   const SampleRecord read_failed = again.read_sample(failed.id);
   check_equal(read_failed, failed);
   CHECK_FALSE(read_failed.converged());
-  // Nothing but the database is left in the directory (no temporary copies).
-  CHECK(std::distance(std::filesystem::directory_iterator(dir.path()),
-                      std::filesystem::directory_iterator()) == 1);
+  // Nothing but the database, its sample directory with one file per
+  // sample and the lock file are left (no temporaries).
+  std::set<std::string> names;
+  for (const auto &entry : std::filesystem::directory_iterator(dir.path()))
+    names.insert(entry.path().filename().string());
+  CHECK(names == std::set<std::string>{"finger.h5", "finger.h5.samples", "finger.h5.lock"});
+  CHECK(std::distance(std::filesystem::directory_iterator(path + ".samples"),
+                      std::filesystem::directory_iterator()) == 2);
 }
 
 TEST_CASE("storing a sample with an existing id replaces it")
@@ -148,7 +158,85 @@ TEST_CASE("a new design hash moves the old database aside")
   CHECK(db.sample_ids().empty());
   const auto stale = ActuationDatabase::open(dir.file("f.h5.old.stale"));
   CHECK(stale.design().design_hash == "old");
-  CHECK(stale.sample_ids().size() == 1);
+  REQUIRE(stale.sample_ids().size() == 1);
+  check_equal(stale.read_sample(stale.sample_ids()[0]), sample("old", 1e4, 0.125));
+  // The old samples moved with their database file: none is left beside the new one.
+  CHECK(std::filesystem::is_empty(dir.file("f.h5.samples")));
+}
+
+TEST_CASE("a sample directory without its database file is an error, not reused")
+{
+  ScratchDirectory dir("db_orphan");
+  ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh())
+    .store_sample(sample("h1", 1e4, 0.125));
+  std::filesystem::remove(dir.file("f.h5"));
+  require_input_error_naming(dir.file("f.h5.samples"), [&] {
+    ActuationDatabase::open_or_create(dir.file("f.h5"), design("h2"), cube_mesh());
+  });
+  CHECK(std::filesystem::exists(dir.file("f.h5.samples/") + sample("h1", 1e4, 0.125).id + ".h5"));
+}
+
+TEST_CASE("a sample file of another design is an InputError naming it")
+{
+  ScratchDirectory dir("db_foreign_sample");
+  ActuationDatabase::open_or_create(dir.file("a.h5"), design("a"), cube_mesh())
+    .store_sample(sample("a", 1e4, 0.125));
+  auto b = ActuationDatabase::open_or_create(dir.file("b.h5"), design("b"), cube_mesh());
+  const std::string id = sample("a", 1e4, 0.125).id;
+  std::filesystem::copy_file(dir.file("a.h5.samples/") + id + ".h5",
+                             dir.file("b.h5.samples/") + id + ".h5");
+  require_input_error_naming(dir.file("b.h5.samples/") + id + ".h5",
+                             [&] { ActuationDatabase::open(dir.file("b.h5")).read_sample(id); });
+}
+
+namespace
+{
+  // Turns a database into the single-file layout of earlier versions: each
+  // sample file's root (attributes and datasets) is copied into the database
+  // file as /samples/<id>, and the sample directory is removed.
+  void convert_to_single_file(const std::string &path)
+  {
+    const hid_t file    = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const hid_t samples = H5Gcreate2(file, "samples", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (const auto &entry : std::filesystem::directory_iterator(path + ".samples"))
+      {
+        const hid_t sample = H5Fopen(entry.path().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        H5Ocopy(sample, ".", samples, entry.path().stem().c_str(), H5P_DEFAULT, H5P_DEFAULT);
+        H5Fclose(sample);
+      }
+    H5Gclose(samples);
+    H5Fclose(file);
+    std::filesystem::remove_all(path + ".samples");
+  }
+} // namespace
+
+TEST_CASE("a database in the single-file layout of earlier versions opens and extends")
+{
+  ScratchDirectory  dir("db_single_file");
+  const std::string path = dir.file("f.h5");
+  {
+    auto db = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+    db.store_sample(sample("h1", 1e4, 0.125));
+    db.store_sample(sample("h1", 2e4, 0.25));
+  }
+  convert_to_single_file(path);
+  REQUIRE_FALSE(std::filesystem::exists(path + ".samples"));
+
+  const auto old = ActuationDatabase::open(path);
+  REQUIRE(old.sample_ids().size() == 2);
+  check_equal(old.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
+  check_equal(old.read_sample(sample("h1", 2e4, 0.25).id), sample("h1", 2e4, 0.25));
+
+  // A sweep of the same design keeps it, adds samples and replaces one
+  // (the sample file takes precedence over the copy inside the file).
+  auto db = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  db.store_sample(sample("h1", 3e4, 0.375));
+  db.store_sample(sample("h1", 2e4, 0.5)); // the id of 2e4
+  const auto again = ActuationDatabase::open(path);
+  REQUIRE(again.sample_ids().size() == 3);
+  check_equal(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
+  check_equal(again.read_sample(sample("h1", 2e4, 0.5).id), sample("h1", 2e4, 0.5));
+  check_equal(again.read_sample(sample("h1", 3e4, 0.375).id), sample("h1", 3e4, 0.375));
 }
 
 TEST_CASE("missing and non-database files give an InputError naming the file")

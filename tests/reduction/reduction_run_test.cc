@@ -16,8 +16,14 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "../data/scratch_directory.h"
 #include "synthetic_finger.h"
@@ -89,20 +95,25 @@ namespace
       return couple(y_c, {-lateral_force, 0, 0});
     }
 
+    // Stores the samples not yet in the database at `path`, like a sweep.
     void write_database(const std::string &path) const
     {
       data::DesignRecord design{"synthetic box", hash, "Q1", "test", ""};
-      auto db = data::ActuationDatabase::open_or_create(path, design, finger.mesh);
+      auto db    = data::ActuationDatabase::open_or_create(path, design, finger.mesh);
+      auto store = [&db](const data::SampleRecord &s) {
+        if (!db.has_sample(s.id))
+          db.store_sample(s);
+      };
       for (const double p : pressures)
-        db.store_sample(sample(finger, "pressure", p, {}, arc_about_z(radius_at(p))));
+        store(sample(finger, "pressure", p, {}, arc_about_z(radius_at(p))));
       for (const auto &[F, kappa] : torsion)
-        db.store_sample(sample(finger, "torsion", 0, twist_couple(F), twist_about_x(kappa, y_c)));
-      db.store_sample(sample(finger, "lateral", 0, lateral_couple(), arc_about_y(lateral_radius)));
-      db.store_sample(sample(finger, "validation", 3e4, {}, arc_about_z(0.2)));
+        store(sample(finger, "torsion", 0, twist_couple(F), twist_about_x(kappa, y_c)));
+      store(sample(finger, "lateral", 0, lateral_couple(), arc_about_y(lateral_radius)));
+      store(sample(finger, "validation", 3e4, {}, arc_about_z(0.2)));
       data::SampleRecord failed = sample(finger, "pressure", 9e4, {}, arc_about_z(0.05));
       failed.status             = "failed";
       failed.reason             = "synthetic failure";
-      db.store_sample(failed);
+      store(failed);
     }
   };
 
@@ -274,6 +285,66 @@ TEST_CASE("run_reduction end to end on a synthetic database")
   if (summary.plots_drawn)
     CHECK(std::filesystem::file_size(dir.file("out/stiffness/kphi_methods_and_b.png")) > 0);
   CHECK(std::filesystem::exists(dir.file("out/stiffness/plots.gp")));
+}
+
+namespace
+{
+  // Writes the scenario's database in a child process that the data layer's
+  // test hook (actuation_database.h) kills while it stores sample k.
+  bool writer_killed_in_store(const Scenario &s, const std::string &path, int k)
+  {
+    const pid_t child = ::fork();
+    if (child == 0)
+      {
+        ::setenv("SOFTCHAIN_TEST_KILL_IN_STORE", std::to_string(k).c_str(), 1);
+        try
+          {
+            s.write_database(path);
+          }
+        catch (...)
+          {
+          }
+        ::_exit(0);
+      }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+  }
+
+  std::string content(const std::filesystem::path &file)
+  {
+    std::ostringstream text;
+    text << std::ifstream(file).rdbuf();
+    return text.str();
+  }
+} // namespace
+
+TEST_CASE("run_reduction on a database built by killed and resumed writers equals the uninterrupted")
+{
+  ScratchDirectory dir("reduction_interrupted");
+  const Scenario   s;
+  s.write_database(dir.file("whole.h5"));
+  for (int k = 1; k <= 3; ++k) // each writer stores one sample, then is killed
+    REQUIRE(writer_killed_in_store(s, dir.file("resumed.h5"), k));
+  REQUIRE(data::ActuationDatabase::open(dir.file("resumed.h5")).sample_ids().size() == 3);
+  s.write_database(dir.file("resumed.h5"));
+
+  const std::string prm = write_prm(dir, "  set Joint placement = paper\n"
+                                         "  set Joint spacing = 0.01\n"
+                                         "  set Methods = M1, M2\n");
+  reduction::ReductionRun(prm, dir.file("whole.h5"), dir.file("whole")).run();
+  reduction::ReductionRun(prm, dir.file("resumed.h5"), dir.file("resumed")).run();
+  // The same samples give the same stiffness tables, to the last digit.
+  std::size_t n_tables = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(dir.file("whole/stiffness")))
+    if (entry.path().extension() == ".csv")
+      {
+        INFO(entry.path().filename());
+        CHECK(content(entry.path()) ==
+              content(dir.file("resumed/stiffness/") + entry.path().filename().string()));
+        ++n_tables;
+      }
+  CHECK(n_tables >= 2); // at least one table per method
 }
 
 TEST_CASE("run_reduction: bad input is an InputError naming file or parameter")

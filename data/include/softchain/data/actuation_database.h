@@ -1,9 +1,12 @@
 #pragma once
-// ActuationDatabase: the paper's data exchange layer (Sec. II, III-A). One HDF5
-// file per finger design holding the reference mesh and, per actuation sample
-// S = (p, force points, forces), the deformed node positions x.
+// ActuationDatabase: the paper's data exchange layer (Sec. II, III-A). One
+// database per finger design holding the reference mesh and, per actuation
+// sample S = (p, force points, forces), the deformed node positions x.
 //
-// Layout (documented in the README):
+// Layout (documented in data/README.md): the database file PATH
+// (e.g. out/database.h5) and, beside it, the sample directory PATH.samples/
+// with one HDF5 file per sample.
+//   PATH
 //   /design               attributes: name, design_hash, element_type,
 //                         code_version, parameters (the design's .prm text)
 //   /mesh/X               (N,3) float64 reference node positions
@@ -15,15 +18,32 @@
 //   /mesh/cells           (C,k) int64 corner nodes of each element, k = 4
 //                         (tetrahedron) or 8 (hexahedron, deal.II's
 //                         lexicographic vertex order: x fastest, then y, z)
-//   /samples/<id>/        attributes: pressure, role, status, reason,
-//                         load_factor_reached, newton_iterations, load_steps,
-//                         wall_time
+//   PATH.samples/<id>.h5  root attributes: design_hash, pressure, role,
+//                         status, reason, load_factor_reached,
+//                         newton_iterations, load_steps, wall_time
 //                         datasets: force_points (m,3), forces (m,3),
 //                         force_points_deformed (m,3), x (N,3)
-// Samples are stored atomically: the new file is written beside the old one
-// and renamed over it, so a crash leaves the previous database intact.
+//   PATH.lock             empty; a writer holds an advisory lock on it
+// The database file is written once (atomically) when the database is
+// created; each sample file is written to a temporary, fsync'ed and renamed
+// into place. So storing a sample costs the same however many are stored, a
+// crash (even SIGKILL or power loss) leaves every stored sample intact, and
+// a second writer is refused with an InputError while one has it open.
+// Databases of earlier versions, with their samples inside the database
+// file as /samples/<id>/ (same attributes and datasets), open as before;
+// samples stored into them go to the sample directory, whose files take
+// precedence over /samples for the same id.
+//
+// Test hook: if the environment variable SOFTCHAIN_TEST_KILL_IN_STORE is k,
+// store_sample raises SIGKILL when it stores a sample into a database that
+// holds k samples (so, storing samples 0, 1, ... in order, in the middle of
+// writing sample k), after the sample's datasets are written to the
+// temporary file and before it is closed and renamed: a deterministic crash
+// inside a store for the crash tests (tests/data, tests/reduction). Never
+// set it otherwise.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -88,6 +108,8 @@ namespace softchain::data
   // Key of a sample: hash of the design hash and the actuation's canonical text.
   std::string sample_id(const std::string &design_hash, const Actuation &actuation);
 
+  class WriterLock;
+
   class ActuationDatabase
   {
   public:
@@ -95,10 +117,12 @@ namespace softchain::data
     // missing or not a SoftChain database.
     static ActuationDatabase open(const std::string &path);
 
-    // Opens `path` for a sweep. If it holds the same design_hash it is reused
-    // (its samples are a cache); otherwise an existing file is moved aside to
-    // `path.<old hash>.stale` and a new database with `design` and `mesh` is
-    // written.
+    // Opens `path` for a sweep, as its one writer (an InputError naming the
+    // file if another writer has it open). If it holds the same design_hash
+    // it is reused (its samples are a cache); otherwise the existing
+    // database (file and sample directory) is moved aside to
+    // `path.<old hash>.stale` (and `path.<old hash>.stale.samples`) and a new
+    // database with `design` and `mesh` is written.
     static ActuationDatabase open_or_create(const std::string  &path,
                                             const DesignRecord &design,
                                             const MeshRecord   &mesh);
@@ -111,13 +135,19 @@ namespace softchain::data
     std::vector<std::string> sample_ids() const; // sorted
     SampleRecord             read_sample(const std::string &id) const;
 
-    // Writes (or replaces) one sample atomically (write a copy, fsync, rename).
+    // Writes (or replaces) one sample atomically (its own file: write a
+    // temporary, fsync, rename). A database from open() becomes the writer
+    // here (an InputError naming the file if another writer has it open).
     void store_sample(const SampleRecord &sample);
 
   private:
+    // Takes the writer's lock and removes temporaries of interrupted stores.
+    void become_writer(std::shared_ptr<WriterLock> lock);
+
     std::string              path_;
     DesignRecord             design_;
     MeshRecord               mesh_;
     std::vector<std::string> sample_ids_;
+    std::shared_ptr<WriterLock> writer_lock_; // shared by copies; none if only read
   };
 } // namespace softchain::data
