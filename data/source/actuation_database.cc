@@ -103,7 +103,7 @@ namespace softchain::data
     {
       write_attribute(group, "pressure", sample.actuation.pressure, path);
       write_attribute(group, "role", sample.actuation.role, path);
-      write_attribute(group, "status", sample.status, path);
+      write_attribute(group, "status", status_name(sample.status), path);
       write_attribute(group, "reason", sample.reason, path);
       write_attribute(group, "load_factor_reached", sample.load_factor_reached, path);
       write_attribute(group, "newton_iterations", sample.newton_iterations, path);
@@ -135,13 +135,24 @@ namespace softchain::data
       return actuation;
     }
 
+    SampleStatus parse_status(const std::string &text, const std::string &id,
+                              const std::string &path)
+    {
+      for (const auto status :
+           {SampleStatus::converged, SampleStatus::failed, SampleStatus::limit_point})
+        if (text == status_name(status))
+          return status;
+      throw InputError("database '" + path + "': sample '" + id + "' has the unknown status '" + text + "'");
+    }
+
     SampleRecord read_sample_group(hid_t group, const std::string &id, std::size_t n_nodes,
                                    const std::string &path)
     {
       SampleRecord sample;
       sample.id                    = id;
       sample.actuation             = read_actuation(group, id, path);
-      sample.status                = read_string_attribute(group, "status", path);
+      sample.status                = parse_status(read_string_attribute(group, "status", path),
+                                                  id, path);
       sample.reason                = read_string_attribute(group, "reason", path);
       sample.load_factor_reached   = read_double_attribute(group, "load_factor_reached", path);
       sample.newton_iterations     = read_int_attribute(group, "newton_iterations", path);
@@ -228,6 +239,38 @@ namespace softchain::data
     return content_hash("design " + design_hash + "\n" + actuation.canonical_text());
   }
 
+  namespace
+  {
+    // Temporaries of the database file left by a writer killed while
+    // creating it (write_atomically names them <path>.tmp<pid>); removed
+    // only by the writer that holds the lock.
+    void remove_temporaries_of(const std::string &path)
+    {
+      const fs::path    file(path);
+      const std::string prefix = file.filename().string() + ".tmp";
+      const fs::path    directory = file.has_parent_path() ? file.parent_path() : fs::path(".");
+      if (!fs::is_directory(directory))
+        return;
+      for (const auto &entry : fs::directory_iterator(directory))
+        if (entry.path().filename().string().rfind(prefix, 0) == 0)
+          fs::remove(entry.path());
+    }
+  } // namespace
+
+  std::string status_name(const SampleStatus status)
+  {
+    switch (status)
+      {
+        case SampleStatus::converged:
+          return "converged";
+        case SampleStatus::failed:
+          return "failed";
+        case SampleStatus::limit_point:
+          return "limit point";
+      }
+    return "";
+  }
+
   ActuationDatabase ActuationDatabase::open(const std::string &path)
   {
     silence_errors();
@@ -251,6 +294,7 @@ namespace softchain::data
                                                       const MeshRecord   &mesh)
   {
     auto lock = std::make_shared<WriterLock>(path);
+    remove_temporaries_of(path);
     if (fs::exists(path))
       {
         ActuationDatabase existing = open(path);

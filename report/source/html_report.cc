@@ -310,7 +310,7 @@ namespace softchain::report
         const data::SampleRecord &s = *sample;
         total += s.wall_time;
         rows.push_back({s.id, s.actuation.role, fmt(s.actuation.pressure / 1e3),
-                        fmt(largest_force(s.actuation)), s.status, s.reason, std::to_string(s.load_steps),
+                        fmt(largest_force(s.actuation)), data::status_name(s.status), s.reason, std::to_string(s.load_steps),
                         std::to_string(s.newton_iterations), fmt(s.wall_time)});
       }
     page.paragraph("FEM samples in the database (wall time of the solve that stored each; " +

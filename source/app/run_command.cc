@@ -50,6 +50,12 @@ namespace softchain::app
       return status;
     }
 
+    bool ends_with(const std::string &text, const std::string &suffix)
+    {
+      return text.size() >= suffix.size() &&
+             text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+    }
+
     // What an output file is, from its place and name.
     std::string describe(const fs::path &file)
     {
@@ -58,7 +64,13 @@ namespace softchain::app
       if (name == "report.html")
         return "the report: design, deformed finger, stiffness, validation, run times, paper's claims (open in a browser)";
       if (name == "database.h5")
-        return "actuation-deformation database (HDF5): mesh and every sample's deformed nodes";
+        return "actuation-deformation database (HDF5): the design and the mesh";
+      if (dir == "database.h5.samples")
+        return "one sample of the database (HDF5): its load and deformed nodes";
+      if (ends_with(dir, ".stale.samples"))
+        return "one sample of an earlier design's database, moved aside";
+      if (name == "database.h5.lock")
+        return "the database's writer lock (empty)";
       if (ext == ".stale")
         return "database of an earlier design, moved aside";
       if (ext == ".gp")
@@ -82,8 +94,8 @@ namespace softchain::app
       return "output";
     }
 
-    // Every file under `directory`; the per-sample files in vtu/ one line
-    // per kind with their count.
+    // Every file under `directory`; the per-sample files (in vtu/ and the
+    // database's sample directory) one line per kind with their count.
     void list_outputs(const std::string &directory)
     {
       std::vector<fs::path> files;
@@ -92,7 +104,8 @@ namespace softchain::app
           files.push_back(entry.path());
       std::sort(files.begin(), files.end());
       const auto per_sample = [](const fs::path &f) {
-        return f.parent_path().filename() == "vtu" && f.filename() != "samples.pvd";
+        const std::string dir = f.parent_path().filename();
+        return (dir == "vtu" && f.filename() != "samples.pvd") || ends_with(dir, ".samples");
       };
       std::map<std::string, int> count;
       for (const auto &f : files)

@@ -70,7 +70,10 @@ namespace softchain::fem
     data::SampleRecord record;
     record.id                  = sample.id;
     record.actuation           = sample.actuation;
-    record.status              = result.converged ? "converged" : "failed";
+    record.status = result.converged ? data::SampleStatus::converged :
+                    result.failure == QuasiStaticSolver::Failure::limit_point ?
+                                       data::SampleStatus::limit_point :
+                                       data::SampleStatus::failed;
     record.reason              = result.converged ? "" :
                                    result.reason + (start ? " (load path from sample " + start->id + ")" :
                                                             " (load path from rest)");

@@ -66,17 +66,6 @@ namespace softchain::fem
       return {{centre[0], centre[1], centre[2]}, high[2] - low[2]};
     }
 
-    // Temporary copies left by a sweep killed while storing a sample
-    // (data/source/atomic_file.cc names them <database>.tmp<pid>).
-    void remove_leftovers(const std::string &database)
-    {
-      const fs::path    path(database);
-      const std::string prefix = path.filename().string() + ".tmp";
-      for (const auto &entry : fs::directory_iterator(path.parent_path()))
-        if (entry.path().filename().string().rfind(prefix, 0) == 0)
-          fs::remove(entry.path());
-    }
-
     data::DesignRecord design_record(const Parameters &prm, const data::PrmFile &file,
                                      const std::string &hash)
     {
@@ -164,7 +153,6 @@ namespace softchain::fem
       if (rank == 0)
         {
           fs::create_directories(prm.design.output_directory);
-          remove_leftovers(database_path);
           database = data::ActuationDatabase::open_or_create(database_path,
                                                              design_record(prm, prm_file, hash),
                                                              group.mesh());
@@ -275,8 +263,7 @@ namespace softchain::fem
                                                         const Records    &known) const
   {
     const auto before = known_before(sample, known);
-    return !before.empty() && !before.front()->converged() &&
-               before.front()->reason.find("limit point") != std::string::npos ?
+    return !before.empty() && before.front()->status == data::SampleStatus::limit_point ?
              before.front() :
              nullptr;
   }

@@ -21,7 +21,7 @@ namespace softchain::fem
 
   void SweepProgress::cached(const Sample &sample, const data::SampleRecord &record)
   {
-    start_line(sample) << " cached (" << record.status << ")" << std::endl;
+    start_line(sample) << " cached (" << data::status_name(record.status) << ")" << std::endl;
   }
 
   void SweepProgress::solved(const Sample &sample, const data::SampleRecord &record,
@@ -30,7 +30,7 @@ namespace softchain::fem
     ++n_solved;
     solve_time += record.wall_time;
     const double eta = solve_time / n_solved * (n_to_solve - n_solved) / n_groups;
-    start_line(sample) << ' ' << std::setw(9) << record.status << std::setw(4)
+    start_line(sample) << ' ' << std::setw(9) << data::status_name(record.status) << std::setw(4)
                        << record.load_steps << " load steps" << std::setw(4)
                        << record.newton_iterations << " Newton it. " << std::fixed
                        << std::setprecision(2) << std::setw(7) << record.wall_time << " s  ETA "

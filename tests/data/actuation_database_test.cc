@@ -90,11 +90,15 @@ TEST_CASE("database round trip of design, mesh and samples")
   const std::string path = dir.file("finger.h5");
   auto              db   = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
   SampleRecord      failed = sample("h1", 2e4, 0.25);
-  failed.status              = "failed";
+  failed.status              = SampleStatus::failed;
   failed.reason              = "Newton did not converge";
   failed.load_factor_reached = 0.5;
+  SampleRecord limit         = sample("h1", 8e4, 0.75);
+  limit.status               = SampleStatus::limit_point;
+  limit.reason               = "limit point at p = 80000 Pa";
   db.store_sample(sample("h1", 1e4, 0.125));
   db.store_sample(failed);
+  db.store_sample(limit);
 
   const auto again = ActuationDatabase::open(path);
   CHECK(again.design().name == "cube");
@@ -106,7 +110,10 @@ TEST_CASE("database round trip of design, mesh and samples")
   CHECK(again.mesh().base_nodes == cube_mesh().base_nodes);
   CHECK(again.mesh().cells == cube_mesh().cells);
   CHECK(again.mesh().nodes_per_cell == 8);
-  REQUIRE(again.sample_ids().size() == 2);
+  REQUIRE(again.sample_ids().size() == 3);
+  CHECK(again.read_sample(limit.id).status == SampleStatus::limit_point);
+  CHECK(again.read_sample(failed.id).status == SampleStatus::failed);
+  CHECK_FALSE(again.read_sample(failed.id).converged());
   check_equal(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
   const SampleRecord read_failed = again.read_sample(failed.id);
   check_equal(read_failed, failed);
@@ -118,7 +125,7 @@ TEST_CASE("database round trip of design, mesh and samples")
     names.insert(entry.path().filename().string());
   CHECK(names == std::set<std::string>{"finger.h5", "finger.h5.samples", "finger.h5.lock"});
   CHECK(std::distance(std::filesystem::directory_iterator(path + ".samples"),
-                      std::filesystem::directory_iterator()) == 2);
+                      std::filesystem::directory_iterator()) == 3);
 }
 
 TEST_CASE("storing a sample with an existing id replaces it")

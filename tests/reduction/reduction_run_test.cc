@@ -111,7 +111,7 @@ namespace
       store(sample(finger, "lateral", 0, lateral_couple(), arc_about_y(lateral_radius)));
       store(sample(finger, "validation", 3e4, {}, arc_about_z(0.2)));
       data::SampleRecord failed = sample(finger, "pressure", 9e4, {}, arc_about_z(0.05));
-      failed.status             = "failed";
+      failed.status             = data::SampleStatus::failed;
       failed.reason             = "synthetic failure";
       store(failed);
     }
@@ -332,8 +332,8 @@ TEST_CASE("run_reduction on a database built by killed and resumed writers equal
   const std::string prm = write_prm(dir, "  set Joint placement = paper\n"
                                          "  set Joint spacing = 0.01\n"
                                          "  set Methods = M1, M2\n");
-  reduction::ReductionRun(prm, dir.file("whole.h5"), dir.file("whole")).run();
-  reduction::ReductionRun(prm, dir.file("resumed.h5"), dir.file("resumed")).run();
+  reduction::ReductionRun(data::PrmFile::read(prm), dir.file("whole.h5"), dir.file("whole")).run();
+  reduction::ReductionRun(data::PrmFile::read(prm), dir.file("resumed.h5"), dir.file("resumed")).run();
   // The same samples give the same stiffness tables, to the last digit.
   std::size_t n_tables = 0;
   for (const auto &entry : std::filesystem::directory_iterator(dir.file("whole/stiffness")))

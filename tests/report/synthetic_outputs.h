@@ -81,7 +81,7 @@ namespace softchain::report::testing
           s.actuation.pressure = p;
           s.actuation.role     = "pressure";
           s.id                 = data::sample_id("hash", s.actuation);
-          s.status             = p < 50e3 ? "converged" : "failed";
+          s.status             = p < 50e3 ? data::SampleStatus::converged : data::SampleStatus::failed;
           s.reason             = p < 50e3 ? "" : "limit point at p = 55000 Pa";
           s.wall_time          = 1.25;
           for (const auto &X : mesh.X) // bent toward -y

@@ -89,12 +89,24 @@ namespace softchain::data
     std::string canonical_text() const;
   };
 
+  // What became of a sample's solve; stored as the text of status_name().
+  enum class SampleStatus
+  {
+    converged,
+    failed,     // the solver did not reach the sample's load (reason: why)
+    limit_point // pressure control stopped at a physical limit point (dp/dV -> 0),
+                // or the sample lies beyond one on its load path
+  };
+
+  // "converged", "failed" or "limit point".
+  std::string status_name(SampleStatus status);
+
   struct SampleRecord
   {
     std::string id; // sample_id(design_hash, actuation)
     Actuation   actuation;
-    std::string status = "converged"; // or "failed"
-    std::string reason;               // why it failed (empty if converged)
+    SampleStatus status = SampleStatus::converged;
+    std::string  reason; // why it failed (empty if converged)
     double      load_factor_reached = 1.0;
     int         newton_iterations   = 0;
     int         load_steps          = 0;
@@ -102,7 +114,7 @@ namespace softchain::data
     std::vector<Point3> x; // deformed nodes (last converged state if failed)
     std::vector<Point3> force_points_deformed;
 
-    bool converged() const { return status == "converged"; }
+    bool converged() const { return status == SampleStatus::converged; }
   };
 
   // Key of a sample: hash of the design hash and the actuation's canonical text.
