@@ -11,9 +11,11 @@
 #include <fstream>
 #include <set>
 
+#include "check_equal_samples.h"
 #include "scratch_directory.h"
 
 using namespace softchain::data;
+using softchain::testing::check_equal_samples;
 using softchain::testing::ScratchDirectory;
 
 namespace
@@ -52,21 +54,6 @@ namespace
       s.x.push_back({X[0] + shift, X[1], X[2] - shift});
     s.force_points_deformed = {{1.0 + shift, 0.5, 0.5 - shift}};
     return s;
-  }
-
-  void check_equal(const SampleRecord &a, const SampleRecord &b)
-  {
-    CHECK(a.id == b.id);
-    CHECK(a.actuation.canonical_text() == b.actuation.canonical_text());
-    CHECK(a.actuation.role == b.actuation.role);
-    CHECK(a.status == b.status);
-    CHECK(a.reason == b.reason);
-    CHECK(a.load_factor_reached == b.load_factor_reached);
-    CHECK(a.newton_iterations == b.newton_iterations);
-    CHECK(a.load_steps == b.load_steps);
-    CHECK(a.wall_time == b.wall_time);
-    CHECK(a.x == b.x);
-    CHECK(a.force_points_deformed == b.force_points_deformed);
   }
 
   template <typename F>
@@ -114,9 +101,9 @@ TEST_CASE("database round trip of design, mesh and samples")
   CHECK(again.read_sample(limit.id).status == SampleStatus::limit_point);
   CHECK(again.read_sample(failed.id).status == SampleStatus::failed);
   CHECK_FALSE(again.read_sample(failed.id).converged());
-  check_equal(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
+  check_equal_samples(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
   const SampleRecord read_failed = again.read_sample(failed.id);
-  check_equal(read_failed, failed);
+  check_equal_samples(read_failed, failed);
   CHECK_FALSE(read_failed.converged());
   // Nothing but the database, its sample directory with one file per
   // sample and the lock file are left (no temporaries).
@@ -136,7 +123,7 @@ TEST_CASE("storing a sample with an existing id replaces it")
   db.store_sample(sample("h1", 1e4, 0.5)); // same actuation, so same id
   const auto again = ActuationDatabase::open(dir.file("f.h5"));
   REQUIRE(again.sample_ids().size() == 1);
-  check_equal(again.read_sample(again.sample_ids()[0]), sample("h1", 1e4, 0.5));
+  check_equal_samples(again.read_sample(again.sample_ids()[0]), sample("h1", 1e4, 0.5));
 }
 
 TEST_CASE("the same design reuses the stored samples as a cache")
@@ -166,7 +153,7 @@ TEST_CASE("a new design hash moves the old database aside")
   const auto stale = ActuationDatabase::open(dir.file("f.h5.old.stale"));
   CHECK(stale.design().design_hash == "old");
   REQUIRE(stale.sample_ids().size() == 1);
-  check_equal(stale.read_sample(stale.sample_ids()[0]), sample("old", 1e4, 0.125));
+  check_equal_samples(stale.read_sample(stale.sample_ids()[0]), sample("old", 1e4, 0.125));
   // The old samples moved with their database file: none is left beside the new one.
   CHECK(std::filesystem::is_empty(dir.file("f.h5.samples")));
 }
@@ -231,8 +218,8 @@ TEST_CASE("a database in the single-file layout of earlier versions opens and ex
 
   const auto old = ActuationDatabase::open(path);
   REQUIRE(old.sample_ids().size() == 2);
-  check_equal(old.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
-  check_equal(old.read_sample(sample("h1", 2e4, 0.25).id), sample("h1", 2e4, 0.25));
+  check_equal_samples(old.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
+  check_equal_samples(old.read_sample(sample("h1", 2e4, 0.25).id), sample("h1", 2e4, 0.25));
 
   // A sweep of the same design keeps it, adds samples and replaces one
   // (the sample file takes precedence over the copy inside the file).
@@ -241,9 +228,9 @@ TEST_CASE("a database in the single-file layout of earlier versions opens and ex
   db.store_sample(sample("h1", 2e4, 0.5)); // the id of 2e4
   const auto again = ActuationDatabase::open(path);
   REQUIRE(again.sample_ids().size() == 3);
-  check_equal(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
-  check_equal(again.read_sample(sample("h1", 2e4, 0.5).id), sample("h1", 2e4, 0.5));
-  check_equal(again.read_sample(sample("h1", 3e4, 0.375).id), sample("h1", 3e4, 0.375));
+  check_equal_samples(again.read_sample(sample("h1", 1e4, 0.125).id), sample("h1", 1e4, 0.125));
+  check_equal_samples(again.read_sample(sample("h1", 2e4, 0.5).id), sample("h1", 2e4, 0.5));
+  check_equal_samples(again.read_sample(sample("h1", 3e4, 0.375).id), sample("h1", 3e4, 0.375));
 }
 
 TEST_CASE("missing and non-database files give an InputError naming the file")

@@ -19,9 +19,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "check_equal_samples.h"
 #include "scratch_directory.h"
 
 using namespace softchain::data;
+using softchain::testing::check_equal_samples;
 using softchain::testing::ScratchDirectory;
 
 namespace
@@ -65,20 +67,6 @@ namespace
       s.x.push_back({X[0] + k / 7.0, X[1] - k / 11.0, X[2] * (1 + k / 13.0)});
     s.force_points_deformed = {{1.0 + k / 7.0, 0.5, 12.0}};
     return s;
-  }
-
-  // Exact equality: a stored sample must read back bit for bit.
-  void check_equal(const SampleRecord &a, const SampleRecord &b)
-  {
-    CHECK(a.id == b.id);
-    CHECK(a.actuation.canonical_text() == b.actuation.canonical_text());
-    CHECK(a.actuation.role == b.actuation.role);
-    CHECK(a.status == b.status);
-    CHECK(a.newton_iterations == b.newton_iterations);
-    CHECK(a.load_steps == b.load_steps);
-    CHECK(a.wall_time == b.wall_time);
-    CHECK(a.x == b.x);
-    CHECK(a.force_points_deformed == b.force_points_deformed);
   }
 
   // What a sweep does: stores the samples 0..n-1 not yet in the database.
@@ -133,7 +121,7 @@ namespace
     const auto database = ActuationDatabase::open(path);
     REQUIRE(database.sample_ids() == ids_of(0, n));
     for (int k = 0; k < n; ++k)
-      check_equal(database.read_sample(sample(k).id), sample(k));
+      check_equal_samples(database.read_sample(sample(k).id), sample(k));
   }
 } // namespace
 
@@ -193,7 +181,7 @@ TEST_CASE("a second writer gets an error naming the database, readers are let in
       CHECK_THAT(e.what(), Catch::Contains(path) && Catch::Contains("another writer"));
     }
   auto reader = ActuationDatabase::open(path);
-  check_equal(reader.read_sample(sample(0).id), sample(0));
+  check_equal_samples(reader.read_sample(sample(0).id), sample(0));
   CHECK_THROWS_AS(reader.store_sample(sample(1)), InputError); // storing makes it a writer
 
   // Another process is refused as well, and gets in once the first lets go.

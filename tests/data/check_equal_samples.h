@@ -1,0 +1,25 @@
+#pragma once
+// check_equal_samples: every field of two sample records compared exactly,
+// as a stored sample must read back bit for bit (Catch2 CHECKs, so that a
+// failure names the field).
+#include <softchain/data/actuation_database.h>
+
+#include <catch2/catch.hpp>
+
+namespace softchain::testing
+{
+  inline void check_equal_samples(const data::SampleRecord &a, const data::SampleRecord &b)
+  {
+    CHECK(a.id == b.id);
+    CHECK(a.actuation.canonical_text() == b.actuation.canonical_text());
+    CHECK(a.actuation.role == b.actuation.role);
+    CHECK(a.status == b.status);
+    CHECK(a.reason == b.reason);
+    CHECK(a.load_factor_reached == b.load_factor_reached);
+    CHECK(a.newton_iterations == b.newton_iterations);
+    CHECK(a.load_steps == b.load_steps);
+    CHECK(a.wall_time == b.wall_time);
+    CHECK(a.x == b.x);
+    CHECK(a.force_points_deformed == b.force_points_deformed);
+  }
+} // namespace softchain::testing
