@@ -150,13 +150,25 @@ namespace softchain::fem
       SampleGroup group(prm, mesh, group_comm, log);
       group.check_points(set.samples);
       std::optional<data::ActuationDatabase> database;
+      std::string                            open_error;
       if (rank == 0)
-        {
-          fs::create_directories(prm.design.output_directory);
-          database = data::ActuationDatabase::open_or_create(database_path,
-                                                             design_record(prm, prm_file, hash),
-                                                             group.mesh());
-        }
+        try
+          {
+            fs::create_directories(prm.design.output_directory);
+            database = data::ActuationDatabase::open_or_create(database_path,
+                                                               design_record(prm, prm_file, hash),
+                                                               group.mesh());
+          }
+        catch (const data::InputError &e)
+          {
+            open_error = e.what();
+          }
+      // Only rank 0 writes; every rank learns whether it could open the
+      // database (e.g. another sweep is writing it), so that all stop
+      // together instead of waiting for rank 0 in the first round.
+      open_error = Utilities::MPI::broadcast(MPI_COMM_WORLD, open_error, 0);
+      if (!open_error.empty())
+        throw data::InputError(open_error);
       solve_rounds(group, share_of(pending, color, n_groups), database, known, progress);
       group.print_timing();
     }

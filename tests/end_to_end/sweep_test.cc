@@ -9,11 +9,14 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 using softchain::data::ActuationDatabase;
 using softchain::data::Point3;
@@ -353,6 +356,28 @@ TEST_CASE("force points outside the body or malformed samples fail with exit 1 b
       CHECK(malformed.status == 1);
       CHECK(malformed.output.find(message) != std::string::npos);
     }
+}
+
+TEST_CASE("a sweep on a database that another writer holds stops at once on every rank")
+{
+  // flock(1) takes the same advisory lock a writing sweep holds; the sweep,
+  // serial or on 2 MPI ranks, must exit 1 naming the database, not hang
+  // (before, rank 1 waited forever for rank 0's first round).
+  TinyDesign design("sweep_locked", samples); // nothing stored yet: all 6 to solve
+  std::filesystem::create_directories(design.output());
+  const std::string lock   = design.database() + ".lock";
+  const std::string holder = "flock -n " + lock + " sleep 60 & echo $! > " + lock + ".pid";
+  REQUIRE(std::system(holder.c_str()) == 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500)); // the holder has the lock
+  for (const unsigned int ranks : {1u, 2u})
+    {
+      const auto outcome = design.run("sweep", ranks);
+      INFO(ranks << " rank(s): " << outcome.output);
+      CHECK(outcome.status == 1);
+      CHECK(outcome.output.find("another writer has it open") != std::string::npos);
+      CHECK(outcome.output.find("solved") == std::string::npos); // stopped before any solve
+    }
+  std::system(("kill $(cat " + lock + ".pid)").c_str());
 }
 
 TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
