@@ -1,5 +1,6 @@
 // `softchain solve FILE.prm`: one quasi-static solve of the .prm's Loads,
 // written as VTU for ParaView, with a timing summary.
+#include <softchain/fem/base_reaction.h>
 #include <softchain/fem/boundary_average.h>
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/app/commands.h>
@@ -24,15 +25,19 @@ namespace softchain::app
     // significant digits (doubles round-trip), written by rank 0: the
     // machine-readable result that tests compare between runs.
     void write_summary(const std::string &directory, const QuasiStaticSolver::Result &result,
-                       const Tensor<1, 3> &tip, const double cavity_volume)
+                       const Tensor<1, 3> &tip, const double cavity_volume,
+                       const BaseReaction::Wrench &base)
     {
       data::CsvTable summary({"converged", "load_factor", "newton_iterations", "load_steps",
                               "tip_displacement_x", "tip_displacement_y", "tip_displacement_z",
-                              "cavity_volume"});
+                              "cavity_volume", "base_force_x", "base_force_y", "base_force_z",
+                              "base_moment_x", "base_moment_y", "base_moment_z"});
       summary.add_row(std::vector<double>{double(result.converged), result.load_factor_reached,
                                           double(result.newton_iterations),
                                           double(result.load_steps), tip[0], tip[1], tip[2],
-                                          cavity_volume});
+                                          cavity_volume, base.force[0], base.force[1],
+                                          base.force[2], base.moment[0], base.moment[1],
+                                          base.moment[2]});
       summary.write(directory + "/solve_summary.csv");
     }
   } // namespace
@@ -68,8 +73,12 @@ namespace softchain::app
         << " Newton iterations, " << result.wall_time << " s\n"
         << "mean tip displacement [m]: " << tip << '\n';
     const double cavity_volume = solver.pressure_load().cavity_volume(solver.displacement());
+    const BaseReaction         base(solver.space());
+    const BaseReaction::Wrench wrench = base.wrench(solver.support_forces());
+    out << "base wrench (on the support, about the base centroid " << base.centroid()
+        << "): force [N] " << wrench.force << ", moment [N m] " << wrench.moment << '\n';
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_summary(prm.design.output_directory, result, tip, cavity_volume);
+      write_summary(prm.design.output_directory, result, tip, cavity_volume, wrench);
     if (prm.output.write_vtu)
       {
         TimerOutput::Scope timer_section(solver.timer(), "output");

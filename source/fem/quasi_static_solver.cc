@@ -136,7 +136,8 @@ namespace softchain::fem
     u_ghosted = u_owned;
   }
 
-  bool QuasiStaticSolver::assemble_cells(const bool with_matrix, const double gravity_factor)
+  bool QuasiStaticSolver::assemble_cells(const bool with_matrix, const double gravity_factor,
+                                         const AffineConstraints<double> &constraints)
   {
     const FiniteElementSpace        &s = *fe_space;
     const FEValuesExtractors::Vector displacement(0);
@@ -201,9 +202,9 @@ namespace softchain::fem
       if (copy.inverted)
         inverted = true;
       else if (with_matrix)
-        s.fixed_dofs.distribute_local_to_global(copy.matrix, copy.rhs, copy.dofs, matrix, rhs);
+        constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.dofs, matrix, rhs);
       else
-        s.fixed_dofs.distribute_local_to_global(copy.rhs, copy.dofs, rhs);
+        constraints.distribute_local_to_global(copy.rhs, copy.dofs, rhs);
     };
 
     using CellFilter = FilteredIterator<DoFHandler<3>::active_cell_iterator>;
@@ -213,7 +214,8 @@ namespace softchain::fem
     return !Utilities::MPI::logical_or(inverted.load(), s.communicator);
   }
 
-  void QuasiStaticSolver::assemble_point_loads(const std::vector<PointLoad> &point_loads)
+  void QuasiStaticSolver::assemble_point_loads(const std::vector<PointLoad>  &point_loads,
+                                               const AffineConstraints<double> &constraints)
   {
     std::vector<Point<3>> points;
     for (const auto &l : point_loads)
@@ -226,11 +228,26 @@ namespace softchain::fem
           Vector<double> local(stencil.dof.size());
           for (unsigned int i = 0; i < stencil.dof.size(); ++i)
             local(i) = stencil.weight[i] * point_loads[k].force[stencil.component[i]];
-          fe_space->fixed_dofs.distribute_local_to_global(local, stencil.dof, rhs);
+          constraints.distribute_local_to_global(local, stencil.dof, rhs);
         }
   }
 
   bool QuasiStaticSolver::assemble(const LoadState &state, const bool with_matrix)
+  {
+    return assemble_with(state, with_matrix, fe_space->fixed_dofs);
+  }
+
+  const TrilinosWrappers::MPI::Vector &QuasiStaticSolver::support_forces()
+  {
+    // The next Newton iteration assembles anew: rhs and f_ext_norm may change here.
+    AffineConstraints<double> none;
+    none.close();
+    assemble_with(load, false, none);
+    return rhs;
+  }
+
+  bool QuasiStaticSolver::assemble_with(const LoadState &state, const bool with_matrix,
+                                        const AffineConstraints<double> &constraints)
   {
     TimerOutput::Scope timer_section(computing_timer, "assembly");
     if (with_matrix)
@@ -238,18 +255,18 @@ namespace softchain::fem
     rhs = 0;
     // External loads first: their norm scales the convergence test.
     if (state.pressure != 0.0 && pressure->has_cavity())
-      pressure->assemble(u_ghosted, state.pressure, fe_space->fixed_dofs,
-                         with_matrix ? &matrix : nullptr, rhs);
+      pressure->assemble(u_ghosted, state.pressure, constraints, with_matrix ? &matrix : nullptr,
+                         rhs);
     if (!state.point_loads.empty())
-      assemble_point_loads(state.point_loads);
+      assemble_point_loads(state.point_loads, constraints);
     if (state.tip_traction.norm() > 0)
-      tip_traction->assemble(state.tip_traction, fe_space->fixed_dofs, rhs);
+      tip_traction->assemble(state.tip_traction, constraints, rhs);
     rhs.compress(VectorOperation::add);
     f_ext_norm = rhs.l2_norm();
 
-    const bool valid = assemble_cells(with_matrix, state.gravity_factor);
+    const bool valid = assemble_cells(with_matrix, state.gravity_factor, constraints);
     if (springs)
-      springs->assemble(u_ghosted, fe_space->fixed_dofs, with_matrix ? &matrix : nullptr, rhs);
+      springs->assemble(u_ghosted, constraints, with_matrix ? &matrix : nullptr, rhs);
     if (with_matrix)
       matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);

@@ -20,7 +20,7 @@ for design in p10 p13 parallelepiped; do
   printf 'subsection Solver\n  set Residual tolerance = 1e-4\n  set Displacement tolerance = 1e-4\nend\nsubsection Output\n  set Write VTU = false\n  set Verbose = false\nend\n' >> "$prm"
   start=$(date +%s)
   "$softchain" solve "$prm" > "$design.log" 2>&1 || { cat "$design.log"; echo "FAIL: $design did not solve"; exit 1; }
-  IFS=, read -r converged factor newton steps ux uy uz volume < <(tail -1 "out-$design/solve_summary.csv")
+  IFS=, read -r converged factor newton steps ux uy uz volume base_wrench < <(tail -1 "out-$design/solve_summary.csv")
   echo "$design: converged=$converged tip u_y=$uy m, $newton Newton iterations, $(( $(date +%s) - start )) s"
   [ "$converged" = 1 ] || { echo "FAIL: $design did not converge"; exit 1; }
   awk -v u="$uy" 'BEGIN { exit !(u < -1e-3) }' || { echo "FAIL: $design does not bend toward -y"; exit 1; }

@@ -79,6 +79,10 @@ namespace softchain::fem
     // Assembles rhs = -R(u) (and K = dR/du when with_matrix) at `state`.
     // Returns false if some quadrature point has J <= 0.
     bool assemble(const LoadState &state, bool with_matrix);
+    // rhs = f_ext - f_int at the current state with no Dirichlet constraint:
+    // at the clamped DoFs it then holds the forces the finger exerts on its
+    // supports (BaseReaction), elsewhere the equilibrium residual.
+    const dealii::TrilinosWrappers::MPI::Vector &support_forces();
     const dealii::TrilinosWrappers::SparseMatrix &tangent() const { return matrix; }
     const dealii::TrilinosWrappers::MPI::Vector  &negative_residual() const { return rhs; }
     const FollowerPressure              &pressure_load() const { return *pressure; }
@@ -109,8 +113,12 @@ namespace softchain::fem
     double                         f_ext_norm = 0.0;
 
     void setup_system();
-    bool assemble_cells(bool with_matrix, double gravity_factor);
-    void assemble_point_loads(const std::vector<PointLoad> &point_loads);
+    bool assemble_with(const LoadState &state, bool with_matrix,
+                       const dealii::AffineConstraints<double> &constraints);
+    bool assemble_cells(bool with_matrix, double gravity_factor,
+                        const dealii::AffineConstraints<double> &constraints);
+    void assemble_point_loads(const std::vector<PointLoad>         &point_loads,
+                              const dealii::AffineConstraints<double> &constraints);
     bool solve_linear(); // false if the linear solver failed
 
     struct NewtonOutcome
