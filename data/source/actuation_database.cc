@@ -119,6 +119,7 @@ namespace softchain::data
       write_points(group, "forces", forces, path);
       write_points(group, "force_points_deformed", sample.force_points_deformed, path);
       write_points(group, "x", sample.x, path);
+      write_points(group, "base_wrench", {sample.base_force, sample.base_moment}, path);
     }
 
     Actuation read_actuation(hid_t group, const std::string &id, const std::string &path)
@@ -160,6 +161,13 @@ namespace softchain::data
       sample.wall_time             = read_double_attribute(group, "wall_time", path);
       sample.force_points_deformed = read_points(group, "force_points_deformed", path);
       sample.x                     = read_points(group, "x", path);
+      if (H5Lexists(group, "base_wrench", H5P_DEFAULT) > 0)
+        {
+          const auto wrench = read_points(group, "base_wrench", path);
+          require(wrench.size() == 2, path, "sample '" + id + "': base_wrench needs 2 rows");
+          sample.base_force  = wrench[0];
+          sample.base_moment = wrench[1];
+        }
       require(sample.x.size() == n_nodes, path,
               "sample '" + id + "': x has " + std::to_string(sample.x.size()) +
                 " rows, the mesh has " + std::to_string(n_nodes) + " nodes");

@@ -29,7 +29,7 @@ namespace boost::serialization
   void serialize(Archive &archive, softchain::data::SampleRecord &s, const unsigned int)
   {
     archive &s.id &s.status &s.reason &s.load_factor_reached &s.newton_iterations &s.load_steps
-      &s.wall_time &s.x &s.force_points_deformed;
+      &s.wall_time &s.x &s.force_points_deformed &s.base_force &s.base_moment;
   }
 } // namespace boost::serialization
 

@@ -53,6 +53,8 @@ namespace
     for (const auto &X : cube_mesh().X)
       s.x.push_back({X[0] + shift, X[1], X[2] - shift});
     s.force_points_deformed = {{1.0 + shift, 0.5, 0.5 - shift}};
+    s.base_force            = {0.0, -0.25, 0.0};
+    s.base_moment           = {0.0, 0.0, -0.25 * (1.0 + shift)};
     return s;
   }
 
@@ -203,6 +205,23 @@ namespace
     std::filesystem::remove_all(path + ".samples");
   }
 } // namespace
+
+TEST_CASE("a sample stored without a base wrench reads it as NaN")
+{
+  // Databases written before the base wrench was stored have no dataset.
+  ScratchDirectory  dir("db_no_wrench");
+  const std::string path = dir.file("f.h5");
+  auto              db   = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  db.store_sample(sample("h1", 1e4, 0.125));
+  const std::string file = path + ".samples/" + sample("h1", 1e4, 0.125).id + ".h5";
+  const hid_t       h5   = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(H5Ldelete(h5, "base_wrench", H5P_DEFAULT) >= 0);
+  H5Fclose(h5);
+  const SampleRecord read = ActuationDatabase::open(path).read_sample(sample("h1", 1e4, 0.125).id);
+  for (int c = 0; c < 3; ++c)
+    CHECK((std::isnan(read.base_force[c]) && std::isnan(read.base_moment[c])));
+  CHECK(read.x == sample("h1", 1e4, 0.125).x);
+}
 
 TEST_CASE("a database in the single-file layout of earlier versions opens and extends")
 {

@@ -21,5 +21,7 @@ namespace softchain::testing
     CHECK(a.wall_time == b.wall_time);
     CHECK(a.x == b.x);
     CHECK(a.force_points_deformed == b.force_points_deformed);
+    CHECK(a.base_force == b.base_force);
+    CHECK(a.base_moment == b.base_moment);
   }
 } // namespace softchain::testing

@@ -66,6 +66,8 @@ namespace
     for (const auto &X : column_mesh().X)
       s.x.push_back({X[0] + k / 7.0, X[1] - k / 11.0, X[2] * (1 + k / 13.0)});
     s.force_points_deformed = {{1.0 + k / 7.0, 0.5, 12.0}};
+    s.base_force            = {0.0, -0.01 * k, 0.0};
+    s.base_moment           = {0.12 * k, 0.0, -0.01 * k * (1.0 + k / 7.0)};
     return s;
   }
 

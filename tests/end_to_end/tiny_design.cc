@@ -45,7 +45,8 @@ namespace softchain::testing
            a.actuation.role == b.actuation.role,
          "actuation"},
         {a.x == b.x, "x"},
-        {a.force_points_deformed == b.force_points_deformed, "force_points_deformed"}};
+        {a.force_points_deformed == b.force_points_deformed, "force_points_deformed"},
+        {a.base_force == b.base_force && a.base_moment == b.base_moment, "base wrench"}};
       for (const auto &[same, name] : fields)
         if (!same)
           return "sample " + a.id + ": " + name + " differs";

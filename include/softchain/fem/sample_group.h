@@ -3,6 +3,7 @@
 // sweep): one QuasiStaticSolver on the group's ranks, its DatabaseExport, and
 // the solve of one sample starting from rest or from a stored converged
 // neighbour (continuation).
+#include <softchain/fem/base_reaction.h>
 #include <softchain/fem/database_export.h>
 #include <softchain/fem/finger_mesh.h>
 #include <softchain/fem/quasi_static_solver.h>
@@ -46,6 +47,7 @@ namespace softchain::fem
     Parameters        prm;
     QuasiStaticSolver solver;
     DatabaseExport    nodes;
+    BaseReaction      base; // each sample's base wrench
     const double      initial_load_step;
 
     // The first load factor of a solve from `start` to `target`: the .prm's

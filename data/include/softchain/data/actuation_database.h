@@ -22,7 +22,10 @@
 //                         status, reason, load_factor_reached,
 //                         newton_iterations, load_steps, wall_time
 //                         datasets: force_points (m,3), forces (m,3),
-//                         force_points_deformed (m,3), x (N,3)
+//                         force_points_deformed (m,3), x (N,3),
+//                         base_wrench (2,3): the force and the moment the
+//                         finger exerts on its base (about the base face's
+//                         centroid); absent in older databases (read as NaN)
 //   PATH.lock             empty; a writer holds an advisory lock on it
 // The database file is written once (atomically) when the database is
 // created; each sample file is written to a temporary, fsync'ed and renamed
@@ -42,6 +45,7 @@
 // inside a store for the crash tests (tests/data, tests/reduction). Never
 // set it otherwise.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -113,6 +117,11 @@ namespace softchain::data
     double      wall_time           = 0.0; // s
     std::vector<Point3> x; // deformed nodes (last converged state if failed)
     std::vector<Point3> force_points_deformed;
+    // The force [N] and moment [N m] the finger exerts on its clamped base,
+    // about the base face's centroid, world axes (NaN in databases written
+    // before it was stored).
+    Point3 base_force  = {NAN, NAN, NAN};
+    Point3 base_moment = {NAN, NAN, NAN};
 
     bool converged() const { return status == SampleStatus::converged; }
   };
