@@ -10,6 +10,12 @@ namespace softchain::fem
     state.pressure       = (1 - s) * start.pressure + s * target.pressure;
     state.gravity_factor = (1 - s) * start.gravity_factor + s * target.gravity_factor;
     state.tip_traction   = (1 - s) * start.tip_traction + s * target.tip_traction;
+    if (target.tip_motion)
+      {
+        const TipMotion from = start.tip_motion.value_or(TipMotion());
+        state.tip_motion     = TipMotion{(1 - s) * from.translation + s * target.tip_motion->translation,
+                                     (1 - s) * from.rotation + s * target.tip_motion->rotation};
+      }
     // Forces at the same point blend; a point present at one end only ramps
     // from or to zero.
     auto add = [&state](const PointLoad &load, const double factor) {

@@ -188,6 +188,10 @@ namespace softchain::fem
     section.declare("Point loads", "", "x,y,z : fx,fy,fz ; ... (reference point [m] : force [N])");
     section.declare("Tip traction", "0,0,0", "tx,ty,tz [N/m^2]: dead traction on the tip face");
     section.declare("Gravity", "false", "-9.81 m/s^2 along y");
+    section.declare("Tip motion", "",
+                    "tx,ty,tz : rx,ry,rz -- a rigid motion of the tip face about its centre, "
+                    "translation [m] and rotation vector [rad], applied after the other loads "
+                    "(relative to that state); empty: the tip is free");
   }
 
   void LoadParameters::parse(const data::PrmSection &section)
@@ -195,6 +199,17 @@ namespace softchain::fem
     pressure     = section.get_double("Pressure");
     gravity      = section.get_bool("Gravity");
     tip_traction = parse_triple(section.get("Tip traction"), section.describe("Tip traction"));
+    const std::string motion = section.get("Tip motion");
+    prescribe_tip            = !trim(motion).empty();
+    if (prescribe_tip)
+      {
+        const auto colon = motion.find(':');
+        if (colon == std::string::npos)
+          throw data::InputError(section.describe("Tip motion") + ": '" + trim(motion) +
+                                 "' needs the form tx,ty,tz : rx,ry,rz");
+        tip_translation = parse_triple(motion.substr(0, colon), section.describe("Tip motion"));
+        tip_rotation    = parse_triple(motion.substr(colon + 1), section.describe("Tip motion"));
+      }
     point_loads.clear();
     std::stringstream in(section.get("Point loads"));
     std::string       item;

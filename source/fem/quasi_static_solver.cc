@@ -234,7 +234,8 @@ namespace softchain::fem
 
   bool QuasiStaticSolver::assemble(const LoadState &state, const bool with_matrix)
   {
-    return assemble_with(state, with_matrix, fe_space->fixed_dofs);
+    return assemble_with(state, with_matrix,
+                         active_constraints ? *active_constraints : fe_space->fixed_dofs);
   }
 
   const TrilinosWrappers::MPI::Vector &QuasiStaticSolver::support_forces()
@@ -324,14 +325,15 @@ namespace softchain::fem
             return false;
           }
       }
-    s.fixed_dofs.distribute(du);
+    (active_constraints ? *active_constraints : s.fixed_dofs).distribute(du);
     return std::isfinite(du.l2_norm());
   }
 
   bool QuasiStaticSolver::converged(const double residual, const double update) const
   {
     const double u_norm = u_owned.l2_norm();
-    return residual <= prm.solver.residual_tolerance * std::max(f_ext_norm, 1e-300) &&
+    const double scale  = std::max({f_ext_norm, motion_residual_scale, 1e-300});
+    return residual <= prm.solver.residual_tolerance * scale &&
            update <= prm.solver.displacement_tolerance * std::max(u_norm, 1e-300);
   }
 
@@ -369,6 +371,23 @@ namespace softchain::fem
     return false;
   }
 
+  // A solve to a target with a tip motion holds the tip DoFs; the motion is
+  // relative to the state where it was first prescribed (anchored there).
+  void QuasiStaticSolver::prepare_tip_motion(const LoadState &target)
+  {
+    motion_residual_scale = 0.0;
+    if (!target.tip_motion)
+      {
+        active_constraints = &fe_space->fixed_dofs;
+        return;
+      }
+    if (!prescribed_tip)
+      prescribed_tip = std::make_unique<PrescribedTip>(*fe_space);
+    if (!load.tip_motion)
+      prescribed_tip->anchor(u_owned);
+    active_constraints = &prescribed_tip->constraints();
+  }
+
   QuasiStaticSolver::NewtonOutcome QuasiStaticSolver::newton(const LoadState &state,
                                                              Result          &result)
   {
@@ -381,6 +400,8 @@ namespace softchain::fem
         if (!valid)
           return {false, true, it};
         const double residual = rhs.l2_norm();
+        if (it == 0 && state.tip_motion && motion_residual_scale == 0.0)
+          motion_residual_scale = residual;
         result.residual_history.push_back(residual);
         if (!std::isfinite(residual))
           return {false, false, it};
@@ -411,6 +432,7 @@ namespace softchain::fem
     const auto start_time = std::chrono::steady_clock::now();
     Result     result;
     const LoadState start = load;
+    prepare_tip_motion(target);
     double     s = 0.0, s_previous = 0.0, step = prm.solver.initial_load_step;
     bool       last_inverted = false;
     // (pressure, cavity volume) of converged states, to tell a limit point.
@@ -424,6 +446,11 @@ namespace softchain::fem
           {
             u_owned.add((s_try - s) / (s - s_previous), u_converged);
             u_owned.add(-(s_try - s) / (s - s_previous), u_before);
+            u_ghosted = u_owned;
+          }
+        if (state.tip_motion) // the tip where the motion puts it, held there by Newton
+          {
+            prescribed_tip->apply(*state.tip_motion, u_owned);
             u_ghosted = u_owned;
           }
         const auto outcome = newton(state, result);

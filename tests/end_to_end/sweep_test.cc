@@ -379,7 +379,10 @@ TEST_CASE("a sweep on a database that another writer holds stops at once on ever
   TinyDesign design("sweep_locked", samples); // nothing stored yet: all 6 to solve
   std::filesystem::create_directories(design.output());
   const std::string lock   = design.database() + ".lock";
-  const std::string holder = "flock -n " + lock + " sleep 60 & echo $! > " + lock + ".pid";
+  // In a session of its own with no terminal output, so that ctest does not
+  // wait for it and one kill of its process group ends it and its sleep.
+  const std::string holder = "setsid flock -n " + lock + " sleep 60 < /dev/null > /dev/null 2>&1 & "
+                             "echo $! > " + lock + ".pid";
   REQUIRE(std::system(holder.c_str()) == 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(500)); // the holder has the lock
   for (const unsigned int ranks : {1u, 2u})
@@ -390,7 +393,7 @@ TEST_CASE("a sweep on a database that another writer holds stops at once on ever
       CHECK(outcome.output.find("another writer has it open") != std::string::npos);
       CHECK(outcome.output.find("solved") == std::string::npos); // stopped before any solve
     }
-  std::system(("kill $(cat " + lock + ".pid)").c_str());
+  CHECK(std::system(("kill -- -$(cat " + lock + ".pid)").c_str()) == 0);
 }
 
 TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")

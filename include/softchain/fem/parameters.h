@@ -84,6 +84,11 @@ namespace softchain::fem
     std::vector<PointLoad> point_loads;
     dealii::Tensor<1, 3>   tip_traction; // N/m^2, dead load on `tip`
     bool                   gravity = false;
+    // A rigid motion of the tip face, applied after the other loads
+    // (relative to that state): translation [m] and rotation vector [rad].
+    bool                   prescribe_tip = false;
+    dealii::Tensor<1, 3>   tip_translation;
+    dealii::Tensor<1, 3>   tip_rotation;
     static void declare(data::PrmSection &section);
     void        parse(const data::PrmSection &section);
   };

@@ -14,6 +14,7 @@
 #include <softchain/fem/hyperelastic_material.h>
 #include <softchain/fem/load_state.h>
 #include <softchain/fem/parameters.h>
+#include <softchain/fem/prescribed_tip.h>
 #include <softchain/fem/serial_direct_solver.h>
 
 #include <deal.II/base/timer.h>
@@ -102,6 +103,12 @@ namespace softchain::fem
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     dealii::TimerOutput                                         computing_timer;
     std::unique_ptr<SerialDirectSolver>                 serial_direct; // UMFPACK, one rank
+    std::unique_ptr<PrescribedTip>                      prescribed_tip; // built at the first tip motion
+    // fe_space->fixed_dofs, or those and the tip DoFs while a tip motion is prescribed.
+    const dealii::AffineConstraints<double>            *active_constraints = nullptr;
+    // Residual scale of a solve whose loads may all be prescribed motion
+    // (f_ext = 0): the residual right after the first step moved the tip.
+    double                                              motion_residual_scale = 0.0;
 
     dealii::TrilinosWrappers::SparseMatrix matrix;
     dealii::TrilinosWrappers::MPI::Vector  rhs;       // writable ghosts
@@ -128,6 +135,7 @@ namespace softchain::fem
       unsigned int iterations;
     };
     NewtonOutcome newton(const LoadState &state, Result &result);
+    void          prepare_tip_motion(const LoadState &target);
     bool          converged(double residual, double update) const;
     bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
