@@ -3,11 +3,7 @@
 #include <softchain/fem/boundary_ids.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/component_mask.h>
 #include <deal.II/fe/fe_values.h>
-
-#include <map>
 
 namespace softchain::fem
 {
@@ -45,27 +41,15 @@ namespace softchain::fem
 
   BaseReaction::BaseReaction(const FiniteElementSpace &space)
     : communicator(space.communicator)
+    , owned_base_dofs(owned_boundary_dofs(space, boundary::base))
     , centroid_(base_centroid(space))
-  {
-    std::map<types::global_dof_index, Point<3>> support_points;
-    DoFTools::map_dofs_to_support_points(*space.mapping, space.dof_handler, support_points);
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        std::vector<bool> mask(3, false);
-        mask[c] = true;
-        const IndexSet base =
-          DoFTools::extract_boundary_dofs(space.dof_handler, ComponentMask(mask), {boundary::base});
-        for (const auto index : base)
-          if (space.owned_dofs.is_element(index))
-            owned_base_dofs.push_back({index, c, support_points.at(index)});
-      }
-  }
+  {}
 
   BaseReaction::Wrench
   BaseReaction::wrench(const TrilinosWrappers::MPI::Vector &support_forces) const
   {
     Wrench w;
-    for (const BaseDof &dof : owned_base_dofs)
+    for (const BoundaryDof &dof : owned_base_dofs)
       {
         Tensor<1, 3> f;
         f[dof.component] = support_forces[dof.index];

@@ -7,7 +7,6 @@
 #include <deal.II/fe/component_mask.h>
 
 #include <cmath>
-#include <map>
 
 namespace softchain::fem
 {
@@ -29,25 +28,15 @@ namespace softchain::fem
 
   PrescribedTip::PrescribedTip(const FiniteElementSpace &space)
     : communicator(space.communicator)
+    , owned_tip_dofs(owned_boundary_dofs(space, boundary::tip))
   {
-    std::map<types::global_dof_index, Point<3>> support_points;
-    DoFTools::map_dofs_to_support_points(*space.mapping, space.dof_handler, support_points);
-    IndexSet all_tip(space.dof_handler.n_dofs());
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        std::vector<bool> mask(3, false);
-        mask[c] = true;
-        const IndexSet tip =
-          DoFTools::extract_boundary_dofs(space.dof_handler, ComponentMask(mask), {boundary::tip});
-        all_tip.add_indices(tip);
-        for (const auto index : tip)
-          if (space.owned_dofs.is_element(index))
-            owned_tip_dofs.push_back({index, c, support_points.at(index)});
-      }
     if (Utilities::MPI::sum(owned_tip_dofs.size(), communicator) == 0)
       throw data::InputError("a prescribed tip motion needs the mesh's physical group 'tip'");
     held.reinit(space.relevant_dofs);
-    for (const auto index : all_tip)
+    // Every relevant tip DoF (ghosts too, so that each rank's constraints
+    // hold the DoFs its cells touch).
+    for (const auto index :
+         DoFTools::extract_boundary_dofs(space.dof_handler, ComponentMask(), {boundary::tip}))
       if (space.relevant_dofs.is_element(index) && !space.fixed_dofs.is_constrained(index))
         held.add_line(index);
     held.merge(space.fixed_dofs, AffineConstraints<double>::left_object_wins);
@@ -59,12 +48,12 @@ namespace softchain::fem
     anchored.clear();
     Tensor<1, 3> sum;
     double       n = 0;
-    for (const TipDof &dof : owned_tip_dofs)
+    for (const BoundaryDof &dof : owned_tip_dofs)
       {
         // The node's position: X plus its three displacement components,
         // found among the DoFs at the same support point.
         Point<3> y = dof.support_point;
-        for (const TipDof &other : owned_tip_dofs)
+        for (const BoundaryDof &other : owned_tip_dofs)
           if (other.support_point.distance(dof.support_point) < 1e-12)
             y[other.component] += u[other.index];
         anchored.push_back(y);
@@ -81,7 +70,7 @@ namespace softchain::fem
   {
     for (std::size_t k = 0; k < owned_tip_dofs.size(); ++k)
       {
-        const TipDof      &dof    = owned_tip_dofs[k];
+        const BoundaryDof &dof    = owned_tip_dofs[k];
         const Tensor<1, 3> target = centre_ + rotate(motion.rotation, anchored[k] - centre_) +
                                     motion.translation;
         owned_u[dof.index] = target[dof.component] - dof.support_point[dof.component];

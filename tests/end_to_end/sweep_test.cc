@@ -379,7 +379,7 @@ TEST_CASE("a sweep on a database that another writer holds stops at once on ever
   TinyDesign design("sweep_locked", samples); // nothing stored yet: all 6 to solve
   std::filesystem::create_directories(design.output());
   const std::string lock   = design.database() + ".lock";
-  // In a session of its own with no terminal output, so that ctest does not
+  // In a process group of its own (setsid) with no terminal output, so that ctest does not
   // wait for it and one kill of its process group ends it and its sleep.
   const std::string holder = "setsid flock -n " + lock + " sleep 60 < /dev/null > /dev/null 2>&1 & "
                              "echo $! > " + lock + ".pid";

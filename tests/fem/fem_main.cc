@@ -1,5 +1,5 @@
 // Catch2 main of the FEM-tier tests: MPI (and deal.II's thread pool) set up
-// around the test session, so the same tests run under mpirun.
+// around the Catch2 run, so the same tests run under mpirun.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 

@@ -10,6 +10,7 @@
 // World axes are the base frame. At equilibrium the internal forces cancel
 // over the body, so F and M equal the resultant of the external loads (for a
 // closed cavity the follower pressure has none).
+#include <softchain/fem/boundary_dofs.h>
 #include <softchain/fem/finite_element_space.h>
 
 #include <deal.II/base/point.h>
@@ -40,14 +41,8 @@ namespace softchain::fem
     const dealii::Point<3> &centroid() const { return centroid_; }
 
   private:
-    struct BaseDof
-    {
-      dealii::types::global_dof_index index;
-      unsigned int                    component;
-      dealii::Point<3>                support_point;
-    };
-    MPI_Comm             communicator;
-    std::vector<BaseDof> owned_base_dofs;
+    MPI_Comm                 communicator;
+    std::vector<BoundaryDof> owned_base_dofs;
     dealii::Point<3>     centroid_;
   };
 } // namespace softchain::fem

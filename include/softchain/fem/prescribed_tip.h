@@ -9,6 +9,7 @@
 // angle, Rodrigues), t the translation. The tip DoFs are set to the motion
 // at each load step and held there by homogeneous constraints during Newton;
 // their reactions are the contact wrench.
+#include <softchain/fem/boundary_dofs.h>
 #include <softchain/fem/finite_element_space.h>
 
 #include <deal.II/base/point.h>
@@ -45,14 +46,8 @@ namespace softchain::fem
     const dealii::Point<3> &centre() const { return centre_; }
 
   private:
-    struct TipDof
-    {
-      dealii::types::global_dof_index index;
-      unsigned int                    component;
-      dealii::Point<3>                support_point; // reference X
-    };
     MPI_Comm                          communicator;
-    std::vector<TipDof>               owned_tip_dofs;
+    std::vector<BoundaryDof>          owned_tip_dofs;
     std::vector<dealii::Point<3>>     anchored; // per owned tip DoF: its node's y
     dealii::Point<3>                  centre_;
     dealii::AffineConstraints<double> held;
