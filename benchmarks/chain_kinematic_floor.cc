@@ -11,7 +11,7 @@
 // Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5]
 #include <softchain/chain/angle_units.h>
 #include <softchain/chain/kinematic_chain.h>
-#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/neutral_layer.h>
@@ -38,7 +38,7 @@ namespace
   // J_1,0: the share of the floor that the base's deformation (proximal to
   // joint 1) causes.
   Floor floor_of(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
-                 const chain::TipPoseFit &tip_fit, const data::MeshRecord &mesh,
+                 const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh,
                  bool moving_base = false)
   {
     const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
@@ -55,12 +55,12 @@ namespace
     const chain::KinematicChain chain(centres, tip_fit.reference_centroid());
     chain::ChainPose            pose = chain.rest_pose();
     chain.update_pose(q, pose);
-    const chain::TipPose  fem = tip_fit.fit(chain::select_nodes(sample.x, mesh.tip_nodes));
+    const data::TipPose  fem = tip_fit.fit(data::select_nodes(sample.x, mesh.tip_nodes));
     const Eigen::Vector3d base_shift =
       moving_base ? Eigen::Vector3d(geometry.deformed_centre(0, frames, sample.x) - centres[0])
                   : Eigen::Vector3d::Zero();
     return {(pose.tip_position + base_shift - fem.position).norm(),
-            chain::rotation_angle_between(pose.link_rotations.back(), fem.rotation)};
+            data::rotation_angle_between(pose.link_rotations.back(), fem.rotation)};
   }
 } // namespace
 
@@ -105,7 +105,7 @@ int main(int argc, char **argv)
       placements.push_back({"strain-limiting layer", {layout, body, layer.height(), fraction * a}});
       const std::size_t layer_index = placements.size() - 1;
 
-      const chain::TipPoseFit tip_fit = chain::TipPoseFit::of_mesh(mesh, argv[1]);
+      const data::TipPoseFit tip_fit = data::TipPoseFit::of_mesh(mesh, argv[1]);
       std::printf("\ntip error of the chain driven by the FEM's M2 rotations (b = %.2f a), "
                   "%% of L = %.1f mm / deg\n\n",
                   fraction, 1e3 * length);

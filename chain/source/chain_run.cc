@@ -4,7 +4,7 @@
 #include <softchain/chain/chain_validation.h>
 #include <softchain/chain/mjcf_export.h>
 #include <softchain/chain/stiffness_files.h>
-#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/tip_pose_fit.h>
 #include <softchain/chain/validation_plot.h>
 #include <softchain/data/input_error.h>
 
@@ -164,7 +164,7 @@ namespace softchain::chain
     validation.fem_tip_table().write(chain_dir + "/fem_tip_poses.csv");
 
     std::vector<ChainModel> models = read_models(
-      stiffness_dir, p, TipPoseFit::of_mesh(mesh, database.path()).reference_centroid());
+      stiffness_dir, p, data::TipPoseFit::of_mesh(mesh, database.path()).reference_centroid());
     const ChainModel        selected =
       *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
     if (export_mjcf)

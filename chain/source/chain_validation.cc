@@ -64,7 +64,7 @@ namespace softchain::chain
     : finger_length_(finger_length)
   {
     const data::MeshRecord &mesh = database.mesh();
-    const TipPoseFit        fit  = TipPoseFit::of_mesh(mesh, database.path());
+    const data::TipPoseFit  fit  = data::TipPoseFit::of_mesh(mesh, database.path());
     for (const std::string &id : database.sample_ids())
       {
         const data::SampleRecord sample = database.read_sample(id);
@@ -72,7 +72,7 @@ namespace softchain::chain
         if (!sample.converged() || std::find(roles.begin(), roles.end(), role) == roles.end())
           continue;
         samples_.push_back({id, role, load_of(sample.actuation),
-                            fit.fit(select_nodes(sample.x, mesh.tip_nodes))});
+                            fit.fit(data::select_nodes(sample.x, mesh.tip_nodes))});
       }
     // Grouped by role, then by increasing load: the order of the table and plot.
     std::stable_sort(samples_.begin(), samples_.end(), [](const FemSample &a, const FemSample &b) {
@@ -97,11 +97,11 @@ namespace softchain::chain
             const ChainPose &pose = solver.pose();
             r.position_error      = (pose.tip_position - s.tip.position).norm();
             r.orientation_error =
-              rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
+              data::rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
             r.tip_position       = pose.tip_position;
             r.joint_positions    = pose.joint_positions;
             r.tip_rotation_angle =
-              rotation_angle_between(Eigen::Matrix3d::Identity(), pose.link_rotations.back());
+              data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.link_rotations.back());
           }
         records_.push_back(r);
       }
@@ -151,7 +151,7 @@ namespace softchain::chain
                        CsvTable::cell(1e3 * s.tip.position.y()),
                        CsvTable::cell(1e3 * s.tip.position.z()),
                        CsvTable::cell(degrees(std::atan2(R(1, 0), R(0, 0)))),
-                       CsvTable::cell(degrees(rotation_angle_between(Eigen::Matrix3d::Identity(), R)))});
+                       CsvTable::cell(degrees(data::rotation_angle_between(Eigen::Matrix3d::Identity(), R)))});
       }
     return table;
   }

@@ -1,11 +1,32 @@
 #include <softchain/chain/tip_constrained_equilibrium.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 
 #include <stdexcept>
 
 namespace softchain::chain
 {
+  Eigen::MatrixXd angular_jacobian(const ChainPose &pose)
+  {
+    const int       n_joints = static_cast<int>(pose.joint_axes.size());
+    Eigen::MatrixXd W(3, 3 * n_joints);
+    for (int i = 0; i < n_joints; ++i)
+      W.middleCols(3 * i, 3) = pose.joint_axes[i];
+    return W;
+  }
+
+  Eigen::MatrixXd dead_couple_stiffness(const ChainPose &pose, const Eigen::Vector3d &m)
+  {
+    const Eigen::MatrixXd W = angular_jacobian(pose);
+    const int             n = static_cast<int>(W.cols());
+    Eigen::MatrixXd       G = Eigen::MatrixXd::Zero(n, n);
+    for (int j = 0; j < n; ++j)
+      for (int l = 0; l < j; ++l) // (l, beta) before (j, alpha) in q's order
+        G(j, l) = Eigen::Vector3d(W.col(l)).cross(Eigen::Vector3d(W.col(j))).dot(m);
+    return G;
+  }
+
   TipConstrainedEquilibrium::TipConstrainedEquilibrium(const ChainModel         &model,
                                                        const EquilibriumSettings settings)
     : model_(model)
@@ -45,10 +66,19 @@ namespace softchain::chain
                                                           const Eigen::Vector3d &tip_target,
                                                           const Eigen::VectorXd &start)
   {
+    return solve(load, TipTarget{tip_target, std::nullopt}, start);
+  }
+
+  ConstrainedEquilibrium TipConstrainedEquilibrium::solve(const ChainLoad       &load,
+                                                          const TipTarget       &target,
+                                                          const Eigen::VectorXd &start)
+  {
     const int n = model_.chain().n_angles();
-    if (start.size() != n || !start.allFinite() || !tip_target.allFinite())
+    const int m = target.rotation ? 6 : 3; // constraints
+    if (start.size() != n || !start.allFinite() || !target.position.allFinite() ||
+        (target.rotation && !target.rotation->allFinite()))
       throw std::invalid_argument(
-        "TipConstrainedEquilibrium: start needs 3 finite angles per joint, the target 3 finite "
+        "TipConstrainedEquilibrium: start needs 3 finite angles per joint, the target finite "
         "coordinates");
     const double length = (model_.chain().tip() - model_.chain().joint_centre(0)).norm();
     ConstrainedEquilibrium result;
@@ -56,13 +86,25 @@ namespace softchain::chain
     for (;; ++result.iterations)
       {
         equilibrium_.set_load(with_contact(load, result.contact_force));
-        const Eigen::VectorXd r = equilibrium_.residual(result.angles);
-        const Eigen::Vector3d c = pose().tip_position - tip_target;
-        const Eigen::MatrixXd J = tip_jacobian();
-        const double          scale =
-          residual_scale(load, result.angles, J.transpose() * result.contact_force);
+        Eigen::VectorXd       r = equilibrium_.residual(result.angles);
+        Eigen::VectorXd       c(m);
+        Eigen::MatrixXd       C(m, n); // the constraints' Jacobian [J; W]
+        c.head<3>()      = pose().tip_position - target.position;
+        C.topRows(3)     = tip_jacobian();
+        Eigen::VectorXd contact_torque = C.topRows(3).transpose() * result.contact_force;
+        if (target.rotation)
+          {
+            const Eigen::AngleAxisd error(pose().link_rotations.back() * target.rotation->transpose());
+            c.tail<3>()      = error.angle() * error.axis();
+            C.bottomRows(3)  = angular_jacobian(pose());
+            const Eigen::VectorXd couple_torque = C.bottomRows(3).transpose() * result.contact_moment;
+            r -= couple_torque;
+            contact_torque += couple_torque;
+          }
+        const double scale = residual_scale(load, result.angles, contact_torque);
         if (r.lpNorm<Eigen::Infinity>() <= settings_.tolerance * scale &&
-            c.lpNorm<Eigen::Infinity>() <= settings_.tolerance * length)
+            c.head<3>().lpNorm<Eigen::Infinity>() <= settings_.tolerance * length &&
+            c.tail(m - 3).lpNorm<Eigen::Infinity>() <= settings_.tolerance)
           break;
         if (result.iterations == settings_.max_iterations)
           {
@@ -70,11 +112,13 @@ namespace softchain::chain
                              std::to_string(settings_.max_iterations) + " Newton iterations";
             break;
           }
-        Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + 3, n + 3);
-        kkt.topLeftCorner(n, n)     = equilibrium_.tangent(result.angles);
-        kkt.topRightCorner(n, 3)    = -J.transpose();
-        kkt.bottomLeftCorner(3, n)  = J;
-        Eigen::VectorXd right(n + 3);
+        Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + m, n + m);
+        kkt.topLeftCorner(n, n) = equilibrium_.tangent(result.angles);
+        if (target.rotation)
+          kkt.topLeftCorner(n, n) -= dead_couple_stiffness(pose(), result.contact_moment);
+        kkt.topRightCorner(n, m)   = -C.transpose();
+        kkt.bottomLeftCorner(m, n) = C;
+        Eigen::VectorXd right(n + m);
         right << -r, -c;
         Eigen::VectorXd step = kkt.completeOrthogonalDecomposition().solve(right);
         // The same cap as the free equilibrium: no angle moves by more than
@@ -83,7 +127,9 @@ namespace softchain::chain
         if (largest > settings_.max_step_angle)
           step *= settings_.max_step_angle / largest;
         result.angles += step.head(n);
-        result.contact_force += step.tail<3>();
+        result.contact_force += step.segment<3>(n);
+        if (target.rotation)
+          result.contact_moment += step.tail<3>();
       }
     result.converged = result.failure.empty();
     return result;

@@ -120,6 +120,8 @@ namespace softchain::data
       write_points(group, "force_points_deformed", sample.force_points_deformed, path);
       write_points(group, "x", sample.x, path);
       write_points(group, "base_wrench", {sample.base_force, sample.base_moment}, path);
+      if (const auto &motion = sample.actuation.tip_motion)
+        write_points(group, "tip_motion", {motion->translation, motion->rotation}, path);
     }
 
     Actuation read_actuation(hid_t group, const std::string &id, const std::string &path)
@@ -133,6 +135,12 @@ namespace softchain::data
               "sample '" + id + "': force_points and forces differ in length");
       for (std::size_t k = 0; k < points.size(); ++k)
         actuation.point_forces.push_back({points[k], forces[k]});
+      if (H5Lexists(group, "tip_motion", H5P_DEFAULT) > 0)
+        {
+          const auto motion = read_points(group, "tip_motion", path);
+          require(motion.size() == 2, path, "sample '" + id + "': tip_motion needs 2 rows");
+          actuation.tip_motion = TipMotion{motion[0], motion[1]};
+        }
       return actuation;
     }
 
@@ -237,6 +245,14 @@ namespace softchain::data
           text += " " + canonical(v);
         for (const double v : f.force)
           text += " " + canonical(v);
+        text += "\n";
+      }
+    if (tip_motion) // absent: the text (and so the id) of a free-tip sample as before
+      {
+        text += "tip motion";
+        for (const auto &v : {tip_motion->translation, tip_motion->rotation})
+          for (const double c : v)
+            text += " " + canonical(c);
         text += "\n";
       }
     return text;

@@ -223,6 +223,39 @@ TEST_CASE("a sample stored without a base wrench reads it as NaN")
   CHECK(read.x == sample("h1", 1e4, 0.125).x);
 }
 
+TEST_CASE("a prescribed tip motion is part of the sample's id and reads back")
+{
+  ScratchDirectory  dir("db_tip_motion");
+  const std::string path  = dir.file("f.h5");
+  auto              db    = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  const SampleRecord free = sample("h1", 1e4, 0.125);
+  SampleRecord       held = free;
+  held.actuation.role       = "protocol";
+  held.actuation.tip_motion = TipMotion{{0.0, 0.0, 0.01}, {0.0, 0.0, 0.0}};
+  held.id                   = sample_id("h1", held.actuation);
+  // A moved tip is another sample; a zero motion still differs from a free
+  // tip (the tip is held), and the free sample's text is the one it had
+  // before tip motions existed.
+  CHECK(held.id != free.id);
+  SampleRecord zero         = held;
+  zero.actuation.tip_motion = TipMotion{};
+  CHECK(sample_id("h1", zero.actuation) != free.id);
+  CHECK(free.actuation.canonical_text().find("tip motion") == std::string::npos);
+  SampleRecord turned = held;
+  turned.actuation.tip_motion->rotation = {0.1, 0.0, 0.0};
+  CHECK(sample_id("h1", turned.actuation) != held.id);
+
+  db.store_sample(free);
+  db.store_sample(held);
+  const auto again = ActuationDatabase::open(path);
+  check_equal_samples(again.read_sample(held.id), held);
+  const auto motion = again.read_sample(held.id).actuation.tip_motion;
+  REQUIRE(motion);
+  CHECK(motion->translation == held.actuation.tip_motion->translation);
+  CHECK(motion->rotation == held.actuation.tip_motion->rotation);
+  CHECK_FALSE(again.read_sample(free.id).actuation.tip_motion);
+}
+
 TEST_CASE("a database in the single-file layout of earlier versions opens and extends")
 {
   ScratchDirectory  dir("db_single_file");

@@ -8,7 +8,7 @@
 // Summaries per model and sample role (and over all roles): max and mean.
 // Each record also keeps the chain's tip pose and the wall time of its solve.
 #include <softchain/chain/chain_equilibrium.h>
-#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 
@@ -64,7 +64,7 @@ namespace softchain::chain
     {
       std::string id, role;
       ChainLoad   load;
-      TipPose     tip;
+      data::TipPose tip;
     };
 
     std::vector<FemSample>        samples_;

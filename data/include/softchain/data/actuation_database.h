@@ -22,6 +22,9 @@
 //                         status, reason, load_factor_reached,
 //                         newton_iterations, load_steps, wall_time
 //                         datasets: force_points (m,3), forces (m,3),
+//                         tip_motion (2,3), only if the tip is moved: the
+//                         translation [m] and rotation vector [rad] of the
+//                         tip face (Actuation::tip_motion),
 //                         force_points_deformed (m,3), x (N,3),
 //                         base_wrench (2,3): the force and the moment the
 //                         finger exerts on its base (about the base face's
@@ -48,6 +51,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,16 +84,29 @@ namespace softchain::data
     Point3 force; // dead load, world axes
   };
 
+  // A rigid motion prescribed to the tip face (the paper's validation, Sec.
+  // IV-B), relative to the equilibrium at the same pressure without it: the
+  // face is turned by the rotation vector `rotation` (axis times angle)
+  // about its centre and moved by `translation`, world axes.
+  struct TipMotion
+  {
+    Point3 translation = {0.0, 0.0, 0.0}; // m
+    Point3 rotation    = {0.0, 0.0, 0.0}; // rad
+  };
+
   struct Actuation
   {
     double                  pressure = 0.0; // Pa
     std::vector<PointForce> point_forces;
+    std::optional<TipMotion> tip_motion; // none: the tip is free
     // What the sample is for: "pressure" (k_phi), "lateral" (k_theta),
-    // "torsion" (k_psi), "validation" (never used for extraction), or a
-    // user's name.
+    // "torsion" (k_psi), "validation" (never used for extraction),
+    // "protocol inflation" and "protocol" (the prescribed-motion protocol:
+    // its inflated state and its tip motions), or a user's name.
     std::string role;
 
-    // Canonical text of the actuation (pressure, points, forces; not role).
+    // Canonical text of the actuation (pressure, points, forces, tip motion;
+    // not role).
     std::string canonical_text() const;
   };
 

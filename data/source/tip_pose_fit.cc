@@ -1,4 +1,4 @@
-#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/input_error.h>
 
 #include <Eigen/LU>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace softchain::chain
+namespace softchain::data
 {
   namespace
   {
@@ -35,21 +35,21 @@ namespace softchain::chain
       throw std::invalid_argument("TipPoseFit: need at least 3 tip nodes, not all on a line");
   }
 
-  TipPoseFit TipPoseFit::of_mesh(const data::MeshRecord &mesh, const std::string &source)
+  TipPoseFit TipPoseFit::of_mesh(const MeshRecord &mesh, const std::string &source)
   {
     if (mesh.tip_nodes.empty())
-      throw data::InputError(source + ": /mesh/tip_nodes is empty: no tip face for the chain");
+      throw InputError(source + ": /mesh/tip_nodes is empty: no tip face for the chain");
     return TipPoseFit(select_nodes(mesh.X, mesh.tip_nodes));
   }
 
-  std::vector<Eigen::Vector3d> select_nodes(const std::vector<data::Point3>  &x,
+  std::vector<Eigen::Vector3d> select_nodes(const std::vector<Point3>  &x,
                                             const std::vector<std::int64_t> &indices)
   {
     std::vector<Eigen::Vector3d> nodes;
     for (const std::int64_t i : indices)
       {
         if (i < 0 || i >= static_cast<std::int64_t>(x.size()))
-          throw data::InputError("node index " + std::to_string(i) + " out of range (" +
+          throw InputError("node index " + std::to_string(i) + " out of range (" +
                                  std::to_string(x.size()) + " nodes)");
         nodes.emplace_back(x[i][0], x[i][1], x[i][2]);
       }
@@ -80,4 +80,4 @@ namespace softchain::chain
     const Eigen::Vector3d axial(r(2, 1) - r(1, 2), r(0, 2) - r(2, 0), r(1, 0) - r(0, 1));
     return std::atan2(0.5 * axial.norm(), 0.5 * (r.trace() - 1.0));
   }
-} // namespace softchain::chain
+} // namespace softchain::data

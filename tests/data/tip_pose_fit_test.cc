@@ -1,11 +1,11 @@
 // The FEM tip frame fitted to coplanar tip nodes, and rotation angles.
-#include <softchain/chain/tip_pose_fit.h>
+#include <softchain/data/tip_pose_fit.h>
 
 #include <Eigen/Geometry>
 
 #include <catch2/catch.hpp>
 
-using namespace softchain::chain;
+using namespace softchain::data;
 
 namespace
 {

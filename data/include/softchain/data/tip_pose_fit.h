@@ -1,5 +1,6 @@
 #pragma once
-// TipPoseFit: the FEM tip frame, fitted to the nodes of the tip face.
+// TipPoseFit: the FEM tip frame, fitted to the nodes of the tip face (the
+// chain tier's validation and the FEM tier's prescribed-motion protocol).
 // Position: centroid of the deformed tip nodes. Rotation: the best-fit
 // rotation of the centred reference onto the centred deformed nodes,
 //   R = argmin sum_j |(x_j - x_c) - R (X_j - X_c)|^2        (Kabsch, 1976)
@@ -12,7 +13,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace softchain::chain
+namespace softchain::data
 {
   struct TipPose
   {
@@ -27,7 +28,7 @@ namespace softchain::chain
     explicit TipPoseFit(const std::vector<Eigen::Vector3d> &reference_nodes);
     // The tip face of a database mesh (/mesh/tip_nodes); InputError naming
     // `source` if it has none.
-    static TipPoseFit of_mesh(const data::MeshRecord &mesh, const std::string &source);
+    static TipPoseFit of_mesh(const MeshRecord &mesh, const std::string &source);
 
     const Eigen::Vector3d &reference_centroid() const { return centroid_; }
     // Pose of the same nodes, deformed (same count and order).
@@ -39,9 +40,9 @@ namespace softchain::chain
   };
 
   // The nodes `indices` of the positions x (e.g. a sample's tip nodes).
-  std::vector<Eigen::Vector3d> select_nodes(const std::vector<data::Point3>  &x,
+  std::vector<Eigen::Vector3d> select_nodes(const std::vector<Point3>  &x,
                                             const std::vector<std::int64_t> &indices);
 
   // Angle of the rotation that takes `a` to `b` (rad, in [0, pi]).
   double rotation_angle_between(const Eigen::Matrix3d &a, const Eigen::Matrix3d &b);
-} // namespace softchain::chain
+} // namespace softchain::data
