@@ -3,6 +3,8 @@
 #include <softchain/chain/chain_run.h>
 #include <softchain/chain/chain_validation.h>
 #include <softchain/chain/mjcf_export.h>
+#include <softchain/chain/protocol_plot.h>
+#include <softchain/chain/protocol_torques.h>
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/chain/validation_plot.h>
@@ -146,6 +148,37 @@ namespace softchain::chain
       report(validation, directory);
       return validation.n_failed(p.method);
     }
+
+    // The paper's validation experiment, if the database holds its samples:
+    // base torque traces and their errors per model (tables, plot, lines).
+    void compare_protocol(const std::vector<ChainModel> &models,
+                          const data::ActuationDatabase &database, const ChainParameters &p,
+                          const std::string &directory)
+    {
+      ProtocolTorques protocol(database);
+      if (protocol.empty())
+        return;
+      for (const ChainModel &model : models)
+        protocol.compare(model, p.newton);
+      protocol.trace_table().write(directory + "/protocol_torques.csv");
+      const data::CsvTable summary = protocol.summary_table();
+      summary.write(directory + "/protocol_summary.csv");
+      if (!ProtocolPlot(directory, protocol.models()).draw())
+        std::cout << "chain: gnuplot missing or failed, protocol_torques.png not drawn\n";
+      const auto precision = std::cout.precision(3);
+      for (std::size_t r = 0; r < summary.n_rows(); r += 3)
+        {
+          std::cout << "chain: tip-motion protocol at " << protocol.pressure() << " Pa, "
+                    << summary.text(r, "model") << ": base torque RMS error";
+          for (std::size_t c = r; c < r + 3; ++c)
+            std::cout << (c > r ? ", " : " ") << summary.text(c, "torque") << " "
+                      << summary.number(c, "rms_error_percent_range") << " %";
+          std::cout << " of the FEM's range\n";
+        }
+      std::cout.precision(precision);
+      for (const std::string &failure : protocol.failures())
+        std::cerr << "chain: protocol: " << failure << "\n";
+    }
   } // namespace
 
   int run_chain(const data::PrmFile &prm, const std::string &database_path,
@@ -170,6 +203,8 @@ namespace softchain::chain
     if (export_mjcf)
       export_model(selected, database, chain_dir + "/finger.xml", p.newton);
     models.push_back(baseline_of(selected, mesh, p.baseline_youngs_modulus));
-    return validate(models, validation, p, chain_dir) > 0 ? 2 : 0;
+    const int failed = validate(models, validation, p, chain_dir);
+    compare_protocol(models, database, p, chain_dir);
+    return failed > 0 ? 2 : 0;
   }
 } // namespace softchain::chain

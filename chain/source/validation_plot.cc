@@ -41,12 +41,16 @@ namespace softchain::chain
     return s.str();
   }
 
-  bool ValidationPlot::draw() const
+  bool run_gnuplot(const std::string &script_path, const std::string &script)
   {
-    const std::string path = directory_ + "/validation.gp";
-    std::ofstream(path) << script();
+    std::ofstream(script_path) << script;
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
       return false;
-    return std::system(("gnuplot \"" + path + "\" > /dev/null 2>&1").c_str()) == 0;
+    return std::system(("gnuplot \"" + script_path + "\" > /dev/null 2>&1").c_str()) == 0;
+  }
+
+  bool ValidationPlot::draw() const
+  {
+    return run_gnuplot(directory_ + "/validation.gp", script());
   }
 } // namespace softchain::chain

@@ -20,6 +20,7 @@ namespace softchain::data
       {"Output", "FEM", false},
       {"Finger design", "geometry", false},
       {"Samples", "FEM sample sweep", false},
+      {"Protocol", "FEM sample sweep (the validation protocol)", false},
       {"Reduction", "reduction", false},
       {"Chain", "chain", false}};
     return table;

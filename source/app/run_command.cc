@@ -89,6 +89,9 @@ namespace softchain::app
         return name == "validation.csv" ? "chain vs FEM tip pose per sample and model" :
                name == "validation_summary.csv" ? "tip errors per model and role" :
                name == "fem_tip_poses.csv" ? "FEM tip position and bending angle per sample" :
+               name == "protocol_torques.csv" ? "base torques over the tip-motion protocol, FEM and chains" :
+               name == "protocol_summary.csv" ? "base torque errors of the protocol per model" :
+               name == "protocol_torques.png" ? "plot of the protocol's base torques" :
                ext == ".xml" ? "MuJoCo (MJCF) model of the chain" :
                ext == ".png" ? "validation plot" : "chain validation output";
       return "output";

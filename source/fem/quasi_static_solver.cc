@@ -371,6 +371,13 @@ namespace softchain::fem
     return false;
   }
 
+  void QuasiStaticSolver::anchor_tip_motion()
+  {
+    if (!prescribed_tip)
+      prescribed_tip = std::make_unique<PrescribedTip>(*fe_space);
+    prescribed_tip->anchor(u_owned);
+  }
+
   // A solve to a target with a tip motion holds the tip DoFs; the motion is
   // relative to the state where it was first prescribed (anchored there).
   void QuasiStaticSolver::prepare_tip_motion(const LoadState &target)
@@ -381,10 +388,8 @@ namespace softchain::fem
         active_constraints = &fe_space->fixed_dofs;
         return;
       }
-    if (!prescribed_tip)
-      prescribed_tip = std::make_unique<PrescribedTip>(*fe_space);
     if (!load.tip_motion)
-      prescribed_tip->anchor(u_owned);
+      anchor_tip_motion();
     active_constraints = &prescribed_tip->constraints();
   }
 

@@ -1,7 +1,10 @@
 #include <softchain/fem/sample_group.h>
 #include <softchain/fem/solution_output.h>
 
+#include <softchain/data/input_error.h>
+
 #include <algorithm>
+#include <cmath>
 
 namespace softchain::fem
 {
@@ -24,7 +27,19 @@ namespace softchain::fem
       for (const auto &f : actuation.point_forces)
         load.point_loads.push_back({Point<3>(f.point[0], f.point[1], f.point[2]),
                                     Point<3>(f.force[0], f.force[1], f.force[2])});
+      if (const auto &m = actuation.tip_motion)
+        load.tip_motion = TipMotion{Tensor<1, 3>({m->translation[0], m->translation[1], m->translation[2]}),
+                                    Tensor<1, 3>({m->rotation[0], m->rotation[1], m->rotation[2]})};
       return load;
+    }
+
+    // |t| + |theta| of a tip motion [mixed units: one of them grows along a
+    // protocol chain]; 0 without one.
+    double motion_size(const std::optional<data::TipMotion> &m)
+    {
+      return m ? std::hypot(m->translation[0], m->translation[1], m->translation[2]) +
+                   std::hypot(m->rotation[0], m->rotation[1], m->rotation[2]) :
+                 0.0;
     }
   } // namespace
 
@@ -39,6 +54,18 @@ namespace softchain::fem
 
   double SampleGroup::first_step(const data::Actuation *start, const data::Actuation &target) const
   {
+    if (target.tip_motion) // from the anchor (no motion) or the previous motion
+      {
+        data::TipMotion increment = *target.tip_motion;
+        if (start && start->tip_motion)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              increment.translation[c] -= start->tip_motion->translation[c];
+              increment.rotation[c] -= start->tip_motion->rotation[c];
+            }
+        const double step = motion_size(increment);
+        return step > 0 ? std::min(1.0, initial_load_step * motion_size(target.tip_motion) / step) : 1.0;
+      }
     if (!start || start->point_forces.size() != target.point_forces.size())
       return initial_load_step;
     data::Actuation increment = target; // the forces at the same points, in chain order
@@ -60,8 +87,16 @@ namespace softchain::fem
   }
 
   data::SampleRecord SampleGroup::solve(const Sample &sample, const data::SampleRecord *start,
-                                        const unsigned int index)
+                                        const data::SampleRecord *anchor, const unsigned int index)
   {
+    if (sample.actuation.tip_motion)
+      {
+        if (!anchor)
+          throw data::InputError("sample '" + sample.label + "' (" + sample.id +
+                                 "): a tip motion needs the equilibrium it starts from");
+        solver.set_state(nodes.displacement(anchor->x), load_of(anchor->actuation));
+        solver.anchor_tip_motion();
+      }
     if (start)
       solver.set_state(nodes.displacement(start->x), load_of(start->actuation));
     else

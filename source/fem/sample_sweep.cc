@@ -9,6 +9,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <Eigen/Core>
+
 #include <boost/serialization/array.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
@@ -92,50 +94,163 @@ namespace softchain::fem
     FingerMesh::build(prm, mesh);
     hash = design_hash(prm, mesh);
     set  = SampleSet::read(prm_file, tip_face(mesh.triangulation, file.path()), hash);
+    protocol = TipMotionProtocol::read(prm_file, hash);
   }
 
-  SampleSweep::Records SampleSweep::read_cached() const
+  void SampleSweep::read_cached(const std::vector<std::size_t> &indices, Records &known) const
   {
-    Records known;
     if (!fs::exists(database_path))
-      return known;
+      return;
     const auto database = data::ActuationDatabase::open(database_path);
     if (database.design().design_hash != hash)
-      return known;
-    for (std::size_t i = 0; i < set.samples.size(); ++i)
+      return;
+    for (const std::size_t i : indices)
       if (database.has_sample(set.samples[i].id))
         known[i] = database.read_sample(set.samples[i].id);
-    return known;
   }
 
   SampleSweep::Summary SampleSweep::run()
   {
-    Records known = read_cached();
-    MPI_Barrier(MPI_COMM_WORLD); // all have read before rank 0 may replace the file
-    std::vector<std::size_t> pending;
-    for (std::size_t i = 0; i < set.samples.size(); ++i)
-      if (known.count(i) == 0)
-        pending.push_back(i);
-    const unsigned int n_groups =
-      std::min(set.sample_groups, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-    std::ostream  silent(nullptr);
-    SweepProgress progress(world_rank() == 0 ? std::cout : silent, set.samples.size(),
-                           pending.size(), n_groups);
-    for (const auto &[i, record] : known)
-      progress.cached(set.samples[i], record);
-    if (!pending.empty())
-      solve_pending(pending, known, progress, n_groups);
-
-    Summary summary{set.samples.size(), set.samples.size() - pending.size(), pending.size(), {},
-                    database_path};
+    Records                  known;
+    Summary                  summary{0, 0, 0, {}, database_path};
+    std::vector<std::size_t> listed(set.samples.size());
+    std::iota(listed.begin(), listed.end(), 0);
+    solve_missing(listed, known, summary);
+    if (protocol.enabled())
+      if (const auto failure = run_protocol(known, summary); !failure.empty())
+        summary.failed.push_back(failure);
     if (world_rank() == 0)
       for (const auto &[i, record] : known)
         if (!record.converged())
           summary.failed.push_back(set.samples[i].label + " (" + record.id + "): " + record.reason);
     summary.failed = Utilities::MPI::broadcast(MPI_COMM_WORLD, summary.failed, 0);
-    if (prm.output.write_vtu && world_rank() == 0 && !pending.empty())
+    if (prm.output.write_vtu && world_rank() == 0 && summary.n_solved > 0)
       write_series();
     return summary;
+  }
+
+  // The samples `indices` (increasing) from the database, or solved.
+  void SampleSweep::solve_missing(const std::vector<std::size_t> &indices, Records &known,
+                                  Summary &summary) const
+  {
+    read_cached(indices, known);
+    MPI_Barrier(MPI_COMM_WORLD); // all have read before rank 0 may replace the file
+    std::vector<std::size_t> pending;
+    for (const std::size_t i : indices)
+      if (known.count(i) == 0)
+        pending.push_back(i);
+    const unsigned int n_groups =
+      std::min(set.sample_groups, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    std::ostream  silent(nullptr);
+    SweepProgress progress(world_rank() == 0 ? std::cout : silent, indices.size(), pending.size(),
+                           n_groups);
+    for (const std::size_t i : indices)
+      if (known.count(i) > 0)
+        progress.cached(set.samples[i], known.at(i));
+    if (!pending.empty())
+      solve_pending(pending, known, progress, n_groups);
+    summary.n_samples += indices.size();
+    summary.n_cached += indices.size() - pending.size();
+    summary.n_solved += pending.size();
+  }
+
+  // The paper's validation protocol (TipMotionProtocol): the inflation to the
+  // tip angle, then the tip motions from there. Returns why it could not be
+  // run (empty if it ran; its samples' failures are reported as any other).
+  std::string SampleSweep::run_protocol(Records &known, Summary &summary)
+  {
+    const bool root = world_rank() == 0;
+    const auto inflated = inflate_to_tip_angle(known, summary);
+    if (!inflated.second.empty())
+      return inflated.second;
+    // The tip frame of the inflated finger, from rank 0 to all.
+    std::vector<double> frame(9);
+    if (root)
+      {
+        const auto tip = tip_pose(known.at(inflated.first));
+        std::copy(tip.rotation.data(), tip.rotation.data() + 9, frame.begin());
+      }
+    frame = Utilities::MPI::broadcast(MPI_COMM_WORLD, frame, 0);
+    data::TipPose tip;
+    tip.rotation = Eigen::Map<const Eigen::Matrix3d>(frame.data());
+    std::vector<std::size_t> added;
+    for (const auto &chain : protocol.motions(known.at(inflated.first).actuation, tip))
+      {
+        set.chains.push_back({inflated.first});
+        for (const auto &sample : chain)
+          {
+            set.chains.back().push_back(set.samples.size());
+            added.push_back(set.samples.size());
+            set.samples.push_back(sample);
+          }
+      }
+    if (root)
+      std::cout << "protocol: " << added.size() << " tip motions from sample "
+                << set.samples[inflated.first].label << std::endl;
+    solve_missing(added, known, summary);
+    return "";
+  }
+
+  // Secant steps on the tip angle over the pressure (TipMotionProtocol),
+  // each trial a sample continued from the nearest lower pressure-only
+  // equilibrium. Returns the index of the sample that reached the angle, or
+  // why none did. Rank 0 decides; the others follow its broadcasts.
+  std::pair<std::size_t, std::string> SampleSweep::inflate_to_tip_angle(Records &known,
+                                                                        Summary &summary)
+  {
+    const bool root = world_rank() == 0;
+    std::vector<TipMotionProtocol::Trial> trials{{0.0, 0.0}};
+    std::map<double, std::size_t>         sample_at; // pressure-only samples by pressure
+    const auto                            add_trial = [&](const std::size_t i) {
+      const auto &record = known.at(i);
+      sample_at[record.actuation.pressure] = i;
+      if (root)
+        trials.push_back({record.actuation.pressure,
+                          record.converged() ? TipMotionProtocol::tip_angle_of(tip_pose(record)) : NAN});
+    };
+    for (const auto &[i, record] : known)
+      if (record.actuation.point_forces.empty() && !record.actuation.tip_motion)
+        add_trial(i);
+    for (unsigned int n = 0;; ++n)
+      {
+        double hit = NAN, next = NAN;
+        if (root)
+          {
+            if (const auto reached = protocol.reached(trials))
+              hit = reached->pressure;
+            else
+              next = protocol.next_pressure(trials);
+          }
+        hit  = Utilities::MPI::broadcast(MPI_COMM_WORLD, hit, 0);
+        next = Utilities::MPI::broadcast(MPI_COMM_WORLD, next, 0);
+        if (std::isfinite(hit))
+          return {sample_at.at(hit), ""};
+        if (n == protocol.max_trials() || sample_at.count(next) > 0)
+          return {0, "protocol: the inflation did not reach the " + protocol.target_text() +
+                       " in " + std::to_string(n) + " trials (see the protocol inflation samples)"};
+        const std::size_t index = set.samples.size();
+        set.samples.push_back(protocol.inflation(next));
+        set.chains.emplace_back();
+        const auto below = std::find_if(sample_at.rbegin(), sample_at.rend(), [&](const auto &s) {
+          return s.first < next && known.at(s.second).converged();
+        });
+        if (below != sample_at.rend())
+          set.chains.back().push_back(below->second);
+        set.chains.back().push_back(index);
+        solve_missing({index}, known, summary);
+        add_trial(index);
+      }
+  }
+
+  // The tip pose of a sample (rank 0: the database's mesh).
+  data::TipPose SampleSweep::tip_pose(const data::SampleRecord &record)
+  {
+    if (!tip_fit)
+      {
+        tip_mesh = data::ActuationDatabase::open(database_path).mesh();
+        tip_fit  = data::TipPoseFit::of_mesh(tip_mesh, database_path);
+      }
+    return tip_fit->fit(data::select_nodes(record.x, tip_mesh.tip_nodes));
   }
 
   void SampleSweep::solve_pending(const std::vector<std::size_t> &pending, Records &known,
@@ -192,7 +307,8 @@ namespace softchain::fem
           {
             const std::size_t i    = mine[r];
             const auto       *stop = stopped_before(i, known);
-            known[i] = stop ? beyond_limit_point(i, *stop) : group.solve(set.samples[i], start_of(i, known), i);
+            known[i] = stop ? beyond_limit_point(i, *stop) :
+                              group.solve(set.samples[i], start_of(i, known), anchor_of(i, known), i);
             if (group.leader())
               outcome.push_back(known[i]);
           }
@@ -265,6 +381,20 @@ namespace softchain::fem
   {
     for (const auto *record : known_before(sample, known))
       if (record->converged())
+        return record;
+    return nullptr;
+  }
+
+  // The equilibrium a sample's tip motion is relative to: the nearest
+  // converged sample before it in its chain without one (nullptr for a
+  // sample without tip motion).
+  const data::SampleRecord *SampleSweep::anchor_of(const std::size_t sample,
+                                                   const Records    &known) const
+  {
+    if (!set.samples[sample].actuation.tip_motion)
+      return nullptr;
+    for (const auto *record : known_before(sample, known))
+      if (record->converged() && !record->actuation.tip_motion)
         return record;
     return nullptr;
   }

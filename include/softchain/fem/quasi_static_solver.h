@@ -77,6 +77,10 @@ namespace softchain::fem
       set_displacement(owned_u);
       load = state;
     }
+    // Takes the current state as the one that later tip motions are relative
+    // to (PrescribedTip::anchor); a solve from a state without tip motion
+    // anchors there by itself, a restart from a moved state needs this first.
+    void anchor_tip_motion();
     // Assembles rhs = -R(u) (and K = dR/du when with_matrix) at `state`.
     // Returns false if some quadrature point has J <= 0.
     bool assemble(const LoadState &state, bool with_matrix);

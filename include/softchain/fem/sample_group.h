@@ -31,11 +31,13 @@ namespace softchain::fem
     void check_points(const std::vector<Sample> &samples) const;
 
     // Solves `sample` from rest (start == nullptr) or from the converged
-    // sample `start` (its stored positions and actuation). A failed solve
-    // returns the last converged state, its reason and load factor along the
-    // path from the start. Writes vtu/sample_<id>_* when Output/Write VTU.
+    // sample `start` (its stored positions and actuation). A sample with a
+    // tip motion needs `anchor`, the equilibrium its motion is relative to
+    // (InputError without). A failed solve returns the last converged state,
+    // its reason and load factor along the path from the start. Writes
+    // vtu/sample_<id>_* when Output/Write VTU.
     data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
-                             unsigned int index);
+                             const data::SampleRecord *anchor, unsigned int index);
 
     // Wall time of assembly and linear solves over all samples solved so
     // far, to the log (Output/Verbose).

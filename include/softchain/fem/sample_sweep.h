@@ -7,10 +7,15 @@
 // atomically (converged or failed). Samples are spread over MPI sample groups
 // (whole chains per group, so the results do not depend on the rank count);
 // world rank 0 writes the database and prints one progress line per sample.
+// Then, if subsection Protocol asks for it, the samples of the paper's
+// validation experiment (TipMotionProtocol): the inflation to a tip angle,
+// found by trial samples, and the tip motions from that state.
 #include <softchain/data/prm_file.h>
+#include <softchain/data/tip_pose_fit.h>
 #include <softchain/fem/finger_mesh.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/sample_set.h>
+#include <softchain/fem/tip_motion_protocol.h>
 
 #include <map>
 #include <optional>
@@ -48,12 +53,20 @@ namespace softchain::fem
     data::PrmFile prm_file;
     FingerMesh    mesh;
     std::string   hash;
-    SampleSet     set;
-    std::string   database_path;
+    SampleSet         set; // the listed samples, then the protocol's
+    TipMotionProtocol protocol;
+    std::string       database_path;
+    data::MeshRecord                tip_mesh; // rank 0, for tip_pose()
+    std::optional<data::TipPoseFit> tip_fit;
 
     using Records = std::map<std::size_t, data::SampleRecord>; // by sample index
 
-    Records                  read_cached() const;
+    void read_cached(const std::vector<std::size_t> &indices, Records &known) const;
+    void solve_missing(const std::vector<std::size_t> &indices, Records &known,
+                       Summary &summary) const;
+    std::string                         run_protocol(Records &known, Summary &summary);
+    std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
+    data::TipPose                       tip_pose(const data::SampleRecord &record);
     void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
                                            SweepProgress &progress, unsigned int n_groups) const;
     void                     solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
@@ -63,6 +76,7 @@ namespace softchain::fem
                                       unsigned int n_groups) const;
     std::vector<const data::SampleRecord *> known_before(std::size_t sample, const Records &known) const;
     const data::SampleRecord *start_of(std::size_t sample, const Records &known) const;
+    const data::SampleRecord *anchor_of(std::size_t sample, const Records &known) const;
     const data::SampleRecord *stopped_before(std::size_t sample, const Records &known) const;
     data::SampleRecord        beyond_limit_point(std::size_t sample, const data::SampleRecord &stop) const;
     void                      write_series() const;

@@ -7,6 +7,10 @@
 
 namespace softchain::chain
 {
+  // Writes `script` to `script_path` and runs gnuplot on it if installed;
+  // returns whether gnuplot ran and succeeded.
+  bool run_gnuplot(const std::string &script_path, const std::string &script);
+
   class ValidationPlot
   {
   public:

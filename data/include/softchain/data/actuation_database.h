@@ -90,20 +90,20 @@ namespace softchain::data
   // about its centre and moved by `translation`, world axes.
   struct TipMotion
   {
-    Point3 translation = {0.0, 0.0, 0.0}; // m
-    Point3 rotation    = {0.0, 0.0, 0.0}; // rad
+    Point3 translation{}; // m
+    Point3 rotation{};    // rad
   };
 
   struct Actuation
   {
     double                  pressure = 0.0; // Pa
     std::vector<PointForce> point_forces;
-    std::optional<TipMotion> tip_motion; // none: the tip is free
     // What the sample is for: "pressure" (k_phi), "lateral" (k_theta),
     // "torsion" (k_psi), "validation" (never used for extraction),
     // "protocol inflation" and "protocol" (the prescribed-motion protocol:
     // its inflated state and its tip motions), or a user's name.
     std::string role;
+    std::optional<TipMotion> tip_motion; // none: the tip is free
 
     // Canonical text of the actuation (pressure, points, forces, tip motion;
     // not role).
