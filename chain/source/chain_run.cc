@@ -163,7 +163,7 @@ namespace softchain::chain
       protocol.trace_table().write(directory + "/protocol_torques.csv");
       const data::CsvTable summary = protocol.summary_table();
       summary.write(directory + "/protocol_summary.csv");
-      if (!ProtocolPlot(directory, protocol.models()).draw())
+      if (!draw_protocol_plot(directory, protocol.models()))
         std::cout << "chain: gnuplot missing or failed, protocol_torques.png not drawn\n";
       const auto precision = std::cout.precision(3);
       for (std::size_t r = 0; r < summary.n_rows(); r += 3)

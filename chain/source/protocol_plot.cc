@@ -5,19 +5,14 @@
 
 namespace softchain::chain
 {
-  ProtocolPlot::ProtocolPlot(std::string directory, std::vector<std::string> models)
-    : directory_(std::move(directory))
-    , models_(std::move(models))
-  {}
-
-  std::string ProtocolPlot::script() const
+  std::string protocol_plot_script(const std::string &directory, const std::vector<std::string> &models)
   {
-    const std::string  csv = "\"" + directory_ + "/protocol_torques.csv\"";
+    const std::string  csv = "\"" + directory + "/protocol_torques.csv\"";
     std::ostringstream s;
     s << "# Base torques over the tip-motion protocol (softchain chain); run: gnuplot "
          "protocol_torques.gp\n"
       << "set terminal pngcairo size 900,1000\n"
-      << "set output \"" << directory_ << "/protocol_torques.png\"\n"
+      << "set output \"" << directory << "/protocol_torques.png\"\n"
       << "set datafile separator \",\"\n"
       << "set datafile columnheaders\n"
       << "set grid\nset key outside right\nset xlabel \"trace step (lateral, bending, twist)\"\n"
@@ -27,18 +22,18 @@ namespace softchain::chain
         s << "set ylabel \"" << torque << " (mN m)\"\n"
           << "plot " << csv << " using \"step\":(1e3*column(\"fem_" << torque
           << "\")) with linespoints lc black lw 2 pt 7 ps 0.5 title \"FEM\"";
-        for (std::size_t m = 0; m < models_.size(); ++m)
-          s << ", " << csv << " using \"step\":(1e3*column(\"" << models_[m] << "_" << torque
-            << "\")) with lines lw 2 " << (models_[m] == "baseline" ? "dt 2 lc rgb \"gray40\"" : "")
-            << " title \"" << models_[m] << "\"";
+        for (std::size_t m = 0; m < models.size(); ++m)
+          s << ", " << csv << " using \"step\":(1e3*column(\"" << models[m] << "_" << torque
+            << "\")) with lines lw 2 " << (models[m] == "baseline" ? "dt 2 lc rgb \"gray40\"" : "")
+            << " title \"" << models[m] << "\"";
         s << "\n";
       }
     s << "unset multiplot\n";
     return s.str();
   }
 
-  bool ProtocolPlot::draw() const
+  bool draw_protocol_plot(const std::string &directory, const std::vector<std::string> &models)
   {
-    return run_gnuplot(directory_ + "/protocol_torques.gp", script());
+    return run_gnuplot(directory + "/protocol_torques.gp", protocol_plot_script(directory, models));
   }
 } // namespace softchain::chain

@@ -282,9 +282,62 @@ namespace softchain::report
       }
   }
 
+  void HtmlReport::protocol_section(HtmlDocument &page) const
+  {
+    page.heading("5. Prescribed tip motion, base torques (the paper's Sec. IV-B, Fig. 10–11)");
+    if (!fs::exists(output("chain/protocol_summary.csv")))
+      {
+        page.paragraph("No tip-motion protocol: the design has none (subsection Protocol, Tip angle "
+                       "= 0), so the database holds no protocol samples and `softchain chain` wrote "
+                       "no chain/protocol_summary.csv.");
+        return;
+      }
+    page.paragraph("The paper's validation experiment. The finger is inflated until its tip has "
+                   "turned by the target angle (subsection Protocol, Tip angle); then its tip face "
+                   "is moved rigidly, each step one FEM sample: left and right (±z of the inflated "
+                   "tip frame), down and up (±y), twisted (±x). The FEM's base torques Tx, Ty, Tz "
+                   "(the moment the finger exerts on its clamped base, about the base face's "
+                   "centroid, world axes) are the ground truth. Each chain model (M1, M2 and the "
+                   "beam-theory baseline k_θ = k_φ, k_ψ = 4 k_φ) is driven through the same "
+                   "motions from its own inflated state with its tip frame held; the error of a "
+                   "torque is the RMS over the trace of the chain's minus the FEM's, in % of the "
+                   "FEM's range (max − min) of that torque over the trace. The paper found Tx "
+                   "almost the same for its models and the baseline, Ty too soft, and the baseline "
+                   "greatly overestimating Tz.");
+    const auto summary = data::CsvTable::read(output("chain/protocol_summary.csv"));
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t r = 0; r < summary.n_rows(); ++r)
+      rows.push_back({summary.text(r, "model"), summary.text(r, "torque"),
+                      fmt(1e3 * summary.number(r, "fem_range_Nm")), fmt(1e3 * summary.number(r, "rms_error_Nm")),
+                      fmt(summary.number(r, "rms_error_percent_range")),
+                      fmt(summary.number(r, "max_error_percent_range")), summary.text(r, "n_failed_points")});
+    page.paragraph("chain/protocol_summary.csv; failed points: trace points without a chain "
+                   "equilibrium, left out of the errors (a state the trace visits twice counts twice).");
+    page.table({"model", "torque", "FEM range [mN m]", "RMS error [mN m]", "RMS error [% of range]",
+                "max error [% of range]", "failed points"},
+               rows);
+    png_figure(page, "chain/protocol_torques.png", "Base torques over the protocol's trace, FEM and chains");
+    // The trace's length and its inflation pressure (that of its samples).
+    std::string trace;
+    if (fs::exists(output("chain/protocol_torques.csv")))
+      {
+        const auto torques = data::CsvTable::read(output("chain/protocol_torques.csv"));
+        trace = " (" + std::to_string(torques.n_rows()) + " steps";
+        if (torques.n_rows() > 0)
+          for (const auto &s : samples_)
+            if (s.id == torques.text(0, "sample"))
+              trace += ", inflated at " + fmt(s.actuation.pressure / 1e3) + " kPa";
+        trace += ")";
+      }
+    page.paragraph("chain/protocol_torques.csv holds the trace step by step" + trace +
+                   ": the motion (lateral, bending, twist), its amount (mm or deg), the FEM sample, "
+                   "the FEM's Tx, Ty, Tz and each model's, in N m (nan where a chain equilibrium "
+                   "failed).");
+  }
+
   void HtmlReport::timing_section(HtmlDocument &page) const
   {
-    page.heading("5. Run times");
+    page.heading("6. Run times");
     if (stage_times_)
       {
         std::vector<std::vector<std::string>> rows;
@@ -322,7 +375,7 @@ namespace softchain::report
 
   void HtmlReport::claims_section(HtmlDocument &page) const
   {
-    page.heading("6. The paper's claims (Sec. IV-A, V)");
+    page.heading("7. The paper's claims (Sec. IV-A, V)");
     int extraction = 0;
     for (const auto &s : samples_)
       extraction += s.converged() && s.actuation.role != "validation";
@@ -348,6 +401,7 @@ namespace softchain::report
     finger_section(page);
     stiffness_section(page);
     validation_section(page);
+    protocol_section(page);
     timing_section(page);
     claims_section(page);
     return page.str();

@@ -62,7 +62,7 @@ namespace softchain::app
       const std::string dir = file.parent_path().filename(), name = file.filename(),
                         ext = file.extension();
       if (name == "report.html")
-        return "the report: design, deformed finger, stiffness, validation, run times, paper's claims (open in a browser)";
+        return "the report: design, deformed finger, stiffness, validation, tip-motion protocol, run times, paper's claims (open in a browser)";
       if (name == "database.h5")
         return "actuation-deformation database (HDF5): the design and the mesh";
       if (dir == "database.h5.samples")

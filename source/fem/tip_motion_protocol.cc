@@ -104,22 +104,31 @@ namespace softchain::fem
 
   // Secant through the two equilibria nearest the tip angle, kept inside the
   // bracket [largest pressure below the angle, smallest pressure above it or
-  // without equilibrium] (bisection where the secant leaves it).
+  // without equilibrium]; bisection where the secant leaves the bracket or
+  // the bracket ends at a pressure without equilibrium (beyond a limit point
+  // the angle curve gives no secant to trust).
   double TipMotionProtocol::next_pressure(const std::vector<Trial> &trials) const
   {
     std::vector<Trial> solved;
     double             low = 0.0, high = INFINITY;
+    bool               high_failed = false;
     for (const Trial &t : trials)
       if (std::isfinite(t.angle))
         {
           solved.push_back(t);
           if (t.angle < tip_angle)
             low = std::max(low, t.pressure);
-          else
-            high = std::min(high, t.pressure);
+          else if (t.pressure < high)
+            {
+              high        = t.pressure;
+              high_failed = false;
+            }
         }
-      else
-        high = std::min(high, t.pressure);
+      else if (t.pressure < high)
+        {
+          high        = t.pressure;
+          high_failed = true;
+        }
     std::sort(solved.begin(), solved.end(), [&](const Trial &a, const Trial &b) {
       return std::abs(a.angle - tip_angle) < std::abs(b.angle - tip_angle);
     });
@@ -129,7 +138,7 @@ namespace softchain::fem
                                  (solved[1].angle - solved[0].angle);
     else if (solved.size() == 1 && solved[0].pressure > 0) // angle ~ p from rest
       p = solved[0].pressure * tip_angle / solved[0].angle;
-    if (!(p > low && p < high))
+    if (high_failed || !(p > low && p < high))
       p = std::isfinite(high) ? 0.5 * (low + high) : (low > 0 ? 2 * low : first_pressure);
     return rounded(p);
   }

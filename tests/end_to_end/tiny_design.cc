@@ -125,7 +125,7 @@ namespace softchain::testing
     return output;
   }
 
-  TinyDesign pipeline_design(const std::string &name, const bool plots)
+  TinyDesign pipeline_design(const std::string &name, const bool plots, const std::string &more)
   {
     return TinyDesign(name,
                       "set Pressure sweep = 1e3, 2e3, 3e3\n"
@@ -137,7 +137,7 @@ namespace softchain::testing
                       "subsection Reduction\n  set Joint spacing = 0.02\n"
                       "  set Slab half-widths = 1\n  set Rotation threshold = 1e-6\n"
                       "  set Plots = " + std::string(plots ? "true" : "false") + "\nend\n"
-                      "subsection Chain\n  set Slab half-width = 1\nend\n");
+                      "subsection Chain\n  set Slab half-width = 1\nend\n" + more);
   }
 
   std::string sample_difference(const data::ActuationDatabase &a, const data::ActuationDatabase &b)

@@ -44,8 +44,8 @@ namespace softchain::testing
   // pressure bends it; joints 2 cm apart and b = a, so that every slab holds
   // several node planes of the 4-cell mesh (planes 19 mm apart); a rotation
   // threshold lowered below the small loads' rotations (~1e-4 rad).
-  // `plots`: the reduction's gnuplot PNGs.
-  TinyDesign pipeline_design(const std::string &name, bool plots);
+  // `plots`: the reduction's gnuplot PNGs; `more`: more subsections.
+  TinyDesign pipeline_design(const std::string &name, bool plots, const std::string &more = "");
 
   // The first difference between the stored samples of a and b, comparing
   // everything but the wall times bit for bit; "" if there is none.

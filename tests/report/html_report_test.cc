@@ -1,5 +1,6 @@
 // HtmlReport on a hand-made output directory: every section, the images as
-// data: URIs, the stage times, the captions of missing pressures, bad input.
+// data: URIs, the stage times, the captions of missing pressures, the
+// protocol's base torque errors, bad input.
 #include <softchain/data/input_error.h>
 #include <softchain/report/base64.h>
 #include <softchain/report/html_report.h>
@@ -29,8 +30,8 @@ TEST_CASE("The report holds every section, its pictures and its tables")
   std::ofstream(outputs.file("stiffness/kpsi.png")) << "not really a PNG";
   const std::string html = HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   for (const char *section : {"Summary", "1. The design", "2. The deformed finger", "3. Stiffness profiles",
-                              "4. Chain against FEM", "Baseline comparison", "5. Run times",
-                              "6. The paper's claims"})
+                              "4. Chain against FEM", "Baseline comparison", "5. Prescribed tip motion",
+                              "6. Run times", "7. The paper's claims"})
     CHECK(html.find(section) != std::string::npos);
   CHECK(html.find("set Name = a&lt;b") != std::string::npos); // the .prm, escaped
   CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == 3); // 0, 40, 80 kPa
@@ -92,6 +93,48 @@ TEST_CASE("Without a chain validation the report says so instead of failing")
   const std::string html = HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   CHECK(html.find("No chain validation: chain/validation_summary.csv is missing") != std::string::npos);
   CHECK(html.find("3. Stiffness") != std::string::npos);
+}
+
+TEST_CASE("The protocol's base torque errors, or a line saying the design has none")
+{
+  const SyntheticOutputs outputs("report_protocol");
+  const auto report = [&] {
+    return HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
+  };
+  // Without chain/protocol_summary.csv: the paragraph, and no table.
+  std::string html = report();
+  CHECK(html.find("No tip-motion protocol: the design has none (subsection Protocol, Tip angle = 0)") !=
+        std::string::npos);
+  CHECK(html.find("RMS error [% of range]") == std::string::npos);
+
+  softchain::report::testing::protocol_summary().write(outputs.file("chain/protocol_summary.csv"));
+  // A two-step trace whose first sample is the database's 40 kPa one.
+  const auto database = softchain::data::ActuationDatabase::open(outputs.database());
+  const std::string first = database.sample_ids().front();
+  REQUIRE(database.read_sample(first).actuation.pressure == 40e3);
+  softchain::data::CsvTable torques({"step", "motion", "amount", "unit", "sample", "fem_Tx", "fem_Ty",
+                                     "fem_Tz", "M2_Tx", "M2_Ty", "M2_Tz"});
+  torques.add_row({"0", "lateral", "0", "mm", first, "0", "0", "0", "0", "0", "0"});
+  torques.add_row({"1", "lateral", "2.5", "mm", first, "0.001", "0", "0", "0.001", "0", "nan"});
+  torques.write(outputs.file("chain/protocol_torques.csv"));
+  html = report();
+  CHECK(html.find("No tip-motion protocol") == std::string::npos);
+  // Between the validation and the run times.
+  CHECK(html.find("4. Chain against FEM") < html.find("5. Prescribed tip motion"));
+  CHECK(html.find("5. Prescribed tip motion") < html.find("6. Run times"));
+  // Cells with 3 significant digits, as the report's other tables: torques
+  // in mN m (0.0125 N m -> 12.5), percentages as written (12.3456 -> 12.3),
+  // failed points as the CSV counts them.
+  CHECK(html.find("<tr><td>M2</td><td>Tx</td><td>12.5</td><td>0.5</td><td>4</td><td>9.5</td><td>0</td></tr>") !=
+        std::string::npos);
+  CHECK(html.find("<tr><td>M2</td><td>Ty</td><td>20</td><td>2.47</td><td>12.3</td><td>30.4</td><td>0</td></tr>") !=
+        std::string::npos);
+  // Every baseline Tz equilibrium failed: no error, said as nan.
+  CHECK(html.find("<tr><td>baseline</td><td>Tz</td><td>4</td><td>nan</td><td>nan</td><td>nan</td><td>13</td></tr>") !=
+        std::string::npos);
+  CHECK(html.find("protocol_torques.png is missing") != std::string::npos); // no gnuplot: said
+  CHECK(html.find("chain/protocol_torques.csv holds the trace step by step (2 steps, inflated at 40 kPa)") !=
+        std::string::npos);
 }
 
 TEST_CASE("A missing input is an error naming the file")

@@ -2,7 +2,8 @@
 // A design's output directory written by hand, as `softchain run` would:
 // the database of a finger of two hexahedra with a converged 40 kPa sample
 // and a failed 60 kPa one, the chain's stiffness table (M2, b = a/2), the
-// validation summary and the .prm that selects that chain.
+// validation summary and the .prm that selects that chain. No protocol:
+// a test that needs one writes protocol_summary() below.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 
@@ -43,6 +44,22 @@ namespace softchain::report::testing
                        data::CsvTable::cell(chain_mean_percent), "2", "1"});
         table.add_row({"baseline", role, "2", "0", "8", "4", "80", "40", "50", "30"});
       }
+    return table;
+  }
+
+  // protocol_summary.csv of the chain tier: three rows (Tx, Ty, Tz) for M2
+  // and three for the baseline, whose Tz equilibria all failed (nan).
+  // Torques in N m, errors in % of the FEM's range.
+  inline data::CsvTable protocol_summary()
+  {
+    data::CsvTable table({"model", "torque", "fem_range_Nm", "rms_error_Nm", "rms_error_percent_range",
+                          "max_error_percent_range", "n_failed_points"});
+    table.add_row({"M2", "Tx", "0.0125", "0.0005", "4", "9.5", "0"});
+    table.add_row({"M2", "Ty", "0.02", "0.00246912", "12.3456", "30.4", "0"});
+    table.add_row({"M2", "Tz", "0.004", "0.0002", "5", "11", "1"});
+    table.add_row({"baseline", "Tx", "0.0125", "0.0006", "4.8", "10", "0"});
+    table.add_row({"baseline", "Ty", "0.02", "0.005", "25", "40", "0"});
+    table.add_row({"baseline", "Tz", "0.004", "nan", "nan", "nan", "13"});
     return table;
   }
 

@@ -2,7 +2,8 @@
 // HtmlReport: output/<design>/report.html, what a user reads after
 // `softchain run`: the design, pictures of the deformed finger at 0, 40 and
 // 80 kPa, the stiffness profiles (the paper's Fig. 5-7 equivalents), the
-// chain-vs-FEM validation and the baseline comparison, the run times and the
+// chain-vs-FEM validation and the baseline comparison, the base torques of
+// the prescribed tip motions (the paper's Sec. IV-B), the run times and the
 // paper's claims with verdicts. One HTML file: every image is a data: URI.
 // It reads what the other tiers wrote (database.h5, stiffness/, chain/) and
 // nothing else.
@@ -46,6 +47,10 @@ namespace softchain::report
     void stiffness_section(HtmlDocument &page) const;
     void validation_section(HtmlDocument &page) const;
     void chain_pictures(HtmlDocument &page) const;
+    // The paper's validation experiment: each chain model's base torque
+    // errors over the prescribed tip motions (chain/protocol_summary.csv),
+    // or a paragraph saying the design has none.
+    void protocol_section(HtmlDocument &page) const;
     void timing_section(HtmlDocument &page) const;
     void claims_section(HtmlDocument &page) const;
 

@@ -1,0 +1,130 @@
+// The validation protocol end to end on the tiny bender: the sweep inflates
+// it to the tip angle and moves its tip, the FEM's base torques obey the
+// design's mirror symmetry, a prescribed twist is the tip's fitted rotation,
+// a rerun solves nothing, and `softchain run` writes the torque traces.
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/csv_table.h>
+#include <softchain/data/tip_pose_fit.h>
+
+#include "tiny_design.h"
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace softchain;
+
+namespace
+{
+  const std::string protocol = "subsection Protocol\n"
+                               "  set Tip angle = 20\n  set Angle tolerance = 0.5\n"
+                               "  set Lateral amplitude = 0.002\n  set Bending amplitude = 0.001\n"
+                               "  set Twist amplitude = 5\n  set Steps = 2\nend\n";
+
+  Eigen::Vector3d vector_of(const data::Point3 &p)
+  {
+    return {p[0], p[1], p[2]};
+  }
+} // namespace
+
+TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, torque traces")
+{
+  const testing::TinyDesign design = testing::pipeline_design("protocol", false, protocol);
+  const auto                sweep  = design.run("sweep");
+  INFO(sweep.output);
+  REQUIRE(sweep.status == 0);
+  CHECK(sweep.output.find("protocol: 12 tip motions from sample protocol inflation") !=
+        std::string::npos);
+
+  const auto database = data::ActuationDatabase::open(design.database());
+  const auto fit      = data::TipPoseFit::of_mesh(database.mesh(), design.database());
+  const auto pose     = [&](const data::SampleRecord &r) {
+    return fit.fit(data::select_nodes(r.x, database.mesh().tip_nodes));
+  };
+  std::vector<data::SampleRecord> motions;
+  for (const auto &id : database.sample_ids())
+    if (const auto r = database.read_sample(id); r.actuation.role == "protocol")
+      motions.push_back(r);
+  REQUIRE(motions.size() == 12);
+  const double p = motions.front().actuation.pressure;
+
+  // The state the motions start from turned the tip by 20 deg within the
+  // tolerance the .prm asks for.
+  data::SampleRecord inflated;
+  for (const auto &id : database.sample_ids())
+    if (const auto r = database.read_sample(id);
+        r.actuation.role == "protocol inflation" && r.actuation.pressure == p)
+      inflated = r;
+  REQUIRE(inflated.converged());
+  const Eigen::Matrix3d R = pose(inflated).rotation;
+  CHECK(std::abs(data::rotation_angle_between(Eigen::Matrix3d::Identity(), R) * 180 / M_PI - 20) <= 0.5);
+
+  for (const auto &m : motions)
+    {
+      REQUIRE(m.converged());
+      const Eigen::Vector3d t = R.transpose() * vector_of(m.actuation.tip_motion->translation),
+                            theta = R.transpose() * vector_of(m.actuation.tip_motion->rotation);
+      // A twist turns the tip face by the prescribed rotation (held by
+      // constraints: exact up to the fit's round-off).
+      if (theta.norm() > 0)
+        {
+          const Eigen::AngleAxisd turned(pose(m).rotation * R.transpose());
+          CHECK((turned.angle() * turned.axis() - vector_of(m.actuation.tip_motion->rotation)).norm() <
+                1e-9);
+        }
+      // The bender is symmetric about its mid-plane z = const: the lateral
+      // motion -t_z mirrors +t_z, base moments being pseudovectors
+      // (T_x, T_y change sign, T_z does not). On the Q2 demo bender the two
+      // agree to 6e-12 of the moment; 1e-8 of it bounds the solver's residual.
+      if (t.z() > 1e-6) // a lateral motion (the others' z is round-off)
+        for (const auto &n : motions)
+          if (std::abs((R.transpose() * vector_of(n.actuation.tip_motion->translation)).z() + t.z()) < 1e-12)
+            {
+              const Eigen::Vector3d a = vector_of(m.base_moment), b = vector_of(n.base_moment);
+              INFO("lateral " << t.z());
+              CHECK(a.norm() > 0);
+              CHECK(std::abs(a.x() + b.x()) <= 1e-8 * a.norm());
+              CHECK(std::abs(a.y() + b.y()) <= 1e-8 * a.norm());
+              CHECK(std::abs(a.z() - b.z()) <= 1e-8 * a.norm());
+            }
+    }
+
+  // The search is deterministic: a rerun finds every trial in the database.
+  const auto again = design.run("sweep");
+  INFO(again.output);
+  CHECK(again.output.find(" 0 solved, 0 failed") != std::string::npos);
+
+  // The chain tier drives M1, M2 and the baseline through the 25 states of
+  // the trace (per kind 0, +, ++, +, 0, -, --, -; a final 0).
+  const auto run = design.run("run");
+  INFO(run.output);
+  CHECK(run.status == 0);
+  const auto trace   = data::CsvTable::read(design.output() + "/chain/protocol_torques.csv");
+  const auto summary = data::CsvTable::read(design.output() + "/chain/protocol_summary.csv");
+  CHECK(trace.n_rows() == 25);
+  CHECK(summary.n_rows() % 3 == 0);
+  bool baseline = false;
+  for (std::size_t r = 0; r < summary.n_rows(); ++r)
+    {
+      baseline = baseline || summary.text(r, "model") == "baseline";
+      CHECK(std::isfinite(summary.number(r, "rms_error_Nm")));
+    }
+  CHECK(baseline);
+  CHECK(run.output.find("tip-motion protocol at") != std::string::npos);
+}
+
+TEST_CASE("a protocol parameter out of range stops the sweep before any solve, naming it")
+{
+  const testing::TinyDesign design("protocol_bad", "set Pressure sweep = 1e3",
+                                   "subsection Protocol\n  set Tip angle = 20\n  set Steps = 0\nend\n");
+  const auto outcome = design.run("sweep");
+  INFO(outcome.output);
+  CHECK(outcome.status == 1);
+  CHECK(outcome.output.find("tiny.prm:") != std::string::npos);
+  CHECK(outcome.output.find("parameter 'Steps' in subsection 'Protocol': must be at least 1") !=
+        std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(design.database()));
+}
