@@ -155,7 +155,9 @@ namespace softchain::chain
                           const data::ActuationDatabase &database, const ChainParameters &p,
                           const std::string &directory)
     {
-      ProtocolTorques protocol(database);
+      // The sweep lists the protocol's samples beside the database.
+      ProtocolTorques protocol(
+        database, (std::filesystem::path(database.path()).parent_path() / "protocol_samples.csv").string());
       if (protocol.empty())
         return;
       for (const ChainModel &model : models)

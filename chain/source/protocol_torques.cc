@@ -8,85 +8,58 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 namespace softchain::chain
 {
   namespace
   {
-    constexpr double degree = M_PI / 180.0;
-
     Eigen::Vector3d vector_of(const data::Point3 &p)
     {
       return {p[0], p[1], p[2]};
     }
 
-    struct MotionSample
-    {
-      std::string     id;
-      Eigen::Vector3d translation, rotation, fem_torque;
-    };
-
-    // The protocol's samples at the inflation pressure with the most of them.
-    std::vector<MotionSample> motion_samples(const std::vector<data::SampleRecord> &records,
-                                             double                               &pressure)
-    {
-      std::map<double, std::vector<MotionSample>> by_pressure;
-      for (const auto &r : records)
-        if (r.actuation.role == "protocol" && r.converged() && r.actuation.tip_motion)
-          by_pressure[r.actuation.pressure].push_back({r.id,
-                                                       vector_of(r.actuation.tip_motion->translation),
-                                                       vector_of(r.actuation.tip_motion->rotation),
-                                                       vector_of(r.base_moment)});
-      std::vector<MotionSample> most;
-      for (auto &[p, samples] : by_pressure)
-        if (samples.size() > most.size())
-          {
-            pressure = p;
-            most     = std::move(samples);
-          }
-      return most;
-    }
   } // namespace
 
-  ProtocolTorques::ProtocolTorques(const data::ActuationDatabase &database)
+  ProtocolTorques::ProtocolTorques(const data::ActuationDatabase &database,
+                                   const std::string             &listing)
   {
-    std::vector<data::SampleRecord> records;
-    for (const std::string &id : database.sample_ids())
-      records.push_back(database.read_sample(id));
-    const auto samples = motion_samples(records, pressure_);
-    if (samples.empty())
+    if (!std::filesystem::exists(listing))
       return;
-    // The inflated state: a converged sample at that pressure with a free tip and no force.
-    const auto inflated = std::find_if(records.begin(), records.end(), [&](const auto &r) {
-      return r.converged() && r.actuation.pressure == pressure_ &&
-             r.actuation.point_forces.empty() && !r.actuation.tip_motion;
-    });
-    if (inflated == records.end())
-      throw data::InputError(database.path() + ": protocol samples at " + std::to_string(pressure_) +
-                             " Pa but no converged sample of the inflated finger they start from");
+    const data::CsvTable rows = data::CsvTable::read(listing);
+    if (rows.n_rows() == 0 || rows.text(0, "motion") != "inflation")
+      throw data::InputError(listing + ": the first row must be the inflated state (motion 'inflation')");
+    const auto read = [&](std::size_t r) {
+      const std::string &id = rows.text(r, "sample");
+      if (!database.has_sample(id))
+        throw data::InputError(listing + ", row " + std::to_string(r + 1) + ": sample " + id +
+                               " is not in the database " + database.path() +
+                               " (rerun the sweep)");
+      return database.read_sample(id);
+    };
+    const data::SampleRecord inflated = read(0);
+    if (!inflated.converged())
+      throw data::InputError(listing + ": the inflated state " + inflated.id + " did not converge");
+    pressure_                    = inflated.actuation.pressure;
     const data::MeshRecord &mesh = database.mesh();
     base_centroid_               = base_face_centroid(mesh);
-    const Eigen::Matrix3d R =
-      data::TipPoseFit::of_mesh(mesh, database.path()).fit(data::select_nodes(inflated->x, mesh.tip_nodes)).rotation;
 
-    // Each sample's motion in the inflated tip frame: its kind and amount.
-    std::map<std::string, std::map<double, const MotionSample *>> by_kind;
-    for (const MotionSample &s : samples)
+    // Each motion by kind and signed amount; an FEM sample that failed leaves its state out.
+    std::map<std::string, std::map<double, TracePoint>> by_kind;
+    for (std::size_t r = 1; r < rows.n_rows(); ++r)
       {
-        const Eigen::Vector3d t = R.transpose() * s.translation, theta = R.transpose() * s.rotation;
-        if (theta.norm() > 0)
-          by_kind["twist"][theta.x() / degree] = &s;
-        else if (std::abs(t.z()) >= std::abs(t.y()))
-          by_kind["lateral"][1e3 * t.z()] = &s;
-        else
-          by_kind["bending"][1e3 * t.y()] = &s;
+        const data::SampleRecord s = read(r);
+        if (!s.converged() || !s.actuation.tip_motion)
+          continue;
+        const auto &m = *s.actuation.tip_motion;
+        by_kind[rows.text(r, "motion")][rows.number(r, "amount")] =
+          TracePoint{rows.text(r, "motion"), rows.number(r, "amount"), s.id,
+                     vector_of(m.translation), vector_of(m.rotation), m.point_contact,
+                     vector_of(s.base_moment)};
       }
-    const TracePoint rest{"", 0.0, inflated->id, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                          vector_of(inflated->base_moment)};
-    const auto point = [](const std::string &kind, double amount, const MotionSample &s) {
-      return TracePoint{kind, amount, s.id, s.translation, s.rotation, s.fem_torque};
-    };
+    const TracePoint rest{"", 0.0, inflated.id, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                          false, vector_of(inflated.base_moment)};
     // 0 -> +a -> 0 -> -a -> 0 per kind, in the paper's order.
     for (const std::string kind : {"lateral", "bending", "twist"})
       {
@@ -94,7 +67,7 @@ namespace softchain::chain
           continue;
         const auto          &amounts = by_kind[kind];
         std::vector<double> up, down;
-        for (const auto &[amount, s] : amounts)
+        for (const auto &[amount, p] : amounts)
           (amount > 0 ? up : down).push_back(amount);
         std::reverse(down.begin(), down.end()); // -1, -2, ...
         for (const auto *side : {&up, &down})
@@ -102,11 +75,13 @@ namespace softchain::chain
             points_.push_back(rest);
             points_.back().motion = kind;
             for (std::size_t k = 0; k < side->size(); ++k)
-              points_.push_back(point(kind, (*side)[k], *amounts.at((*side)[k])));
+              points_.push_back(amounts.at((*side)[k]));
             for (std::size_t k = side->size(); k-- > 1;)
-              points_.push_back(point(kind, (*side)[k - 1], *amounts.at((*side)[k - 1])));
+              points_.push_back(amounts.at((*side)[k - 1]));
           }
       }
+    if (points_.empty())
+      return;
     points_.push_back(rest);
     points_.back().motion = points_[points_.size() - 2].motion;
   }
@@ -139,8 +114,10 @@ namespace softchain::chain
         if (torque_of.count(p.sample) == 0)
           {
             const Eigen::Vector3d axis = p.rotation.norm() > 0 ? p.rotation.normalized() : Eigen::Vector3d::UnitX();
-            const TipTarget target{tip0 + p.translation,
-                                   Eigen::Matrix3d(Eigen::AngleAxisd(p.rotation.norm(), axis)) * R0};
+            TipTarget target{tip0 + p.translation,
+                             Eigen::Matrix3d(Eigen::AngleAxisd(p.rotation.norm(), axis)) * R0};
+            if (p.point_contact) // the tip point only, its frame free
+              target.rotation.reset();
             const auto result = held.solve(load, target, start);
             if (result.converged)
               {

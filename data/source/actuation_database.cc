@@ -121,7 +121,11 @@ namespace softchain::data
       write_points(group, "x", sample.x, path);
       write_points(group, "base_wrench", {sample.base_force, sample.base_moment}, path);
       if (const auto &motion = sample.actuation.tip_motion)
-        write_points(group, "tip_motion", {motion->translation, motion->rotation}, path);
+        {
+          write_points(group, "tip_motion", {motion->translation, motion->rotation}, path);
+          if (motion->point_contact)
+            write_attribute(group, "tip_contact", std::string("point"), path);
+        }
     }
 
     Actuation read_actuation(hid_t group, const std::string &id, const std::string &path)
@@ -139,7 +143,9 @@ namespace softchain::data
         {
           const auto motion = read_points(group, "tip_motion", path);
           require(motion.size() == 2, path, "sample '" + id + "': tip_motion needs 2 rows");
-          actuation.tip_motion = TipMotion{motion[0], motion[1]};
+          const bool point = H5Aexists(group, "tip_contact") > 0 &&
+                             read_string_attribute(group, "tip_contact", path) == "point";
+          actuation.tip_motion = TipMotion{motion[0], motion[1], point};
         }
       return actuation;
     }
@@ -249,7 +255,7 @@ namespace softchain::data
       }
     if (tip_motion) // absent: the text (and so the id) of a free-tip sample as before
       {
-        text += "tip motion";
+        text += tip_motion->point_contact ? "tip point motion" : "tip motion";
         for (const auto &v : {tip_motion->translation, tip_motion->rotation})
           for (const double c : v)
             text += " " + canonical(c);

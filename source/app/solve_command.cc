@@ -67,7 +67,8 @@ namespace softchain::app
     auto result           = solver.solve(target);
     if (prm.loads.prescribe_tip && result.converged) // then the tip moves from that state
       {
-        target.tip_motion = TipMotion{prm.loads.tip_translation, prm.loads.tip_rotation};
+        target.tip_motion = TipMotion{prm.loads.tip_translation, prm.loads.tip_rotation,
+                                      prm.loads.tip_point_contact};
         const auto moved  = solver.solve(target);
         out << "loads: " << result.load_steps << " load steps; tip motion: " << moved.load_steps
             << " load steps\n";

@@ -14,7 +14,8 @@ namespace softchain::fem
       {
         const TipMotion from = start.tip_motion.value_or(TipMotion());
         state.tip_motion     = TipMotion{(1 - s) * from.translation + s * target.tip_motion->translation,
-                                     (1 - s) * from.rotation + s * target.tip_motion->rotation};
+                                     (1 - s) * from.rotation + s * target.tip_motion->rotation,
+                                     target.tip_motion->point_contact};
       }
     // Forces at the same point blend; a point present at one end only ramps
     // from or to zero.

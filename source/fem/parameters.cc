@@ -190,8 +190,10 @@ namespace softchain::fem
     section.declare("Gravity", "false", "-9.81 m/s^2 along y");
     section.declare("Tip motion", "",
                     "tx,ty,tz : rx,ry,rz -- a rigid motion of the tip face about its centre, "
-                    "translation [m] and rotation vector [rad], applied after the other loads "
-                    "(relative to that state); empty: the tip is free");
+                    "translation [m] and rotation vector [rad]; or point : tx,ty,tz -- the "
+                    "mean of the tip face moved, the face free to turn (a point contact); "
+                    "applied after the other loads (relative to that state); empty: the tip "
+                    "is free");
   }
 
   void LoadParameters::parse(const data::PrmSection &section)
@@ -206,9 +208,16 @@ namespace softchain::fem
         const auto colon = motion.find(':');
         if (colon == std::string::npos)
           throw data::InputError(section.describe("Tip motion") + ": '" + trim(motion) +
-                                 "' needs the form tx,ty,tz : rx,ry,rz");
-        tip_translation = parse_triple(motion.substr(0, colon), section.describe("Tip motion"));
-        tip_rotation    = parse_triple(motion.substr(colon + 1), section.describe("Tip motion"));
+                                 "' needs the form tx,ty,tz : rx,ry,rz or point : tx,ty,tz");
+        tip_point_contact = trim(motion.substr(0, colon)) == "point";
+        tip_rotation      = Tensor<1, 3>();
+        if (tip_point_contact)
+          tip_translation = parse_triple(motion.substr(colon + 1), section.describe("Tip motion"));
+        else
+          {
+            tip_translation = parse_triple(motion.substr(0, colon), section.describe("Tip motion"));
+            tip_rotation    = parse_triple(motion.substr(colon + 1), section.describe("Tip motion"));
+          }
       }
     point_loads.clear();
     std::stringstream in(section.get("Point loads"));

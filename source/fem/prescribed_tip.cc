@@ -6,6 +6,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace softchain::fem
@@ -26,21 +28,63 @@ namespace softchain::fem
     }
   } // namespace
 
-  PrescribedTip::PrescribedTip(const FiniteElementSpace &space)
+  PrescribedTip::PrescribedTip(const FiniteElementSpace &space, const bool point_contact)
     : communicator(space.communicator)
+    , point_(point_contact)
     , owned_tip_dofs(owned_boundary_dofs(space, boundary::tip))
+    , all_tip_dofs(space.dof_handler.n_dofs())
   {
     if (Utilities::MPI::sum(owned_tip_dofs.size(), communicator) == 0)
       throw data::InputError("a prescribed tip motion needs the mesh's physical group 'tip'");
+    if (point_)
+      hold_mean(space);
+    else
+      hold_face(space);
+    held.close();
+  }
+
+  // Every relevant tip DoF held (ghosts too, so that each rank's constraints
+  // hold the DoFs its cells touch).
+  void PrescribedTip::hold_face(const FiniteElementSpace &space)
+  {
     held.reinit(space.relevant_dofs);
-    // Every relevant tip DoF (ghosts too, so that each rank's constraints
-    // hold the DoFs its cells touch).
     for (const auto index :
          DoFTools::extract_boundary_dofs(space.dof_handler, ComponentMask(), {boundary::tip}))
       if (space.relevant_dofs.is_element(index) && !space.fixed_dofs.is_constrained(index))
         held.add_line(index);
     held.merge(space.fixed_dofs, AffineConstraints<double>::left_object_wins);
-    held.close();
+  }
+
+  // Per component, the lowest tip DoF k expressed by the others:
+  // u_k = -sum_{i != k} u_i (+ the mean that apply() keeps). The lines'
+  // entries reach tip DoFs of other ranks, so the constraints are indexed
+  // globally (no local index set), like the space's fixed DoFs.
+  void PrescribedTip::hold_mean(const FiniteElementSpace &space)
+  {
+    std::vector<std::pair<types::global_dof_index, unsigned int>> mine;
+    for (const BoundaryDof &dof : owned_tip_dofs)
+      mine.emplace_back(dof.index, dof.component);
+    std::array<std::vector<types::global_dof_index>, 3> of_component;
+    for (const auto &list : Utilities::MPI::all_gather(communicator, mine))
+      for (const auto &[index, component] : list)
+        of_component[component].push_back(index);
+    for (auto &dofs : of_component)
+      {
+        std::sort(dofs.begin(), dofs.end());
+        all_tip_dofs.add_indices(dofs.begin(), dofs.end());
+      }
+    all_tip_dofs.compress();
+    held.clear(); // lines by global index, as the space's fixed DoFs (every rank's)
+    held.merge(space.fixed_dofs);
+    for (const auto &dofs : of_component)
+      {
+        const types::global_dof_index k = dofs.front();
+        if (!space.relevant_dofs.is_element(k))
+          continue;
+        held.add_line(k);
+        for (std::size_t j = 1; j < dofs.size(); ++j)
+          held.add_entry(k, dofs[j], -1.0);
+      }
   }
 
   void PrescribedTip::anchor(const TrilinosWrappers::MPI::Vector &u)
@@ -64,10 +108,28 @@ namespace softchain::fem
           }
       }
     centre_ = Point<3>(Utilities::MPI::sum(sum, communicator) / Utilities::MPI::sum(n, communicator));
+    anchored_mean = mean_displacement(u);
+  }
+
+  Tensor<1, 3> PrescribedTip::mean_displacement(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    Tensor<1, 3> sum, count;
+    for (const BoundaryDof &dof : owned_tip_dofs)
+      {
+        sum[dof.component] += u[dof.index];
+        count[dof.component] += 1;
+      }
+    sum   = Utilities::MPI::sum(sum, communicator);
+    count = Utilities::MPI::sum(count, communicator);
+    for (unsigned int c = 0; c < 3; ++c)
+      sum[c] /= count[c];
+    return sum;
   }
 
   void PrescribedTip::apply(const TipMotion &motion, TrilinosWrappers::MPI::Vector &owned_u) const
   {
+    if (point_)
+      return apply_mean(motion, owned_u);
     for (std::size_t k = 0; k < owned_tip_dofs.size(); ++k)
       {
         const BoundaryDof &dof    = owned_tip_dofs[k];
@@ -75,6 +137,16 @@ namespace softchain::fem
                                     motion.translation;
         owned_u[dof.index] = target[dof.component] - dof.support_point[dof.component];
       }
+    owned_u.compress(VectorOperation::insert);
+  }
+
+  // Every tip DoF shifted by the same amount per component, so that the
+  // mean moves where the motion puts it (a smooth start for Newton).
+  void PrescribedTip::apply_mean(const TipMotion &motion, TrilinosWrappers::MPI::Vector &owned_u) const
+  {
+    const Tensor<1, 3> shift = anchored_mean + motion.translation - mean_displacement(owned_u);
+    for (const BoundaryDof &dof : owned_tip_dofs)
+      owned_u[dof.index] += shift[dof.component];
     owned_u.compress(VectorOperation::insert);
   }
 } // namespace softchain::fem

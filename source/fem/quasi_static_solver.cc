@@ -104,23 +104,34 @@ namespace softchain::fem
   void QuasiStaticSolver::setup_system()
   {
     const FiniteElementSpace &s = *fe_space;
-    writable_dofs = s.relevant_dofs;
-    if (springs)
-      writable_dofs.add_indices(springs->touched_dofs(s.dof_handler.n_dofs()));
-
-    DynamicSparsityPattern pattern(writable_dofs);
-    DoFTools::make_sparsity_pattern(s.dof_handler, pattern, s.fixed_dofs, false);
-    if (springs)
-      springs->add_couplings(s.fixed_dofs, pattern);
-    SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
-                                               writable_dofs);
-    matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
-
-    rhs.reinit(s.owned_dofs, writable_dofs, s.communicator, true);
+    setup_matrix(s.fixed_dofs, IndexSet(s.dof_handler.n_dofs()));
     u_owned.reinit(s.owned_dofs, s.communicator);
     du.reinit(s.owned_dofs, s.communicator);
     u_ghosted.reinit(s.owned_dofs, s.relevant_dofs, s.communicator);
     reset();
+  }
+
+  // The tangent's sparsity pattern and the residual's writable entries for
+  // `constraints`, whose lines may couple the DoFs `coupled` (a point contact
+  // couples every tip DoF) beyond the cells' and springs' couplings.
+  void QuasiStaticSolver::setup_matrix(const AffineConstraints<double> &constraints,
+                                       const IndexSet                  &coupled)
+  {
+    const FiniteElementSpace &s = *fe_space;
+    writable_dofs = s.relevant_dofs;
+    writable_dofs.add_indices(coupled);
+    if (springs)
+      writable_dofs.add_indices(springs->touched_dofs(s.dof_handler.n_dofs()));
+
+    DynamicSparsityPattern pattern(writable_dofs);
+    DoFTools::make_sparsity_pattern(s.dof_handler, pattern, constraints, false);
+    if (springs)
+      springs->add_couplings(constraints, pattern);
+    SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
+                                               writable_dofs);
+    matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
+    rhs.reinit(s.owned_dofs, writable_dofs, s.communicator, true);
+    serial_direct.reset(); // its symbolic analysis is of the old pattern
   }
 
   void QuasiStaticSolver::reset()
@@ -371,10 +382,19 @@ namespace softchain::fem
     return false;
   }
 
-  void QuasiStaticSolver::anchor_tip_motion()
+  void QuasiStaticSolver::anchor_tip_motion(const bool point_contact)
   {
-    if (!prescribed_tip)
-      prescribed_tip = std::make_unique<PrescribedTip>(*fe_space);
+    if (!prescribed_tip || prescribed_tip->point_contact() != point_contact)
+      {
+        prescribed_tip = std::make_unique<PrescribedTip>(*fe_space, point_contact);
+        // A point contact's constraints couple all tip DoFs: widen the
+        // pattern once (it then serves the face-held motions too).
+        if (point_contact && !pattern_couples_tip)
+          {
+            setup_matrix(prescribed_tip->constraints(), prescribed_tip->coupled_dofs());
+            pattern_couples_tip = true;
+          }
+      }
     prescribed_tip->anchor(u_owned);
   }
 
@@ -388,8 +408,9 @@ namespace softchain::fem
         active_constraints = &fe_space->fixed_dofs;
         return;
       }
-    if (!load.tip_motion)
-      anchor_tip_motion();
+    const bool point = target.tip_motion->point_contact;
+    if (!load.tip_motion || !prescribed_tip || prescribed_tip->point_contact() != point)
+      anchor_tip_motion(point);
     active_constraints = &prescribed_tip->constraints();
   }
 

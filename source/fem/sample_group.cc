@@ -29,7 +29,8 @@ namespace softchain::fem
                                     Point<3>(f.force[0], f.force[1], f.force[2])});
       if (const auto &m = actuation.tip_motion)
         load.tip_motion = TipMotion{Tensor<1, 3>({m->translation[0], m->translation[1], m->translation[2]}),
-                                    Tensor<1, 3>({m->rotation[0], m->rotation[1], m->rotation[2]})};
+                                    Tensor<1, 3>({m->rotation[0], m->rotation[1], m->rotation[2]}),
+                                    m->point_contact};
       return load;
     }
 
@@ -95,7 +96,7 @@ namespace softchain::fem
           throw data::InputError("sample '" + sample.label + "' (" + sample.id +
                                  "): a tip motion needs the equilibrium it starts from");
         solver.set_state(nodes.displacement(anchor->x), load_of(anchor->actuation));
-        solver.anchor_tip_motion();
+        solver.anchor_tip_motion(sample.actuation.tip_motion->point_contact);
       }
     if (start)
       solver.set_state(nodes.displacement(start->x), load_of(start->actuation));

@@ -1,4 +1,5 @@
 #include <softchain/fem/boundary_ids.h>
+#include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
 #include <softchain/fem/design_hash.h>
 #include <softchain/fem/sample_group.h>
@@ -116,6 +117,8 @@ namespace softchain::fem
     std::vector<std::size_t> listed(set.samples.size());
     std::iota(listed.begin(), listed.end(), 0);
     solve_missing(listed, known, summary);
+    if (world_rank() == 0) // a listing of an earlier protocol must not outlive it
+      fs::remove(protocol_listing());
     if (protocol.enabled())
       if (const auto failure = run_protocol(known, summary); !failure.empty())
         summary.failed.push_back(failure);
@@ -174,21 +177,35 @@ namespace softchain::fem
     data::TipPose tip;
     tip.rotation = Eigen::Map<const Eigen::Matrix3d>(frame.data());
     std::vector<std::size_t> added;
+    data::CsvTable           listing({"sample", "motion", "amount", "unit"});
+    listing.add_row(std::vector<std::string>{set.samples[inflated.first].id, "inflation",
+                                             data::CsvTable::cell(protocol.tip_angle_degrees()),
+                                             "deg"});
     for (const auto &chain : protocol.motions(known.at(inflated.first).actuation, tip))
       {
         set.chains.push_back({inflated.first});
-        for (const auto &sample : chain)
+        for (const auto &motion : chain)
           {
             set.chains.back().push_back(set.samples.size());
             added.push_back(set.samples.size());
-            set.samples.push_back(sample);
+            set.samples.push_back(motion.sample);
+            listing.add_row(std::vector<std::string>{motion.sample.id, motion.kind,
+                                                     data::CsvTable::cell(motion.amount), motion.unit});
           }
       }
     if (root)
       std::cout << "protocol: " << added.size() << " tip motions from sample "
                 << set.samples[inflated.first].label << std::endl;
     solve_missing(added, known, summary);
+    if (root)
+      listing.write(protocol_listing());
     return "";
+  }
+
+  // <output>/protocol_samples.csv: the protocol's samples, for the chain tier.
+  std::string SampleSweep::protocol_listing() const
+  {
+    return prm.design.output_directory + "/protocol_samples.csv";
   }
 
   // Secant steps on the tip angle over the pressure (TipMotionProtocol),

@@ -24,6 +24,9 @@ namespace softchain::fem
       section.declare("Bending amplitude", "0.01", "m, tip moved along +-y of the tip frame");
       section.declare("Twist amplitude", "20", "deg, tip turned about +-x of the tip frame");
       section.declare("Steps", "4", "samples from 0 to each amplitude");
+      section.declare("Tip contact", "point",
+                      "point: the lateral and bending motions move the tip face's centre, the "
+                      "face free to turn (a chopstick); face: they move the whole face rigidly");
     }
 
     // p to four significant digits: the ids of the inflation samples then do
@@ -74,6 +77,7 @@ namespace softchain::fem
     protocol.bending         = positive("Bending amplitude");
     protocol.twist           = positive("Twist amplitude") * degree;
     protocol.steps           = section.get_integer("Steps");
+    protocol.point_contact   = section.get_selection("Tip contact", {"point", "face"}) == "point";
     if (protocol.steps < 1)
       throw data::InputError(section.describe("Steps") + ": must be at least 1");
     return protocol;
@@ -155,7 +159,8 @@ namespace softchain::fem
     return sample;
   }
 
-  std::vector<std::vector<Sample>> TipMotionProtocol::motions(const data::Actuation &inflated,
+  std::vector<std::vector<TipMotionProtocol::Motion>>
+  TipMotionProtocol::motions(const data::Actuation &inflated,
                                                               const data::TipPose   &tip) const
   {
     struct Direction
@@ -168,7 +173,7 @@ namespace softchain::fem
     const Direction directions[] = {{"lateral", Eigen::Vector3d::UnitZ(), lateral, false},
                                     {"bending", Eigen::Vector3d::UnitY(), bending, false},
                                     {"twist", Eigen::Vector3d::UnitX(), twist, true}};
-    std::vector<std::vector<Sample>> chains;
+    std::vector<std::vector<Motion>> chains;
     for (const Direction &d : directions)
       for (const double sign : {1.0, -1.0})
         {
@@ -179,6 +184,7 @@ namespace softchain::fem
               const Eigen::Vector3d world  = tip.rotation * (amount * d.axis);
               data::TipMotion       motion;
               (d.turn ? motion.rotation : motion.translation) = {world.x(), world.y(), world.z()};
+              motion.point_contact = point_contact && !d.turn; // a twist needs the face held
               Sample sample;
               sample.actuation            = inflated;
               sample.actuation.role       = "protocol";
@@ -186,7 +192,8 @@ namespace softchain::fem
               sample.label = std::string("protocol ") + d.name + " " +
                              (d.turn ? degrees(amount) : millimetres(amount));
               sample.id    = data::sample_id(design_hash, sample.actuation);
-              chains.back().push_back(sample);
+              chains.back().push_back({sample, d.name, d.turn ? amount / degree : 1e3 * amount,
+                                       d.turn ? "deg" : "mm"});
             }
         }
     return chains;

@@ -1,6 +1,6 @@
 // ProtocolTorques on synthetic databases of a straight box finger: the trace
 // order, a twist against the closed form of springs in series, the mirror
-// symmetry of the lateral motions, and the error statistics.
+// symmetry of the lateral motions, the error statistics, the listing.
 #include <softchain/chain/protocol_torques.h>
 
 #include "../data/scratch_directory.h"
@@ -19,13 +19,14 @@ using chain::testing::uniform_finger;
 
 namespace
 {
-  // The inflated state (x = X: the tip frame is the world's) and one protocol
-  // sample per motion, with the given FEM base moments.
+  // The inflated state and one protocol sample per motion, with the given
+  // FEM base moments, and their listing (protocol_samples.csv).
   struct SyntheticProtocol
   {
     softchain::testing::ScratchDirectory dir;
     data::MeshRecord                     mesh = box_mesh(BoxMeshSpec{});
     data::ActuationDatabase              database;
+    data::CsvTable                       listing{{"sample", "motion", "amount", "unit"}};
 
     double pressure;
 
@@ -42,19 +43,29 @@ namespace
       rest.x              = mesh.X;
       rest.base_force = rest.base_moment = {0.0, 0.0, 0.0};
       database.store_sample(rest);
+      listing.add_row(std::vector<std::string>{rest.id, "inflation", "90", "deg"});
     }
 
-    void add(const data::TipMotion &motion, const data::Point3 &fem_moment)
+    void add(const std::string &kind, double amount, const data::TipMotion &motion,
+             const data::Point3 &fem_moment)
     {
       data::SampleRecord s;
       s.actuation.pressure   = pressure;
       s.actuation.role       = "protocol";
       s.actuation.tip_motion = motion;
       s.id                   = data::sample_id("h", s.actuation);
-      s.x                    = mesh.X; // the tip frame is read from the rest state only
+      s.x                    = mesh.X;
       s.base_force           = {0.0, 0.0, 0.0};
       s.base_moment          = fem_moment;
       database.store_sample(s);
+      listing.add_row(std::vector<std::string>{s.id, kind, data::CsvTable::cell(amount),
+                                               kind == "twist" ? "deg" : "mm"});
+    }
+
+    ProtocolTorques torques()
+    {
+      listing.write(dir.file("protocol_samples.csv"));
+      return ProtocolTorques(database, dir.file("protocol_samples.csv"));
     }
   };
 
@@ -71,9 +82,9 @@ TEST_CASE("the protocol's twist: the trace 0, +, ++, +, 0, -, --, -, 0 and the b
   const double      k = 0.004;
   SyntheticProtocol protocol("protocol_twist");
   for (const double beta : {10.0, 20.0, -10.0, -20.0})
-    protocol.add({{0, 0, 0}, {beta * degree, 0, 0}}, {k / 3 * beta * degree, 0, 0});
+    protocol.add("twist", beta, {{0, 0, 0}, {beta * degree, 0, 0}}, {k / 3 * beta * degree, 0, 0});
 
-  ProtocolTorques torques(protocol.database);
+  ProtocolTorques torques = protocol.torques();
   REQUIRE_FALSE(torques.empty());
   const ChainModel model = uniform_finger(3, 0.03, Eigen::Vector3d(k, 1, 1));
   torques.compare(model, {});
@@ -109,8 +120,8 @@ TEST_CASE("the protocol's lateral motions: a straight chain's base torques mirro
   // are placeholders (zero).
   SyntheticProtocol protocol("protocol_lateral", 2e4);
   for (const double dz : {0.004, 0.008, -0.004, -0.008})
-    protocol.add({{0, 0, dz}, {0, 0, 0}}, {0, 0, 0});
-  ProtocolTorques torques(protocol.database);
+    protocol.add("lateral", 1e3 * dz, {{0, 0, dz}, {0, 0, 0}}, {0, 0, 0});
+  ProtocolTorques torques = protocol.torques();
   const ChainModel model = uniform_finger(6, 0.015, Eigen::Vector3d(0.01, 0.02, 0.03),
                                           Eigen::Vector3d(0, 0, 3e-7));
   torques.compare(model, {});
@@ -126,10 +137,10 @@ TEST_CASE("the protocol's lateral motions: a straight chain's base torques mirro
   CHECK(trace.number(6, "uniform_Tz") == Approx(trace.number(2, "uniform_Tz")).margin(1e-10));
 }
 
-TEST_CASE("a database without protocol samples has no protocol")
+TEST_CASE("no listing: no protocol; a listed sample missing from the database: an error naming it")
 {
-  softchain::testing::ScratchDirectory dir("protocol_none");
-  auto database = data::ActuationDatabase::open_or_create(dir.file("db.h5"), {"box", "h", "Q1", "test", ""},
-                                                          box_mesh(BoxMeshSpec{}));
-  CHECK(ProtocolTorques(database).empty());
+  SyntheticProtocol protocol("protocol_listing");
+  CHECK(ProtocolTorques(protocol.database, protocol.dir.file("none.csv")).empty());
+  protocol.listing.add_row(std::vector<std::string>{"0123456789abcdef", "lateral", "1", "mm"});
+  CHECK_THROWS_WITH(protocol.torques(), Catch::Contains("sample 0123456789abcdef is not in the database"));
 }

@@ -244,15 +244,23 @@ TEST_CASE("a prescribed tip motion is part of the sample's id and reads back")
   SampleRecord turned = held;
   turned.actuation.tip_motion->rotation = {0.1, 0.0, 0.0};
   CHECK(sample_id("h1", turned.actuation) != held.id);
+  SampleRecord pointed = held; // the same translation by a point contact
+  pointed.actuation.tip_motion->point_contact = true;
+  pointed.id = sample_id("h1", pointed.actuation);
+  CHECK(pointed.id != held.id);
 
   db.store_sample(free);
   db.store_sample(held);
+  db.store_sample(pointed);
   const auto again = ActuationDatabase::open(path);
   check_equal_samples(again.read_sample(held.id), held);
   const auto motion = again.read_sample(held.id).actuation.tip_motion;
   REQUIRE(motion);
   CHECK(motion->translation == held.actuation.tip_motion->translation);
   CHECK(motion->rotation == held.actuation.tip_motion->rotation);
+  CHECK_FALSE(motion->point_contact);
+  CHECK(again.read_sample(pointed.id).actuation.tip_motion->point_contact);
+  check_equal_samples(again.read_sample(pointed.id), pointed);
   CHECK_FALSE(again.read_sample(free.id).actuation.tip_motion);
 }
 

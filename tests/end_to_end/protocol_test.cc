@@ -1,7 +1,8 @@
 // The validation protocol end to end on the tiny bender: the sweep inflates
 // it to the tip angle and moves its tip, the FEM's base torques obey the
 // design's mirror symmetry, a prescribed twist is the tip's fitted rotation,
-// a rerun solves nothing, and `softchain run` writes the torque traces.
+// a rerun solves nothing, `softchain run` writes the torque traces, and the
+// listing of the protocol's samples lives as long as the protocol.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/tip_pose_fit.h>
@@ -114,6 +115,22 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
     }
   CHECK(baseline);
   CHECK(run.output.find("tip-motion protocol at") != std::string::npos);
+  const auto listing = data::CsvTable::read(design.output() + "/protocol_samples.csv");
+  REQUIRE(listing.n_rows() == 13);
+  CHECK(listing.text(0, "motion") == "inflation");
+  CHECK(listing.text(0, "sample") == inflated.id);
+}
+
+TEST_CASE("a sweep without the protocol removes the earlier protocol's listing")
+{
+  const std::string springs = "subsection Springs\n  set Generate for bender = true\nend\n";
+  const testing::TinyDesign design("protocol_dropped", "set Pressure sweep = 1e3, 2e3, 3e3",
+                                   springs + protocol);
+  REQUIRE(design.run("sweep").status == 0);
+  CHECK(std::filesystem::exists(design.output() + "/protocol_samples.csv"));
+  design.write("set Pressure sweep = 1e3, 2e3, 3e3", springs);
+  REQUIRE(design.run("sweep").status == 0);
+  CHECK_FALSE(std::filesystem::exists(design.output() + "/protocol_samples.csv"));
 }
 
 TEST_CASE("a protocol parameter out of range stops the sweep before any solve, naming it")

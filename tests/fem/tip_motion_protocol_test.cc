@@ -115,7 +115,7 @@ TEST_CASE("the motion samples: six chains along the inflated tip frame's axes")
   for (const auto &chain : chains)
     {
       REQUIRE(chain.size() == 3);
-      for (const auto &s : chain)
+      for (const auto &[s, kind, amount, unit] : chain)
         {
           CHECK(s.actuation.role == "protocol");
           CHECK(s.actuation.pressure == 3e4);
@@ -125,18 +125,22 @@ TEST_CASE("the motion samples: six chains along the inflated tip frame's axes")
     }
   CHECK(ids.size() == 18);
   // Lateral: along the tip frame's z, which a bend about z leaves world z.
-  const auto &lateral = chains[0].back().actuation.tip_motion->translation;
+  const auto &lateral = chains[0].back().sample.actuation.tip_motion->translation;
   CHECK(lateral[2] == Approx(0.01));
   CHECK(std::abs(lateral[0]) + std::abs(lateral[1]) < 1e-15);
   // Bending, negative side, first step: -4/3 mm along the tip frame's y =
   // R e_y = +x world for a tip turned -90 deg about z.
-  const auto &bending = chains[3].front().actuation.tip_motion->translation;
+  const auto &bending = chains[3].front().sample.actuation.tip_motion->translation;
   CHECK(bending[0] == Approx(-0.004 / 3));
   CHECK(std::abs(bending[1]) < 1e-15);
   // Twist: about the tip frame's x = R e_x = -y world.
-  const auto &twist = chains[4].back().actuation.tip_motion->rotation;
+  const auto &twist = chains[4].back().sample.actuation.tip_motion->rotation;
   CHECK(twist[1] == Approx(-20 * degree));
-  CHECK(chains[4].back().label == "protocol twist +20 deg");
+  CHECK(chains[4].back().sample.label == "protocol twist +20 deg");
+  CHECK(chains[4].back().kind == "twist");
+  CHECK(chains[4].back().amount == Approx(20));
+  CHECK(chains[3].front().amount == Approx(-4.0 / 3));
+  CHECK(chains[3].front().unit == "mm");
 }
 
 TEST_CASE("protocol parameters out of range are refused, naming the parameter")

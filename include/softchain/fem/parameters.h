@@ -87,6 +87,7 @@ namespace softchain::fem
     // A rigid motion of the tip face, applied after the other loads
     // (relative to that state): translation [m] and rotation vector [rad].
     bool                   prescribe_tip = false;
+    bool                   tip_point_contact = false; // only the tip face's mean moved
     dealii::Tensor<1, 3>   tip_translation;
     dealii::Tensor<1, 3>   tip_rotation;
     static void declare(data::PrmSection &section);

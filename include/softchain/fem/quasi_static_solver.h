@@ -77,10 +77,11 @@ namespace softchain::fem
       set_displacement(owned_u);
       load = state;
     }
-    // Takes the current state as the one that later tip motions are relative
-    // to (PrescribedTip::anchor); a solve from a state without tip motion
+    // Takes the current state as the one that later tip motions (of the
+    // given kind: face held or point contact) are relative to
+    // (PrescribedTip::anchor); a solve from a state without tip motion
     // anchors there by itself, a restart from a moved state needs this first.
-    void anchor_tip_motion();
+    void anchor_tip_motion(bool point_contact);
     // Assembles rhs = -R(u) (and K = dR/du when with_matrix) at `state`.
     // Returns false if some quadrature point has J <= 0.
     bool assemble(const LoadState &state, bool with_matrix);
@@ -113,6 +114,7 @@ namespace softchain::fem
     // Residual scale of a solve whose loads may all be prescribed motion
     // (f_ext = 0): the residual right after the first step moved the tip.
     double                                              motion_residual_scale = 0.0;
+    bool pattern_couples_tip = false; // the matrix can hold a point contact's couplings
 
     dealii::TrilinosWrappers::SparseMatrix matrix;
     dealii::TrilinosWrappers::MPI::Vector  rhs;       // writable ghosts
@@ -124,6 +126,8 @@ namespace softchain::fem
     double                         f_ext_norm = 0.0;
 
     void setup_system();
+    void setup_matrix(const dealii::AffineConstraints<double> &constraints,
+                      const dealii::IndexSet                  &coupled);
     bool assemble_with(const LoadState &state, bool with_matrix,
                        const dealii::AffineConstraints<double> &constraints);
     bool assemble_cells(bool with_matrix, double gravity_factor,

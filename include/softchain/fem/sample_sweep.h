@@ -9,7 +9,10 @@
 // world rank 0 writes the database and prints one progress line per sample.
 // Then, if subsection Protocol asks for it, the samples of the paper's
 // validation experiment (TipMotionProtocol): the inflation to a tip angle,
-// found by trial samples, and the tip motions from that state.
+// found by trial samples, and the tip motions from that state, listed in
+// <output>/protocol_samples.csv (sample, motion, amount, unit; the first row
+// the inflated state, motion "inflation", amount the tip angle in deg) for
+// the chain tier; the file is removed when the .prm has no protocol.
 #include <softchain/data/prm_file.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/fem/finger_mesh.h>
@@ -67,6 +70,7 @@ namespace softchain::fem
     std::string                         run_protocol(Records &known, Summary &summary);
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
     data::TipPose                       tip_pose(const data::SampleRecord &record);
+    std::string                         protocol_listing() const;
     void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
                                            SweepProgress &progress, unsigned int n_groups) const;
     void                     solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,

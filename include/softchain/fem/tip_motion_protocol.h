@@ -11,6 +11,7 @@
 //     set Bending amplitude = 0.01    # m, along +-y of the tip frame
 //     set Twist amplitude   = 20      # deg, tip turned about +-x of the tip frame
 //     set Steps             = 4       # samples from 0 to each amplitude
+//     set Tip contact       = point   # point | face
 //   end
 //
 // First the finger is inflated until its tip frame has turned by the tip
@@ -21,7 +22,11 @@
 // inflation". Then, from that state, the tip face is moved rigidly along
 // each axis of the inflated tip frame in both directions, in `Steps` equal
 // increments up to the amplitude: 6 continuation chains of samples of role
-// "protocol", each with its tip motion in world axes. The tip frame is the
+// "protocol", each with its tip motion in world axes. The lateral and
+// bending motions move the tip by a point contact (the paper's chopstick: the
+// mean of the tip face moved, the face free to turn) or, with Tip contact =
+// face, the whole face rigidly; the twist always turns the whole face (the
+// tip rolled between two chopsticks). The tip frame is the
 // Kabsch fit of the tip face (data/tip_pose_fit.h): its x axis is the
 // finger's axis at the tip, z the lateral direction (world z for a finger
 // bending in its x-y plane).
@@ -30,6 +35,7 @@
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/fem/sample_set.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,7 +48,8 @@ namespace softchain::fem
     // Throws data::InputError naming the file and parameter.
     static TipMotionProtocol read(const data::PrmFile &prm, const std::string &design_hash);
 
-    bool enabled() const { return tip_angle > 0; }
+    bool   enabled() const { return tip_angle > 0; }
+    double tip_angle_degrees() const { return tip_angle * 180.0 / M_PI; }
 
     // A tip angle [rad] the inflation reached at a pressure [Pa]; NaN angle:
     // no equilibrium there (the solve failed or met a limit point).
@@ -62,9 +69,18 @@ namespace softchain::fem
 
     // The inflation sample at pressure p.
     Sample inflation(double pressure) const;
+    // One tip motion: its sample and, in the inflated tip frame, its kind
+    // (lateral, bending, twist) and signed amount (mm or deg).
+    struct Motion
+    {
+      Sample      sample;
+      std::string kind;
+      double      amount = 0.0;
+      std::string unit;
+    };
     // The motion samples from the inflated state `inflated` (its actuation
     // and tip pose): one chain per direction, by increasing amplitude.
-    std::vector<std::vector<Sample>> motions(const data::Actuation &inflated,
+    std::vector<std::vector<Motion>> motions(const data::Actuation &inflated,
                                              const data::TipPose   &tip) const;
 
     // The tip frame's rotation angle from the reference (rad).
@@ -79,5 +95,6 @@ namespace softchain::fem
     double      bending         = 0.0; // m
     double      twist           = 0.0; // rad
     int         steps           = 1;
+    bool        point_contact   = true;
   };
 } // namespace softchain::fem

@@ -1,8 +1,9 @@
 #pragma once
 // ProtocolTorques: the paper's validation experiment (Sec. IV-B, Figs. 10-11)
-// on the database's "protocol" samples: the finger inflated until its tip
-// turned by a target angle, then its tip face moved rigidly -- left and
-// right (+-z of the inflated tip frame), down and up (+-y), twisted (+-x).
+// on the samples the sweep listed in <output>/protocol_samples.csv (sample,
+// motion, amount, unit; first the inflated state): the finger inflated until
+// its tip turned by a target angle, then its tip moved -- left and right
+// (+-z of the inflated tip frame), down and up (+-y), twisted (+-x).
 // The FEM's base torques (each sample's base wrench) are the ground truth;
 // each chain model is driven through the same motions and its base torques
 // compared with them.
@@ -13,10 +14,10 @@
 //
 // The chain: its free equilibrium at the inflation pressure gives its own
 // tip point x0 and frame R0; a sample with the tip motion (t, theta) (world
-// axes, as the FEM prescribed it) holds the chain's tip point at x0 + t and
-// its tip frame at Rot(theta) R0 (TipConstrainedEquilibrium), so that each
-// model is moved from its own inflated state as the FEM finger was from its
-// own. Base torque: the moment about the base face's centroid of the
+// axes, as the FEM prescribed it) holds the chain's tip point at x0 + t and,
+// unless the motion is a point contact, its tip frame at Rot(theta) R0
+// (TipConstrainedEquilibrium), so that each model is moved from its own
+// inflated state as the FEM finger was from its own. Base torque: the moment about the base face's centroid of the
 // contact force at the tip plus the contact couple (base_wrench).
 // Error per torque component: the RMS over the trace of the chain's minus
 // the FEM's torque, in percent of the FEM's range (max - min) of that
@@ -35,10 +36,10 @@ namespace softchain::chain
   class ProtocolTorques
   {
   public:
-    // Reads the protocol samples of `database` (none: empty()). With
-    // protocols at several inflation pressures, the one with the most
-    // samples.
-    explicit ProtocolTorques(const data::ActuationDatabase &database);
+    // Reads the samples `listing` names from `database`; no listing file:
+    // empty(). InputError naming the file if a listed sample is missing or
+    // the inflated state did not converge.
+    ProtocolTorques(const data::ActuationDatabase &database, const std::string &listing);
 
     bool empty() const { return points_.empty(); }
     double pressure() const { return pressure_; }
@@ -67,6 +68,7 @@ namespace softchain::chain
       std::string     sample;       // id (the inflation sample for amount 0)
       Eigen::Vector3d translation = Eigen::Vector3d::Zero(); // world, m
       Eigen::Vector3d rotation    = Eigen::Vector3d::Zero(); // world, rad
+      bool            point_contact = false;                  // the tip point held, its frame free
       Eigen::Vector3d fem_torque  = Eigen::Vector3d::Zero(); // N m
     };
     struct ModelTrace

@@ -24,7 +24,9 @@
 //                         datasets: force_points (m,3), forces (m,3),
 //                         tip_motion (2,3), only if the tip is moved: the
 //                         translation [m] and rotation vector [rad] of the
-//                         tip face (Actuation::tip_motion),
+//                         tip face (Actuation::tip_motion), with the root
+//                         attribute tip_contact = "point" for a point
+//                         contact (absent: the face is held),
 //                         force_points_deformed (m,3), x (N,3),
 //                         base_wrench (2,3): the force and the moment the
 //                         finger exerts on its base (about the base face's
@@ -84,14 +86,18 @@ namespace softchain::data
     Point3 force; // dead load, world axes
   };
 
-  // A rigid motion prescribed to the tip face (the paper's validation, Sec.
-  // IV-B), relative to the equilibrium at the same pressure without it: the
-  // face is turned by the rotation vector `rotation` (axis times angle)
-  // about its centre and moved by `translation`, world axes.
+  // A motion prescribed to the tip (the paper's validation, Sec. IV-B),
+  // relative to the equilibrium at the same pressure without it, world axes.
+  // Face held (the default): the tip face moves rigidly, turned by the
+  // rotation vector `rotation` (axis times angle) about its centre and moved
+  // by `translation`. Point contact: only the mean of the tip face's nodes
+  // moves by `translation` (a chopstick's contact); the face is free to turn
+  // and deform, and `rotation` is zero.
   struct TipMotion
   {
     Point3 translation{}; // m
     Point3 rotation{};    // rad
+    bool   point_contact = false;
   };
 
   struct Actuation
