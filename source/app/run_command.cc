@@ -69,6 +69,8 @@ namespace softchain::app
         return "one sample of the database (HDF5): its load and deformed nodes";
       if (ends_with(dir, ".stale.samples"))
         return "one sample of an earlier design's database, moved aside";
+      if (name == "protocol_samples.csv")
+        return "the validation protocol's samples (inflated state, tip motions)";
       if (name == "database.h5.lock")
         return "the database's writer lock (empty)";
       if (ext == ".stale")
