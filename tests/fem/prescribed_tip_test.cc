@@ -25,24 +25,41 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 
 using namespace dealii;
 using namespace softchain;
 using namespace softchain::fem;
 
+namespace
+{
+  // The beam of these tests, its section constants and a Q2 solver on it
+  // (20 x 2 x 2 cells).
+  struct Beam
+  {
+    static constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.3;
+    static constexpr double I = h * h * h * h / 12, A = h * h, G = E / (2 * (1 + nu));
+    static constexpr double kappa = 10 * (1 + nu) / (12 + 11 * nu); // Cowper
+
+    Triangulation<3>                         mesh;
+    std::unique_ptr<test::MeshSolverFixture> f;
+
+    explicit Beam(const std::string &name)
+    {
+      test::cantilever_block(mesh, {20, 2, 2}, L, h);
+      f = std::make_unique<test::MeshSolverFixture>(
+        test::parameters_from_text(name, test::solid_prm("Q2", "log", E, nu)), mesh);
+    }
+  };
+} // namespace
+
 TEST_CASE("a prescribed tip translation gives the clamped-guided beam's force and base moment",
           "[fem][prescribed tip]")
 {
-  constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.3, delta = 1e-4;
-  const double     I = h * h * h * h / 12, A = h * h, G = E / (2 * (1 + nu));
-  const double     kappa = 10 * (1 + nu) / (12 + 11 * nu);
-  const double     beam  = delta / (L * L * L / (12 * E * I) + L / (kappa * G * A));
-
-  Triangulation<3> mesh;
-  test::cantilever_block(mesh, {20, 2, 2}, L, h);
-  test::MeshSolverFixture f(test::parameters_from_text(
-                              "prescribed_tip", test::solid_prm("Q2", "log", E, nu)),
-                            mesh);
+  Beam             b("prescribed_tip");
+  constexpr double L = Beam::L, E = Beam::E, I = Beam::I, A = Beam::A, delta = 1e-4;
+  const double     beam = delta / (L * L * L / (12 * E * I) + L / (Beam::kappa * Beam::G * A));
+  auto            &f    = *b.f;
   LoadState target;
   target.tip_motion = TipMotion{Tensor<1, 3>({0, delta, 0}), Tensor<1, 3>()};
   REQUIRE(f.solver->solve(target).converged);
@@ -82,15 +99,10 @@ TEST_CASE("a prescribed tip rotation after a translation: the motion is relative
   // on the base; tolerances as above (3 %), the moment 5 %: (2 - Phi) turns
   // the clamped faces' few per cent on Phi = 0.31 into up to twice as much.
   // Measured: F_y 1.8 % and M_z 2.4 % above these.
-  constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.3, theta = 0.01;
-  const double     I = h * h * h * h / 12, A = h * h, G = E / (2 * (1 + nu));
-  const double     kappa = 10 * (1 + nu) / (12 + 11 * nu);
-  const double     Phi   = 12 * E * I / (kappa * G * A * L * L);
-  Triangulation<3> mesh;
-  test::cantilever_block(mesh, {20, 2, 2}, L, h);
-  test::MeshSolverFixture f(test::parameters_from_text(
-                              "prescribed_tip_rotation", test::solid_prm("Q2", "log", E, nu)),
-                            mesh);
+  Beam             b("prescribed_tip_rotation");
+  constexpr double L = Beam::L, h = Beam::h, E = Beam::E, I = Beam::I, theta = 0.01;
+  const double     Phi = 12 * E * I / (Beam::kappa * Beam::G * Beam::A * L * L);
+  auto            &f   = *b.f;
   LoadState first;
   first.tip_motion = TipMotion{Tensor<1, 3>({0, 1e-4, 0}), Tensor<1, 3>()};
   REQUIRE(f.solver->solve(first).converged);
@@ -126,16 +138,10 @@ TEST_CASE("a point contact moving the tip gives the cantilever's force, no coupl
   // within 3 %, as for the clamped-guided beam above (measured +0.9 %); the
   // slope within 5 % (measured -0.5 %; estimated from the tip face's top and
   // bottom edges, which the uniform contact forces bend a little).
-  constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.3, delta = 1e-4;
-  const double     I = h * h * h * h / 12, A = h * h, G = E / (2 * (1 + nu));
-  const double     kappa = 10 * (1 + nu) / (12 + 11 * nu);
-  const double     beam  = delta / (L * L * L / (3 * E * I) + L / (kappa * G * A));
-
-  Triangulation<3> mesh;
-  test::cantilever_block(mesh, {20, 2, 2}, L, h);
-  test::MeshSolverFixture f(test::parameters_from_text(
-                              "point_contact", test::solid_prm("Q2", "log", E, nu)),
-                            mesh);
+  Beam             b("point_contact");
+  constexpr double L = Beam::L, h = Beam::h, E = Beam::E, I = Beam::I, A = Beam::A, delta = 1e-4;
+  const double     beam = delta / (L * L * L / (3 * E * I) + L / (Beam::kappa * Beam::G * A));
+  auto            &f    = *b.f;
   LoadState target;
   target.tip_motion = TipMotion{Tensor<1, 3>({0, delta, 0}), Tensor<1, 3>(), true};
   REQUIRE(f.solver->solve(target).converged);

@@ -1,10 +1,13 @@
 // Finite-difference checks of every tangent contribution: material (both
-// strain energies), follower pressure and embedded springs. The tangent K
-// must equal the directional derivative of the residual,
+// strain energies), follower pressure and embedded springs (at states with
+// slack, rounded-band and taut springs, asserted). The tangent K must equal
+// the directional derivative of the residual,
 //   K v = (R(u + h v) - R(u - h v)) / (2h) + O(h^2).
 #include "fem_test_tools.h"
 
 #include <catch2/catch.hpp>
+
+#include <array>
 
 using namespace dealii;
 using namespace softchain;
@@ -12,13 +15,29 @@ using namespace softchain::fem;
 
 namespace
 {
-  // Relative error |K v - FD| / |K v| at a random deformed state.
-  double tangent_error(test::SolverFixture &f, const LoadState &load)
+  // How many springs are slack (T = 0), in the rounded band (0 < T < EA d/2,
+  // i.e. 0 < eps < d) and taut (eps >= d) at the solver's state.
+  std::array<int, 3> links_per_branch(const QuasiStaticSolver &solver, const double d)
+  {
+    std::array<int, 3> count{};
+    const auto        &links    = solver.spring_network()->all_links();
+    const auto         tensions = solver.spring_network()->tensions(solver.displacement());
+    for (std::size_t k = 0; k < links.size(); ++k)
+      ++count[tensions[k] == 0 ? 0 : tensions[k] < links[k].axial_rigidity * d / 2 ? 1 : 2];
+    return count;
+  }
+
+  // Relative error |K v - FD| / |K v| at a random deformed state; with
+  // `branches`, the springs per branch of the tension law at that state.
+  double tangent_error(test::SolverFixture &f, const LoadState &load,
+                       std::array<int, 3> *branches = nullptr)
   {
     QuasiStaticSolver &solver = *f.solver;
     const auto         u      = test::smooth_displacement(solver, 2e-3, 0.05, 1);
     const auto         v      = test::smooth_displacement(solver, 1.0, 1.0, 2);
     solver.set_displacement(u);
+    if (branches)
+      *branches = links_per_branch(solver, f.prm.springs.smoothing_strain);
     REQUIRE(solver.assemble(load, true));
     TrilinosWrappers::MPI::Vector Kv(v);
     solver.tangent().vmult(Kv, v);
@@ -76,7 +95,14 @@ TEST_CASE("embedded spring tangent matches finite differences", "[fem][tangent]"
 {
   test::SolverFixture f(test::parameters_from_text("tangent_springs",
                                                    test::bender_prm("Q1", 4, options("log", true))));
-  CHECK(tangent_error(f, LoadState()) < 1e-6);
+  std::array<int, 3> branches{};
+  CHECK(tangent_error(f, LoadState(), &branches) < 1e-6);
+  // The state exercises every branch of the tension law: slack, the rounded
+  // band and taut links, so that each branch's tangent is checked.
+  INFO("slack " << branches[0] << ", band " << branches[1] << ", taut " << branches[2]);
+  CHECK(branches[0] > 0);
+  CHECK(branches[1] > 0);
+  CHECK(branches[2] > 0);
 }
 
 TEST_CASE("full tangent (material, pressure, springs) matches finite differences",
@@ -89,6 +115,9 @@ TEST_CASE("full tangent (material, pressure, springs) matches finite differences
       LoadState load;
       load.pressure = 2e4;
       INFO(element);
-      CHECK(tangent_error(f, load) < 1e-6);
+      std::array<int, 3> branches{};
+      CHECK(tangent_error(f, load, &branches) < 1e-6);
+      INFO("slack " << branches[0] << ", band " << branches[1] << ", taut " << branches[2]);
+      CHECK((branches[0] > 0 && branches[1] > 0 && branches[2] > 0));
     }
 }

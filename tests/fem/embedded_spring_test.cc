@@ -1,0 +1,78 @@
+// One embedded tension-only spring along a block whose tip face is pulled
+// (or pushed) along it by a prescribed motion. With nu = 0 the compressible
+// neo-Hookean block (lambda = 0: P = mu (F - F^-T)) stretched by lambda =
+// 1 + eps between its clamped and its held face deforms homogeneously with
+// no lateral contraction -- the lateral stress mu (b_22 - 1) / J vanishes --
+// so its base reaction is exactly A mu (lambda - 1/lambda), and every link
+// of the spring (one per cell it crosses) is stretched by eps and carries
+//     T = EA (eps - d/2)      for eps >= d,
+//     T = EA eps^2 / (2 d)    for 0 < eps < d   (the rounded band),
+//     T = 0                   for eps <= 0      (slack),
+// the law of embedded_spring_network.h with smoothing strain d. Equal
+// tensions cancel at the interior nodes, so the spring adds exactly T to the
+// base reaction. Q2 represents the homogeneous field exactly; tolerance 1e-6
+// relative: the Newton tolerance (1e-10 relative residual) lies far below,
+// a missing, doubled or compressive spring force far above.
+#include "fem_test_tools.h"
+
+#include <softchain/fem/base_reaction.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace dealii;
+using namespace softchain;
+using namespace softchain::fem;
+
+namespace
+{
+  constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.0, EA = 50.0, d = 1e-3;
+
+  // The base reaction along x after moving the tip face by delta along x,
+  // with or without the spring; `tensions` receives the links' tensions.
+  double pull(const double delta, const bool with_spring, std::vector<double> &tensions)
+  {
+    Triangulation<3> mesh;
+    test::cantilever_block(mesh, {20, 3, 3}, L, h);
+    const Parameters prm = test::parameters_from_text(
+      with_spring ? "spring_block" : "plain_block",
+      test::solid_prm("Q2", "log", E, nu,
+                      "subsection Springs\n  set Axial rigidity = fabric: 50\n"
+                      "  set Tension smoothing strain = 0.001\nend\n"));
+    std::vector<SpringPolyline> springs;
+    if (with_spring)
+      springs.push_back({"fabric", {Point<3>(0, h / 2, h / 2), Point<3>(L, h / 2, h / 2)}, false});
+    std::ostringstream log;
+    QuasiStaticSolver  solver(prm, mesh, {"solid"}, springs, MPI_COMM_WORLD, log);
+    LoadState          target;
+    target.tip_motion = TipMotion{Tensor<1, 3>({delta, 0, 0}), Tensor<1, 3>()};
+    REQUIRE(solver.solve(target).converged);
+    if (with_spring)
+      tensions = solver.spring_network()->tensions(solver.displacement());
+    return BaseReaction(solver.space()).wrench(solver.support_forces()).force[0];
+  }
+} // namespace
+
+TEST_CASE("an embedded spring pulled along its length adds its tension law to the reaction",
+          "[fem][springs]")
+{
+  for (const double eps : {1e-2, 0.5 * d, -1e-2}) // taut, in the rounded band, slack
+    {
+      const double delta = eps * L;
+      const double T     = eps >= d ? EA * (eps - d / 2) : eps > 0 ? EA * eps * eps / (2 * d) : 0.0;
+      const double lambda = 1 + eps, block = h * h * E / 2 * (lambda - 1 / lambda);
+      std::vector<double> tensions, unused;
+      const double        with = pull(delta, true, tensions), without = pull(delta, false, unused);
+      INFO("strain " << eps << ": reaction with " << with << " N, without " << without
+                     << " N (block " << block << " N), spring law " << T << " N");
+      CHECK(std::abs(without - block) <= 1e-6 * std::abs(block));
+      // One link per cell the spring crosses (20), each with the law's tension.
+      REQUIRE(tensions.size() == 20);
+      for (const double t : tensions)
+        CHECK(std::abs(t - T) <= 1e-6 * T + 1e-15);
+      // The base holds the block's reaction plus the spring's tension (the
+      // finger pulls its base toward the tip, +x, when stretched).
+      CHECK(std::abs((with - without) - T) <= 1e-6 * std::max(T, std::abs(block)));
+    }
+}
