@@ -5,6 +5,7 @@
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/app/commands.h>
 #include <softchain/data/csv_table.h>
+#include <softchain/data/input_error.h>
 #include <softchain/fem/finger_mesh.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/solution_output.h>
@@ -59,6 +60,10 @@ namespace softchain::app
         << " cells, " << solver.space().dof_handler.n_dofs() << " DoFs, "
         << Utilities::MPI::n_mpi_processes(comm) << " rank(s)\n";
 
+    if (prm.loads.pressure != 0.0 && !solver.pressure_load().has_cavity())
+      throw data::InputError(prm.file + ": parameter 'Pressure' in subsection 'Loads': a pressure "
+                             "needs the mesh's physical group 'cavity', and " + mesh.description +
+                             " has none");
     LoadState target;
     target.pressure       = prm.loads.pressure;
     target.point_loads    = prm.loads.point_loads;

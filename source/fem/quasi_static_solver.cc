@@ -266,7 +266,7 @@ namespace softchain::fem
       matrix = 0;
     rhs = 0;
     // External loads first: their norm scales the convergence test.
-    if (state.pressure != 0.0 && pressure->has_cavity())
+    if (state.pressure != 0.0)
       pressure->assemble(u_ghosted, state.pressure, constraints, with_matrix ? &matrix : nullptr,
                          rhs);
     if (!state.point_loads.empty())
@@ -455,6 +455,9 @@ namespace softchain::fem
   // with a quarter of the increment.
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target)
   {
+    if (target.pressure != 0.0 && !pressure->has_cavity())
+      throw data::InputError("a pressure of " + std::to_string(target.pressure) +
+                             " Pa needs the mesh's physical group 'cavity'; this mesh has none");
     const auto start_time = std::chrono::steady_clock::now();
     Result     result;
     const LoadState start = load;

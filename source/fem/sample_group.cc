@@ -78,8 +78,13 @@ namespace softchain::fem
     return step > 0 ? std::min(1.0, initial_load_step * load_size(target) / step) : 1.0;
   }
 
-  void SampleGroup::check_points(const std::vector<Sample> &samples) const
+  void SampleGroup::check_samples(const std::vector<Sample> &samples) const
   {
+    for (const auto &sample : samples)
+      if (sample.actuation.pressure != 0.0 && !solver.pressure_load().has_cavity())
+        throw data::InputError(prm.file + ": subsection 'Samples', sample '" + sample.label +
+                               "': a pressure needs the mesh's physical group 'cavity', and "
+                               "this mesh has none");
     for (const auto &sample : samples)
       if (!sample.actuation.point_forces.empty())
         EmbeddedPoints(solver.space(), points_of(sample.actuation),

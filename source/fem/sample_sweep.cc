@@ -280,7 +280,7 @@ namespace softchain::fem
     std::ostream log(prm.output.verbose && rank == 0 ? std::cout.rdbuf() : nullptr);
     {
       SampleGroup group(prm, mesh, group_comm, log);
-      group.check_points(set.samples);
+      group.check_samples(set.samples);
       std::optional<data::ActuationDatabase> database;
       std::string                            open_error;
       if (rank == 0)

@@ -27,8 +27,8 @@ namespace softchain::fem
     }
 
     // Throws data::InputError naming the file and the first sample with a
-    // force point outside the body.
-    void check_points(const std::vector<Sample> &samples) const;
+    // pressure on a mesh without a cavity or a force point outside the body.
+    void check_samples(const std::vector<Sample> &samples) const;
 
     // Solves `sample` from rest (start == nullptr) or from the converged
     // sample `start` (its stored positions and actuation). A sample with a
