@@ -166,6 +166,7 @@ namespace softchain::fem
     const auto inflated = inflate_to_tip_angle(known, summary);
     if (!inflated.second.empty())
       return inflated.second;
+    share_record(inflated.first, known); // every motion chain starts from it
     // The tip frame of the inflated finger, from rank 0 to all.
     std::vector<double> frame(9);
     if (root)
@@ -211,52 +212,78 @@ namespace softchain::fem
   // Secant steps on the tip angle over the pressure (TipMotionProtocol),
   // each trial a sample continued from the nearest lower pressure-only
   // equilibrium. Returns the index of the sample that reached the angle, or
-  // why none did. Rank 0 decides; the others follow its broadcasts.
+  // why none did. Rank 0, which holds every record, decides; the others
+  // follow its broadcasts and receive the records their solves start from.
   std::pair<std::size_t, std::string> SampleSweep::inflate_to_tip_angle(Records &known,
                                                                         Summary &summary)
   {
-    const bool root = world_rank() == 0;
-    std::vector<TipMotionProtocol::Trial> trials{{0.0, 0.0}};
-    std::map<double, std::size_t>         sample_at; // pressure-only samples by pressure
+    constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+    const bool            root = world_rank() == 0;
+    std::vector<TipMotionProtocol::Trial> trials{{0.0, 0.0}}; // rank 0
+    std::map<double, std::size_t>         sample_at;          // rank 0: pressure-only samples
     const auto                            add_trial = [&](const std::size_t i) {
       const auto &record = known.at(i);
       sample_at[record.actuation.pressure] = i;
-      if (root)
-        trials.push_back({record.actuation.pressure,
-                          record.converged() ? TipMotionProtocol::tip_angle_of(tip_pose(record)) : NAN});
+      trials.push_back({record.actuation.pressure,
+                        record.converged() ? TipMotionProtocol::tip_angle_of(tip_pose(record)) : NAN});
     };
-    for (const auto &[i, record] : known)
-      if (record.actuation.point_forces.empty() && !record.actuation.tip_motion)
-        add_trial(i);
+    if (root)
+      for (const auto &[i, record] : known)
+        if (record.actuation.point_forces.empty() && !record.actuation.tip_motion)
+          add_trial(i);
     for (unsigned int n = 0;; ++n)
       {
-        double hit = NAN, next = NAN;
+        // Rank 0: the sample that reached the angle, or the next pressure
+        // and the equilibrium to start from (none: rest).
+        std::size_t hit = none, start = none;
+        double      next = NAN;
         if (root)
           {
             if (const auto reached = protocol.reached(trials))
-              hit = reached->pressure;
-            else
-              next = protocol.next_pressure(trials);
+              hit = sample_at.at(reached->pressure);
+            else if (n < protocol.max_trials())
+              {
+                next = protocol.next_pressure(trials);
+                if (sample_at.count(next) > 0) // the search cannot refine further
+                  next = NAN;
+                for (const auto &[p, i] : sample_at)
+                  if (p < next && known.at(i).converged())
+                    start = i;
+              }
           }
-        hit  = Utilities::MPI::broadcast(MPI_COMM_WORLD, hit, 0);
-        next = Utilities::MPI::broadcast(MPI_COMM_WORLD, next, 0);
-        if (std::isfinite(hit))
-          return {sample_at.at(hit), ""};
-        if (n == protocol.max_trials() || sample_at.count(next) > 0)
+        hit   = Utilities::MPI::broadcast(MPI_COMM_WORLD, hit, 0);
+        next  = Utilities::MPI::broadcast(MPI_COMM_WORLD, next, 0);
+        start = Utilities::MPI::broadcast(MPI_COMM_WORLD, start, 0);
+        if (hit != none)
+          return {hit, ""};
+        if (!std::isfinite(next))
           return {0, "protocol: the inflation did not reach the " + protocol.target_text() +
                        " in " + std::to_string(n) + " trials (see the protocol inflation samples)"};
         const std::size_t index = set.samples.size();
         set.samples.push_back(protocol.inflation(next));
         set.chains.emplace_back();
-        const auto below = std::find_if(sample_at.rbegin(), sample_at.rend(), [&](const auto &s) {
-          return s.first < next && known.at(s.second).converged();
-        });
-        if (below != sample_at.rend())
-          set.chains.back().push_back(below->second);
+        if (start != none)
+          {
+            share_record(start, known);
+            set.chains.back().push_back(start);
+          }
         set.chains.back().push_back(index);
         solve_missing({index}, known, summary);
-        add_trial(index);
+        if (root)
+          add_trial(index);
       }
+  }
+
+  // Rank 0's record of sample i to every rank (a chain that continues from
+  // it may be solved by another sample group).
+  void SampleSweep::share_record(const std::size_t i, Records &known) const
+  {
+    data::SampleRecord record;
+    if (world_rank() == 0)
+      record = known.at(i);
+    record           = Utilities::MPI::broadcast(MPI_COMM_WORLD, record, 0);
+    record.actuation = set.samples[i].actuation; // not serialised: known from the id
+    known[i]         = std::move(record);
   }
 
   // The tip pose of a sample (rank 0: the database's mesh).

@@ -121,6 +121,23 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
   CHECK(listing.text(0, "sample") == inflated.id);
 }
 
+TEST_CASE("the protocol gives the same samples on 1 rank and on 2 ranks in 2 sample groups")
+{
+  // Each group solves whole chains on one rank, so every sample is the same
+  // serial solve -- provided each group gets the records its chains start
+  // from (the inflated state, solved by one group, starts all six motion chains).
+  const std::string samples = "set Pressure sweep = 1e3, 2e3, 3e3\nset Sample groups = 2";
+  const std::string springs = "subsection Springs\n  set Generate for bender = true\nend\n";
+  const testing::TinyDesign serial("protocol_serial", samples, springs + protocol);
+  const testing::TinyDesign parallel("protocol_parallel", samples, springs + protocol);
+  REQUIRE(serial.run("sweep").status == 0);
+  const auto outcome = parallel.run("sweep", 2);
+  INFO(outcome.output);
+  REQUIRE(outcome.status == 0);
+  CHECK(testing::sample_difference(data::ActuationDatabase::open(serial.database()),
+                                   data::ActuationDatabase::open(parallel.database())) == "");
+}
+
 TEST_CASE("a sweep without the protocol removes the earlier protocol's listing")
 {
   const std::string springs = "subsection Springs\n  set Generate for bender = true\nend\n";

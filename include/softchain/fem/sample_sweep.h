@@ -71,6 +71,7 @@ namespace softchain::fem
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
     data::TipPose                       tip_pose(const data::SampleRecord &record);
     std::string                         protocol_listing() const;
+    void share_record(std::size_t i, Records &known) const;
     void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
                                            SweepProgress &progress, unsigned int n_groups) const;
     void                     solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
