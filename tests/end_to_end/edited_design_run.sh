@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # A user copies parameter_files/p10.prm, edits it (another name,
-# another pressure list, thinner walls) and runs `softchain run` on the copy:
-# the whole pipeline works without touching code, and the edit takes effect.
+# another pressure list, thinner walls, no validation protocol) and runs
+# `softchain run` on the copy: the whole pipeline works without touching
+# code, and the edit takes effect. (The protocol's 90-degree inflation and
+# 12 tip motions would add minutes; tests/end_to_end/protocol_test.cc covers
+# it on the tiny bender.)
 #   edited_design_run.sh SOFTCHAIN PARAMETER_DIR
 # Resolution 0 and Newton tolerances of 1e-4 keep it to about a minute (the
 # update bound |du| <= 1e-4 |u| moves a tip angle of ~20 degrees by ~2e-3
@@ -17,8 +20,10 @@ sed -e "s/^\( *set Name *=\).*/\1 my_finger/" \
     -e "s/^\( *set Torsion couples *=\).*/\1 0.1/" \
     -e "s/^\( *set Force sample pressures *=\).*/\1 0/" \
     -e "s/^\( *set Validation samples *=\).*/\1 7.5e3/" \
+    -e "s/^\( *set Tip angle *=\).*/\1 0/" \
     "$parameters/p10.prm" > my_finger.prm
 printf 'subsection Solver\n  set Residual tolerance = 1e-4\n  set Displacement tolerance = 1e-4\nend\n' >> my_finger.prm
+grep -q "^ *set Tip angle *= 0$" my_finger.prm || { echo "FAIL: the edit did not turn the protocol off"; exit 1; }
 rm -rf out-my_finger
 status=0
 "$softchain" run my_finger.prm > run.log 2>&1 || status=$?
