@@ -455,6 +455,11 @@ namespace softchain::fem
   // with a quarter of the increment.
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target)
   {
+    return solve(target, prm.solver.initial_load_step);
+  }
+
+  QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target, const double first_step)
+  {
     if (target.pressure != 0.0 && !pressure->has_cavity())
       throw data::InputError("a pressure of " + std::to_string(target.pressure) +
                              " Pa needs the mesh's physical group 'cavity'; this mesh has none");
@@ -462,7 +467,7 @@ namespace softchain::fem
     Result     result;
     const LoadState start = load;
     prepare_tip_motion(target);
-    double     s = 0.0, s_previous = 0.0, step = prm.solver.initial_load_step;
+    double     s = 0.0, s_previous = 0.0, step = first_step;
     bool       last_inverted = false;
     // (pressure, cavity volume) of converged states, to tell a limit point.
     std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};

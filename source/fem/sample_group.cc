@@ -50,7 +50,6 @@ namespace softchain::fem
     , solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, group, log)
     , nodes(solver.space())
     , base(solver.space())
-    , initial_load_step(parameters.solver.initial_load_step)
   {}
 
   double SampleGroup::first_step(const data::Actuation *start, const data::Actuation &target) const
@@ -65,17 +64,17 @@ namespace softchain::fem
               increment.rotation[c] -= start->tip_motion->rotation[c];
             }
         const double step = motion_size(increment);
-        return step > 0 ? std::min(1.0, initial_load_step * motion_size(target.tip_motion) / step) : 1.0;
+        return step > 0 ? std::min(1.0, prm.solver.initial_load_step * motion_size(target.tip_motion) / step) : 1.0;
       }
     if (!start || start->point_forces.size() != target.point_forces.size())
-      return initial_load_step;
+      return prm.solver.initial_load_step;
     data::Actuation increment = target; // the forces at the same points, in chain order
     increment.pressure -= start->pressure;
     for (std::size_t k = 0; k < increment.point_forces.size(); ++k)
       for (unsigned int c = 0; c < 3; ++c)
         increment.point_forces[k].force[c] -= start->point_forces[k].force[c];
     const double step = load_size(increment);
-    return step > 0 ? std::min(1.0, initial_load_step * load_size(target) / step) : 1.0;
+    return step > 0 ? std::min(1.0, prm.solver.initial_load_step * load_size(target) / step) : 1.0;
   }
 
   void SampleGroup::check_samples(const std::vector<Sample> &samples) const
@@ -107,8 +106,8 @@ namespace softchain::fem
       solver.set_state(nodes.displacement(start->x), load_of(start->actuation));
     else
       solver.reset();
-    prm.solver.initial_load_step = first_step(start ? &start->actuation : nullptr, sample.actuation);
-    const auto         result = solver.solve(load_of(sample.actuation));
+    const auto result = solver.solve(load_of(sample.actuation),
+                                     first_step(start ? &start->actuation : nullptr, sample.actuation));
     data::SampleRecord record;
     record.id                  = sample.id;
     record.actuation           = sample.actuation;

@@ -61,8 +61,10 @@ namespace softchain::fem
                       std::ostream                      &log);
 
     // Moves the current state (rest, or the last converged state) to
-    // `target` along the straight load path between them.
+    // `target` along the straight load path between them, the first load
+    // step `first_step` of the path (default: Solver/Initial load step).
     Result solve(const LoadState &target);
+    Result solve(const LoadState &target, double first_step);
     // Back to the undeformed state with no load.
     void reset();
 

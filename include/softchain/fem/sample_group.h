@@ -44,13 +44,10 @@ namespace softchain::fem
     void print_timing() { solver.timer().print_summary(); }
 
   private:
-    // The solver reads its parameters from here; solve() sets the initial
-    // load step of each sample (see first_step()).
-    Parameters        prm;
+    const Parameters  prm; // the solver's (it keeps a reference)
     QuasiStaticSolver solver;
     DatabaseExport    nodes;
     BaseReaction      base; // each sample's base wrench
-    const double      initial_load_step;
 
     // The first load factor of a solve from `start` to `target`: the .prm's
     // initial load step scaled so that the first increment is as large as
