@@ -1,5 +1,6 @@
 #include <softchain/chain/base_wrench.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
 #include <array>
@@ -37,9 +38,7 @@ namespace softchain::chain
   Eigen::Vector3d base_face_centroid(const data::MeshRecord &mesh)
   {
     const std::set<std::int64_t> base(mesh.base_nodes.begin(), mesh.base_nodes.end());
-    const auto                   X = [&](std::int64_t i) {
-      return Eigen::Vector3d(mesh.X[i][0], mesh.X[i][1], mesh.X[i][2]);
-    };
+    const auto                   X = [&](std::int64_t i) { return data::vector_of(mesh.X[i]); };
     double          area = 0.0;
     Eigen::Vector3d moment = Eigen::Vector3d::Zero();
     const int       k      = mesh.nodes_per_cell;

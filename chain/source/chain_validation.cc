@@ -1,5 +1,6 @@
 #include <softchain/chain/chain_validation.h>
 #include <softchain/chain/angle_units.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
 #include <chrono>
@@ -12,13 +13,11 @@ namespace softchain::chain
   {
     using data::CsvTable;
 
-    Eigen::Vector3d vector_of(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
-
     ChainLoad load_of(const data::Actuation &actuation)
     {
       ChainLoad load{actuation.pressure, {}};
       for (const data::PointForce &f : actuation.point_forces)
-        load.point_loads.push_back({vector_of(f.point), vector_of(f.force)});
+        load.point_loads.push_back({data::vector_of(f.point), data::vector_of(f.force)});
       return load;
     }
 

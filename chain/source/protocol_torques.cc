@@ -3,6 +3,7 @@
 #include <softchain/chain/tip_constrained_equilibrium.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/tip_pose_fit.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <Eigen/Geometry>
 
@@ -13,15 +14,6 @@
 
 namespace softchain::chain
 {
-  namespace
-  {
-    Eigen::Vector3d vector_of(const data::Point3 &p)
-    {
-      return {p[0], p[1], p[2]};
-    }
-
-  } // namespace
-
   ProtocolTorques::ProtocolTorques(const data::ActuationDatabase &database,
                                    const std::string             &listing)
   {
@@ -55,11 +47,11 @@ namespace softchain::chain
         const auto &m = *s.actuation.tip_motion;
         by_kind[rows.text(r, "motion")][rows.number(r, "amount")] =
           TracePoint{rows.text(r, "motion"), rows.number(r, "amount"), s.id,
-                     vector_of(m.translation), vector_of(m.rotation), m.point_contact,
-                     vector_of(s.base_moment)};
+                     data::vector_of(m.translation), data::vector_of(m.rotation), m.point_contact,
+                     data::vector_of(s.base_moment)};
       }
     const TracePoint rest{"", 0.0, inflated.id, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                          false, vector_of(inflated.base_moment)};
+                          false, data::vector_of(inflated.base_moment)};
     // 0 -> +a -> 0 -> -a -> 0 per kind, in the paper's order.
     for (const std::string kind : {"lateral", "bending", "twist"})
       {

@@ -6,7 +6,7 @@
 // S0 is singular exactly when the slab's nodes lie in one plane.
 #include <softchain/data/input_error.h>
 #include <softchain/reduction/affine_slab_fit.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
@@ -26,7 +26,7 @@ namespace softchain::reduction
     {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       for (const auto j : nodes)
-        sum += vector_of(points[j]);
+        sum += data::vector_of(points[j]);
       return sum / static_cast<double>(nodes.size());
     }
 
@@ -51,9 +51,9 @@ namespace softchain::reduction
     Eigen::Matrix3d       C      = Eigen::Matrix3d::Zero();
     for (const auto j : nodes)
       {
-        const Eigen::Vector3d P0 = vector_of(X[j]) - mean_0;
+        const Eigen::Vector3d P0 = data::vector_of(X[j]) - mean_0;
         S0 += P0 * P0.transpose();
-        C += (vector_of(x[j]) - mean) * P0.transpose();
+        C += (data::vector_of(x[j]) - mean) * P0.transpose();
       }
     const Eigen::Vector3d eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(S0).eigenvalues();
     if (eigenvalues(0) <= flat_slab_ratio * eigenvalues(2))

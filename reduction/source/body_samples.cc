@@ -2,7 +2,7 @@
 // sample's node positions at located points, and the body lattice.
 #include <softchain/data/input_error.h>
 #include <softchain/reduction/body_samples.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <Eigen/LU>
 
@@ -55,7 +55,7 @@ namespace softchain::reduction
     if (!(spacing_ > 0))
       throw data::InputError(source + ": the body sampling spacing must be positive");
     for (const auto &X : mesh.X)
-      box_.extend(vector_of(X));
+      box_.extend(data::vector_of(X));
     for (std::size_t c = 0; c < n_cells_; ++c)
       {
         Eigen::AlignedBox3d cell_box;
@@ -69,7 +69,7 @@ namespace softchain::reduction
 
   Eigen::Vector3d BodySamples::corner(std::size_t cell, int a) const
   {
-    return vector_of(mesh_.X[mesh_.cells[cell * corners_ + a]]);
+    return data::vector_of(mesh_.X[mesh_.cells[cell * corners_ + a]]);
   }
 
   // A uniform grid of about one cell per bucket: each cell is listed in
@@ -170,7 +170,7 @@ namespace softchain::reduction
   {
     Eigen::Vector3d y = Eigen::Vector3d::Zero();
     for (int a = 0; a < corners_; ++a)
-      y += point.weights[a] * vector_of(x[mesh_.cells[point.cell * corners_ + a]]);
+      y += point.weights[a] * data::vector_of(x[mesh_.cells[point.cell * corners_ + a]]);
     return y;
   }
 

@@ -2,7 +2,7 @@
 // slab's reference bounding box, Gram-Schmidt from the long axis x.
 #include <softchain/data/input_error.h>
 #include <softchain/reduction/bounding_box_frame.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 namespace softchain::reduction
 {
@@ -24,12 +24,12 @@ namespace softchain::reduction
         {
           if (X[j][k] <= box.min()(k) + tolerance)
             {
-              low += vector_of(x[j]);
+              low += data::vector_of(x[j]);
               ++n_low;
             }
           if (X[j][k] >= box.max()(k) - tolerance)
             {
-              high += vector_of(x[j]);
+              high += data::vector_of(x[j]);
               ++n_high;
             }
         }

@@ -1,7 +1,7 @@
 // ExternalForceTorque: moment of the distal dead loads about J_i.
 #include <softchain/data/input_error.h>
 #include <softchain/reduction/external_force_torque.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <Eigen/Geometry>
 
@@ -25,8 +25,8 @@ namespace softchain::reduction
     const auto     &forces = sample_.actuation.point_forces;
     for (std::size_t k = 0; k < forces.size(); ++k)
       if (forces[k].point[0] > x_joint)
-        moment += (vector_of(sample_.force_points_deformed[k]) - centre)
-                    .cross(vector_of(forces[k].force));
+        moment += (data::vector_of(sample_.force_points_deformed[k]) - centre)
+                    .cross(data::vector_of(forces[k].force));
     return frame.transpose() * moment;
   }
 } // namespace softchain::reduction

@@ -2,7 +2,7 @@
 // layer lands on the layer's deformed joints best.
 #include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/neutral_layer.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +47,7 @@ namespace softchain::reduction
     for (int joint = 1; joint <= layout.n_joints(); ++joint)
       x_joints_.push_back(layout.x(joint));
     for (const auto node : tip_nodes_)
-      tip_centroid_ += vector_of(mesh.X[node]) / double(tip_nodes_.size());
+      tip_centroid_ += data::vector_of(mesh.X[node]) / double(tip_nodes_.size());
     // The heights from the bottom up while every joint lies in the body.
     const Eigen::AlignedBox3d          &box  = body_->reference_box();
     const double                        step = box.sizes()(1) / n_heights;
@@ -134,7 +134,7 @@ namespace softchain::reduction
     // The last link carries the tip face's centroid T_0 to T.
     Eigen::Vector3d tip = Eigen::Vector3d::Zero();
     for (const auto node : tip_nodes_)
-      tip += vector_of(x[node]) / double(tip_nodes_.size());
+      tip += data::vector_of(x[node]) / double(tip_nodes_.size());
     const Eigen::Vector3d J_n(x_joints_.back(), y, z_centre_);
     error += rotations.back() * (tip_centroid_ - J_n) - (tip - body_->deformed(joints.back(), x));
     return sum + error.squaredNorm();

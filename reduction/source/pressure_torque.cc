@@ -1,7 +1,7 @@
 // PressureTorque: J_p from the deformed cavity triangles distal to the
 // section plane through the joint centre, clipped at the plane.
 #include <softchain/reduction/pressure_torque.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <Eigen/Geometry>
 
@@ -51,7 +51,7 @@ namespace softchain::reduction
                                  const std::vector<data::Point3>                &x)
   {
     for (const auto &t : cavity_triangles)
-      triangles_.push_back({vector_of(x[t[0]]), vector_of(x[t[1]]), vector_of(x[t[2]])});
+      triangles_.push_back({data::vector_of(x[t[0]]), data::vector_of(x[t[1]]), data::vector_of(x[t[2]])});
   }
 
   Eigen::Vector3d PressureTorque::per_pascal(const Eigen::Vector3d &centre,

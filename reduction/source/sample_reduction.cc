@@ -3,7 +3,7 @@
 #include <softchain/reduction/joint_frames.h>
 #include <softchain/reduction/pressure_torque.h>
 #include <softchain/reduction/sample_reduction.h>
-#include <softchain/reduction/vector_of_point.h>
+#include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
 
@@ -17,7 +17,7 @@ namespace softchain::reduction
     , force_norm_(0.0)
   {
     for (const auto &f : sample.actuation.point_forces)
-      force_norm_ += vector_of(f.force).norm();
+      force_norm_ += data::vector_of(f.force).norm();
     const JointFrames frames(method, geometry.slabs(), geometry.reference_points(),
                              geometry.points(sample.x), sample.id);
     const PressureTorque      pressure_torque(mesh.cavity_triangles, sample.x);

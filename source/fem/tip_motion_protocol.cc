@@ -1,4 +1,3 @@
-#include <softchain/data/input_error.h>
 #include <softchain/fem/tip_motion_protocol.h>
 
 #include <Eigen/Geometry>
@@ -61,15 +60,13 @@ namespace softchain::fem
     prm.parse_section("Protocol", section);
     const auto positive = [&](const std::string &name) {
       const double value = section.get_double(name);
-      if (!(value > 0))
-        throw data::InputError(section.describe(name) + ": must be > 0");
+      section.require(value > 0, name, "must be > 0");
       return value;
     };
     TipMotionProtocol protocol;
     protocol.design_hash = design_hash;
     const double angle   = section.get_double("Tip angle");
-    if (angle < 0 || angle >= 180)
-      throw data::InputError(section.describe("Tip angle") + ": must be in [0, 180) degrees");
+    section.require(angle >= 0 && angle < 180, "Tip angle", "must be in [0, 180) degrees");
     protocol.tip_angle       = angle * degree;
     protocol.angle_tolerance = positive("Angle tolerance") * degree;
     protocol.first_pressure  = positive("First pressure");
@@ -78,8 +75,7 @@ namespace softchain::fem
     protocol.twist           = positive("Twist amplitude") * degree;
     protocol.steps           = section.get_integer("Steps");
     protocol.point_contact   = section.get_selection("Tip contact", {"point", "face"}) == "point";
-    if (protocol.steps < 1)
-      throw data::InputError(section.describe("Steps") + ": must be at least 1");
+    section.require(protocol.steps >= 1, "Steps", "must be at least 1");
     return protocol;
   }
 

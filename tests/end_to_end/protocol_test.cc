@@ -6,6 +6,7 @@
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/tip_pose_fit.h>
+#include <softchain/data/vector_of_point.h>
 
 #include "tiny_design.h"
 
@@ -24,11 +25,6 @@ namespace
                                "  set Tip angle = 20\n  set Angle tolerance = 0.5\n"
                                "  set Lateral amplitude = 0.002\n  set Bending amplitude = 0.001\n"
                                "  set Twist amplitude = 5\n  set Steps = 2\nend\n";
-
-  Eigen::Vector3d vector_of(const data::Point3 &p)
-  {
-    return {p[0], p[1], p[2]};
-  }
 } // namespace
 
 TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, torque traces")
@@ -66,14 +62,14 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
   for (const auto &m : motions)
     {
       REQUIRE(m.converged());
-      const Eigen::Vector3d t = R.transpose() * vector_of(m.actuation.tip_motion->translation),
-                            theta = R.transpose() * vector_of(m.actuation.tip_motion->rotation);
+      const Eigen::Vector3d t = R.transpose() * data::vector_of(m.actuation.tip_motion->translation),
+                            theta = R.transpose() * data::vector_of(m.actuation.tip_motion->rotation);
       // A twist turns the tip face by the prescribed rotation (held by
       // constraints: exact up to the fit's round-off).
       if (theta.norm() > 0)
         {
           const Eigen::AngleAxisd turned(pose(m).rotation * R.transpose());
-          CHECK((turned.angle() * turned.axis() - vector_of(m.actuation.tip_motion->rotation)).norm() <
+          CHECK((turned.angle() * turned.axis() - data::vector_of(m.actuation.tip_motion->rotation)).norm() <
                 1e-9);
         }
       // The bender is symmetric about its mid-plane z = const: the lateral
@@ -82,9 +78,9 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
       // agree to 6e-12 of the moment; 1e-8 of it bounds the solver's residual.
       if (t.z() > 1e-6) // a lateral motion (the others' z is round-off)
         for (const auto &n : motions)
-          if (std::abs((R.transpose() * vector_of(n.actuation.tip_motion->translation)).z() + t.z()) < 1e-12)
+          if (std::abs((R.transpose() * data::vector_of(n.actuation.tip_motion->translation)).z() + t.z()) < 1e-12)
             {
-              const Eigen::Vector3d a = vector_of(m.base_moment), b = vector_of(n.base_moment);
+              const Eigen::Vector3d a = data::vector_of(m.base_moment), b = data::vector_of(n.base_moment);
               INFO("lateral " << t.z());
               CHECK(a.norm() > 0);
               CHECK(std::abs(a.x() + b.x()) <= 1e-8 * a.norm());

@@ -4,6 +4,7 @@
 // the layer, bending onto an arc about the layer, a uniform stretch.
 #include <softchain/data/input_error.h>
 #include <softchain/data/joint_angles.h>
+#include <softchain/data/vector_of_point.h>
 #include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/neutral_layer.h>
 
@@ -42,15 +43,13 @@ namespace
     return box_mesh(spec);
   }
 
-  Eigen::Vector3d vector_of(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
-
   std::vector<data::Point3> deform(const std::vector<data::Point3> &X,
                                    const std::function<Eigen::Vector3d(const Eigen::Vector3d &)> &map)
   {
     std::vector<data::Point3> x;
     for (const auto &p : X)
       {
-        const Eigen::Vector3d y = map(vector_of(p));
+        const Eigen::Vector3d y = map(data::vector_of(p));
         x.push_back({y(0), y(1), y(2)});
       }
     return x;
@@ -174,7 +173,7 @@ TEST_CASE("the body lattice samples the volume and moves exactly with an affine 
       const auto moved  = body.deformed_lattice(deform(mesh.X, affine));
       double     error  = 0;
       for (std::size_t q = 0; q < moved.size(); ++q)
-        error = std::max(error, (vector_of(moved[q]) - affine(vector_of(body.lattice()[q]))).norm());
+        error = std::max(error, (data::vector_of(moved[q]) - affine(data::vector_of(body.lattice()[q]))).norm());
       CHECK(error < exact_position * 10); // the hexahedra's Newton inverse adds ~1e-16 m
     }
 }
@@ -192,7 +191,7 @@ TEST_CASE("a finger hinged at its joints on the layer is reduced exactly by M1 a
       std::vector<data::Point3> x;
       for (std::size_t j = 0; j < mesh.X.size(); ++j)
         {
-          const Eigen::Vector3d y = motion(vector_of(mesh.X[j]), segmented.segment[j]);
+          const Eigen::Vector3d y = motion(data::vector_of(mesh.X[j]), segmented.segment[j]);
           x.push_back({y(0), y(1), y(2)});
         }
       for (const double b : {a / 2, a / 3})

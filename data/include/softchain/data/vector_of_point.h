@@ -4,10 +4,10 @@
 
 #include <Eigen/Core>
 
-namespace softchain::reduction
+namespace softchain::data
 {
   inline Eigen::Vector3d vector_of(const data::Point3 &p)
   {
     return Eigen::Vector3d(p[0], p[1], p[2]);
   }
-} // namespace softchain::reduction
+} // namespace softchain::data
