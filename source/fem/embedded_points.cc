@@ -19,6 +19,7 @@ namespace softchain::fem
     {
       const FiniteElement<3> &fe = *space.fe;
       EmbeddedPoints::Stencil s;
+      s.cell = cell->active_cell_index();
       s.dof.resize(fe.n_dofs_per_cell());
       cell->get_dof_indices(s.dof);
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)

@@ -5,6 +5,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <sstream>
+
 namespace softchain::fem
 {
   using namespace dealii;
@@ -63,99 +65,69 @@ namespace softchain::fem
       }
     nodes = std::make_unique<EmbeddedPoints>(space, ends, midpoints, "spring node");
     owned_stencils.resize(links.size());
+    links_in_cell.resize(space.triangulation.n_active_cells());
     for (unsigned int k = 0; k < links.size(); ++k)
       if (nodes->owned(links[k].a))
-        owned_stencils[k] = link_stencil(links[k]);
+        {
+          const auto &a = nodes->stencil(links[k].a), &b = nodes->stencil(links[k].b);
+          if (!nodes->owned(links[k].b) || a.cell != b.cell || a.dof != b.dof)
+            {
+              std::ostringstream message;
+              message << "spring link " << k << " of network '" << network_names[links[k].network]
+                      << "' from (" << nodes->reference_point(links[k].a) << ") to ("
+                      << nodes->reference_point(links[k].b)
+                      << ") does not lie in one cell of the mesh";
+              throw data::InputError(message.str());
+            }
+          owned_stencils[k] = link_stencil(links[k]);
+          links_in_cell[a.cell].push_back(k);
+        }
   }
 
+  // The DoFs of the link's cell, in its order, each with
+  // delta_i = N_i(b) - N_i(a).
   EmbeddedSpringNetwork::LinkStencil
   EmbeddedSpringNetwork::link_stencil(const Link &link) const
   {
-    LinkStencil result;
-    std::map<types::global_dof_index, unsigned int> position;
-    for (const unsigned int side : {0u, 1u})
-      {
-        const auto &s = nodes->stencil(side == 0 ? link.a : link.b);
-        for (unsigned int i = 0; i < s.dof.size(); ++i)
-          {
-            const auto [it, inserted] = position.emplace(s.dof[i], result.dofs.size());
-            if (inserted)
-              {
-                result.dofs.push_back(s.dof[i]);
-                result.to_coordinate.emplace_back();
-              }
-            result.to_coordinate[it->second].emplace_back(3 * side + s.component[i],
-                                                          s.weight[i]);
-          }
-      }
+    const auto &a = nodes->stencil(link.a), &b = nodes->stencil(link.b);
+    LinkStencil result{a.component, b.weight,
+                       nodes->reference_point(link.b) - nodes->reference_point(link.a)};
+    for (unsigned int i = 0; i < a.weight.size(); ++i)
+      result.delta[i] -= a.weight[i];
     return result;
   }
 
-  void EmbeddedSpringNetwork::add_couplings(const AffineConstraints<double> &constraints,
-                                            DynamicSparsityPattern          &pattern) const
+  void EmbeddedSpringNetwork::add_link(const Link &link, const LinkStencil &s,
+                                       const Vector<double> &u, FullMatrix<double> *matrix,
+                                       Vector<double> &rhs) const
   {
-    for (const auto &stencil : owned_stencils)
-      constraints.add_entries_local_to_global(stencil.dofs, pattern, false);
+    Tensor<1, 3> d = s.rest_vector;
+    for (unsigned int i = 0; i < s.component.size(); ++i)
+      d[s.component[i]] += s.delta[i] * u[i];
+    const double l        = d.norm();
+    const auto [T, dT_dl] = tension(link, l, smoothing);
+    if (T == 0.0)
+      return; // slack: no force, no stiffness
+    const Tensor<1, 3> e = d / l;
+    for (unsigned int i = 0; i < s.component.size(); ++i)
+      rhs(i) -= s.delta[i] * T * e[s.component[i]];
+    if (!matrix)
+      return;
+    double H[3][3];
+    for (unsigned int c = 0; c < 3; ++c)
+      for (unsigned int c2 = 0; c2 < 3; ++c2)
+        H[c][c2] = dT_dl * e[c] * e[c2] + T / l * ((c == c2) - e[c] * e[c2]);
+    for (unsigned int i = 0; i < s.component.size(); ++i)
+      for (unsigned int j = 0; j < s.component.size(); ++j)
+        (*matrix)(i, j) += s.delta[i] * H[s.component[i]][s.component[j]] * s.delta[j];
   }
 
-  IndexSet EmbeddedSpringNetwork::touched_dofs(const types::global_dof_index n_dofs) const
+  void EmbeddedSpringNetwork::assemble_cell(const unsigned int cell_index, const Vector<double> &cell_u,
+                                            FullMatrix<double> *cell_matrix,
+                                            Vector<double>     &cell_rhs) const
   {
-    IndexSet set(n_dofs);
-    for (const auto &stencil : owned_stencils)
-      for (const auto dof : stencil.dofs)
-        set.add_index(dof);
-    set.compress();
-    return set;
-  }
-
-  void EmbeddedSpringNetwork::assemble(const TrilinosWrappers::MPI::Vector &u,
-                                       const AffineConstraints<double>     &constraints,
-                                       TrilinosWrappers::SparseMatrix      *matrix,
-                                       TrilinosWrappers::MPI::Vector       &rhs) const
-  {
-    const auto x = nodes->deformed(u);
-    for (unsigned int k = 0; k < links.size(); ++k)
-      {
-        const Link &link = links[k];
-        if (!nodes->owned(link.a))
-          continue;
-        const Tensor<1, 3> d = x[link.b] - x[link.a];
-        const double       l       = d.norm();
-        const auto [T, dT_dl]      = tension(link, l, smoothing);
-        if (T == 0.0)
-          continue; // slack: no force, no stiffness
-        const Tensor<1, 3> e = d / l;
-
-        // Internal force on (x_a, x_b) and the 6x6 tangent [[H, -H], [-H, H]].
-        double g[6], H[6][6] = {};
-        for (unsigned int c = 0; c < 3; ++c)
-          g[c] = -T * e[c], g[3 + c] = T * e[c];
-        for (unsigned int c = 0; c < 3; ++c)
-          for (unsigned int d2 = 0; d2 < 3; ++d2)
-            {
-              const double h = dT_dl * e[c] * e[d2] + T / l * ((c == d2) - e[c] * e[d2]);
-              H[c][d2] = H[3 + c][3 + d2] = h;
-              H[c][3 + d2] = H[3 + c][d2] = -h;
-            }
-
-        const LinkStencil &s = owned_stencils[k];
-        const unsigned int n = s.dofs.size();
-        Vector<double>     local_rhs(n);
-        FullMatrix<double> local_matrix(n, n);
-        for (unsigned int i = 0; i < n; ++i)
-          for (const auto &[r, w] : s.to_coordinate[i])
-            {
-              local_rhs(i) -= w * g[r];
-              if (matrix)
-                for (unsigned int j = 0; j < n; ++j)
-                  for (const auto &[q, v] : s.to_coordinate[j])
-                    local_matrix(i, j) += w * H[r][q] * v;
-            }
-        if (matrix)
-          constraints.distribute_local_to_global(local_matrix, local_rhs, s.dofs, *matrix, rhs);
-        else
-          constraints.distribute_local_to_global(local_rhs, s.dofs, rhs);
-      }
+    for (const unsigned int k : links_in_cell[cell_index])
+      add_link(links[k], owned_stencils[k], cell_u, cell_matrix, cell_rhs);
   }
 
   std::vector<double>

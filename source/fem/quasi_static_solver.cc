@@ -2,6 +2,7 @@
 #include <softchain/data/input_error.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/cell_conforming_polylines.h>
+#include <softchain/fem/hyperelastic_cell.h>
 
 #include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -34,20 +35,20 @@ namespace softchain::fem
         : fe_values(*space.mapping, *space.fe, space.cell_quadrature,
                     update_values | update_gradients | update_JxW_values)
         , grad_u(space.cell_quadrature.size())
-        , grad_Nx(space.fe->n_dofs_per_cell())
-        , symm_grad_Nx(space.fe->n_dofs_per_cell())
+        , cell(*space.fe)
+        , cell_u(space.fe->n_dofs_per_cell())
       {}
       CellScratch(const CellScratch &other)
         : fe_values(other.fe_values.get_mapping(), other.fe_values.get_fe(),
                     other.fe_values.get_quadrature(), other.fe_values.get_update_flags())
         , grad_u(other.grad_u)
-        , grad_Nx(other.grad_Nx)
-        , symm_grad_Nx(other.symm_grad_Nx)
+        , cell(other.cell)
+        , cell_u(other.cell_u)
       {}
-      FEValues<3>                        fe_values;
-      std::vector<Tensor<2, 3>>          grad_u;
-      std::vector<Tensor<2, 3>>          grad_Nx;
-      std::vector<SymmetricTensor<2, 3>> symm_grad_Nx;
+      FEValues<3>               fe_values;
+      std::vector<Tensor<2, 3>> grad_u;
+      HyperelasticCell          cell;
+      Vector<double>            cell_u; // the cell's DoF values, for its springs
     };
 
     struct CellCopy
@@ -113,20 +114,17 @@ namespace softchain::fem
 
   // The tangent's sparsity pattern and the residual's writable entries for
   // `constraints`, whose lines may couple the DoFs `coupled` (a point contact
-  // couples every tip DoF) beyond the cells' and springs' couplings.
+  // couples every tip DoF) beyond the cells' couplings (the springs' are
+  // their cells').
   void QuasiStaticSolver::setup_matrix(const AffineConstraints<double> &constraints,
                                        const IndexSet                  &coupled)
   {
     const FiniteElementSpace &s = *fe_space;
     writable_dofs = s.relevant_dofs;
     writable_dofs.add_indices(coupled);
-    if (springs)
-      writable_dofs.add_indices(springs->touched_dofs(s.dof_handler.n_dofs()));
 
     DynamicSparsityPattern pattern(writable_dofs);
     DoFTools::make_sparsity_pattern(s.dof_handler, pattern, constraints, false);
-    if (springs)
-      springs->add_couplings(constraints, pattern);
     SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
                                                writable_dofs);
     matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
@@ -159,54 +157,19 @@ namespace softchain::fem
 
     auto worker = [&](const DoFHandler<3>::active_cell_iterator &cell, CellScratch &scratch,
                       CellCopy &copy) {
-      copy.matrix = 0;
       copy.rhs    = 0;
       cell->get_dof_indices(copy.dofs);
       scratch.fe_values.reinit(cell);
       scratch.fe_values[displacement].get_function_gradients(u_ghosted, scratch.grad_u);
-      const HyperelasticMaterial &mat = *materials.at(cell->material_id());
-      for (unsigned int q = 0; q < scratch.fe_values.n_quadrature_points; ++q)
+      FullMatrix<double> *cell_matrix = with_matrix ? &copy.matrix : nullptr;
+      copy.inverted = !scratch.cell.assemble(scratch.fe_values, scratch.grad_u,
+                                             *materials.at(cell->material_id()), body_force,
+                                             cell_matrix, copy.rhs);
+      if (springs && !copy.inverted) // the springs inside this cell
         {
-          const Tensor<2, 3> F = unit_symmetric_tensor<3>() + scratch.grad_u[q];
-          if (!(determinant(F) > 0))
-            {
-              copy.inverted = true;
-              return;
-            }
-          const Tensor<2, 3>          F_inv = invert(F);
-          const SymmetricTensor<2, 3> tau   = mat.kirchhoff_stress(F);
-          const double                JxW   = scratch.fe_values.JxW(q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              scratch.grad_Nx[i]      = scratch.fe_values[displacement].gradient(i, q) * F_inv;
-              scratch.symm_grad_Nx[i] = symmetrize(scratch.grad_Nx[i]);
-              // rhs = f_ext - f_int, f_int_i = int tau : sym(grad_x N_i) dV0
-              copy.rhs(i) -= (scratch.symm_grad_Nx[i] * tau) * JxW;
-              if (gravity_factor != 0.0)
-                copy.rhs(i) += (scratch.fe_values[displacement].value(i, q) * body_force) * JxW;
-            }
-          if (!with_matrix)
-            continue;
-          const SymmetricTensor<4, 3> Jc = mat.spatial_tangent(F);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const unsigned int          ci        = s.fe->system_to_component_index(i).first;
-              const SymmetricTensor<2, 3> Jc_grad_i = Jc * scratch.symm_grad_Nx[i];
-              const Tensor<1, 3>          tau_Nx_i  = tau * scratch.grad_Nx[i][ci];
-              // Material and geometric stiffness; symmetric, lower half here.
-              for (unsigned int j = 0; j <= i; ++j)
-                {
-                  double k = scratch.symm_grad_Nx[j] * Jc_grad_i;
-                  if (s.fe->system_to_component_index(j).first == ci)
-                    k += scratch.grad_Nx[j][ci] * tau_Nx_i;
-                  copy.matrix(i, j) += k * JxW;
-                }
-            }
+          cell->get_dof_values(u_ghosted, scratch.cell_u);
+          springs->assemble_cell(cell->active_cell_index(), scratch.cell_u, cell_matrix, copy.rhs);
         }
-      if (with_matrix)
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = i + 1; j < n; ++j)
-            copy.matrix(i, j) = copy.matrix(j, i);
     };
 
     auto copier = [&](const CellCopy &copy) {
@@ -277,8 +240,6 @@ namespace softchain::fem
     f_ext_norm = rhs.l2_norm();
 
     const bool valid = assemble_cells(with_matrix, state.gravity_factor, constraints);
-    if (springs)
-      springs->assemble(u_ghosted, constraints, with_matrix ? &matrix : nullptr, rhs);
     if (with_matrix)
       matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);

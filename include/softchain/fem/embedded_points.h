@@ -23,12 +23,15 @@ namespace softchain::fem
       std::vector<dealii::types::global_dof_index> dof;
       std::vector<unsigned int>            component;
       std::vector<double>                  weight;
+      // The cell whose DoFs these are (dof in that cell's order): its
+      // active_cell_index() on the rank that owns the point.
+      unsigned int cell = 0;
 
       // For the all-gather of stencils across ranks (boost serialization).
       template <class Archive>
       void serialize(Archive &archive, const unsigned int)
       {
-        archive &dof &component &weight;
+        archive &dof &component &weight &cell;
       }
     };
 
