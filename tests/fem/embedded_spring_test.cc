@@ -16,6 +16,8 @@
 #include "fem_test_tools.h"
 
 #include <softchain/fem/base_reaction.h>
+#include <softchain/fem/cell_conforming_polylines.h>
+#include <softchain/fem/embedded_spring_network.h>
 
 #include <catch2/catch.hpp>
 
@@ -75,4 +77,21 @@ TEST_CASE("an embedded spring pulled along its length adds its tension law to th
       // finger pulls its base toward the tip, +x, when stretched).
       CHECK(std::abs((with - without) - T) <= 1e-6 * std::max(T, std::abs(block)));
     }
+}
+
+// Each link is assembled with the one cell it lies in (the solver splits the
+// polylines at cell faces first); a link across cells is an input error that
+// names it, not a force silently evaluated in one cell's polynomials.
+TEST_CASE("a spring link that crosses a cell face is refused, naming the link", "[fem][springs]")
+{
+  Triangulation<3> mesh;
+  test::cantilever_block(mesh, {20, 3, 3}, L, h);
+  const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
+  const SpringPolyline     across{"fabric", {Point<3>(0, h / 2, h / 2), Point<3>(L, h / 2, h / 2)}, false};
+  CHECK_THROWS_WITH(EmbeddedSpringNetwork(space, {across}, {{"fabric", EA}}, d),
+                    Catch::Contains("spring link 0 of network 'fabric'") &&
+                      Catch::Contains("does not lie in one cell"));
+  // The same polyline split at the faces (20 links) is accepted.
+  const auto within = cell_conforming_polylines({across}, mesh, *space.mapping);
+  CHECK(EmbeddedSpringNetwork(space, within, {{"fabric", EA}}, d).all_links().size() == 20);
 }
