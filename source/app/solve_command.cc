@@ -9,11 +9,14 @@
 #include <softchain/fem/finger_mesh.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/solution_output.h>
+#include <softchain/fem/volume_controlled_inflation.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/multithread_info.h>
 
+#include <chrono>
 #include <iostream>
+#include <tuple>
 
 namespace softchain::app
 {
@@ -27,19 +30,77 @@ namespace softchain::app
     // machine-readable result that tests compare between runs.
     void write_summary(const std::string &directory, const QuasiStaticSolver::Result &result,
                        const Tensor<1, 3> &tip, const double cavity_volume,
-                       const BaseReaction::Wrench &base)
+                       const BaseReaction::Wrench &base, const double cavity_pressure)
     {
       data::CsvTable summary({"converged", "load_factor", "newton_iterations", "load_steps",
                               "tip_displacement_x", "tip_displacement_y", "tip_displacement_z",
                               "cavity_volume", "base_force_x", "base_force_y", "base_force_z",
-                              "base_moment_x", "base_moment_y", "base_moment_z"});
+                              "base_moment_x", "base_moment_y", "base_moment_z",
+                              "cavity_pressure"});
       summary.add_row(std::vector<double>{double(result.converged), result.load_factor_reached,
                                           double(result.newton_iterations),
                                           double(result.load_steps), tip[0], tip[1], tip[2],
                                           cavity_volume, base.force[0], base.force[1],
                                           base.force[2], base.moment[0], base.moment[1],
-                                          base.moment[2]});
+                                          base.moment[2], cavity_pressure});
       summary.write(directory + "/solve_summary.csv");
+    }
+
+    // Control = volume: inflates the cavity to Cavity volume ratio times its
+    // volume at rest, the pressure solved for; writes the pressure-volume
+    // curve of the converged steps to <output>/pressure_volume.csv. Returns
+    // the solve's counts and the pressure reached.
+    std::pair<QuasiStaticSolver::Result, double>
+    inflate_to_volume(QuasiStaticSolver &solver, const Parameters &prm, std::ostream &out)
+    {
+      const auto                start = std::chrono::steady_clock::now();
+      VolumeControlledInflation inflation(solver, prm);
+      const double              rest_volume = inflation.volume();
+      const auto                inflated    = inflation.solve(prm.loads.volume_ratio * rest_volume);
+      QuasiStaticSolver::Result result;
+      result.converged           = inflated.converged;
+      result.reason              = inflated.reason;
+      result.newton_iterations   = inflated.newton_iterations;
+      result.load_steps          = inflated.curve.size() - 1;
+      const double wanted        = (prm.loads.volume_ratio - 1) * rest_volume;
+      result.load_factor_reached = wanted != 0 ? (inflation.volume() - rest_volume) / wanted : 1.0;
+      result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      data::CsvTable curve({"cavity_volume", "volume_ratio", "cavity_pressure"});
+      for (const auto &point : inflated.curve)
+        curve.add_row(std::vector<double>{point.volume, point.volume / rest_volume, point.pressure});
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        curve.write(prm.design.output_directory + "/pressure_volume.csv");
+      out << "volume control: cavity volume " << rest_volume << " -> " << inflation.volume()
+          << " m^3, pressure " << inflation.pressure() << " Pa (the curve: "
+          << prm.design.output_directory << "/pressure_volume.csv)\n";
+      return {result, inflation.pressure()};
+    }
+
+    // Control = pressure: the .prm's loads, then its tip motion from that state.
+    QuasiStaticSolver::Result solve_loads(QuasiStaticSolver &solver, const Parameters &prm,
+                                          std::ostream &out)
+    {
+      LoadState target;
+      target.pressure       = prm.loads.pressure;
+      target.point_loads    = prm.loads.point_loads;
+      target.gravity_factor = prm.loads.gravity ? 1.0 : 0.0;
+      target.tip_traction   = prm.loads.tip_traction;
+      auto result           = solver.solve(target);
+      if (prm.loads.prescribe_tip && result.converged) // then the tip moves from that state
+        {
+          target.tip_motion = TipMotion{prm.loads.tip_translation, prm.loads.tip_rotation,
+                                        prm.loads.tip_point_contact};
+          const auto moved  = solver.solve(target);
+          out << "loads: " << result.load_steps << " load steps; tip motion: " << moved.load_steps
+              << " load steps\n";
+          result.converged = moved.converged;
+          result.reason    = moved.reason;
+          result.load_factor_reached = moved.load_factor_reached;
+          result.newton_iterations += moved.newton_iterations;
+          result.load_steps += moved.load_steps;
+          result.wall_time += moved.wall_time;
+        }
+      return result;
     }
   } // namespace
 
@@ -60,29 +121,19 @@ namespace softchain::app
         << " cells, " << solver.space().dof_handler.n_dofs() << " DoFs, "
         << Utilities::MPI::n_mpi_processes(comm) << " rank(s)\n";
 
-    if (prm.loads.pressure != 0.0 && !solver.pressure_load().has_cavity())
-      throw data::InputError(prm.file + ": parameter 'Pressure' in subsection 'Loads': a pressure "
-                             "needs the mesh's physical group 'cavity', and " + mesh.description +
-                             " has none");
-    LoadState target;
-    target.pressure       = prm.loads.pressure;
-    target.point_loads    = prm.loads.point_loads;
-    target.gravity_factor = prm.loads.gravity ? 1.0 : 0.0;
-    target.tip_traction   = prm.loads.tip_traction;
-    auto result           = solver.solve(target);
-    if (prm.loads.prescribe_tip && result.converged) // then the tip moves from that state
+    const bool by_volume = prm.loads.control == LoadParameters::Control::volume;
+    if ((prm.loads.pressure != 0.0 || by_volume) && !solver.pressure_load().has_cavity())
+      throw data::InputError(prm.file + ": parameter '" + (by_volume ? "Control" : "Pressure") +
+                             "' in subsection 'Loads': a pressure needs the mesh's physical group "
+                             "'cavity', and " + mesh.description + " has none");
+    QuasiStaticSolver::Result result;
+    double                    cavity_pressure = prm.loads.pressure;
+    if (by_volume)
+      std::tie(result, cavity_pressure) = inflate_to_volume(solver, prm, out.get_stream());
+    else
       {
-        target.tip_motion = TipMotion{prm.loads.tip_translation, prm.loads.tip_rotation,
-                                      prm.loads.tip_point_contact};
-        const auto moved  = solver.solve(target);
-        out << "loads: " << result.load_steps << " load steps; tip motion: " << moved.load_steps
-            << " load steps\n";
-        result.converged = moved.converged;
-        result.reason    = moved.reason;
-        result.load_factor_reached = moved.load_factor_reached;
-        result.newton_iterations += moved.newton_iterations;
-        result.load_steps += moved.load_steps;
-        result.wall_time += moved.wall_time;
+        result          = solve_loads(solver, prm, out.get_stream());
+        cavity_pressure = solver.load_state().pressure;
       }
 
     const Tensor<1, 3> tip = mean_boundary_displacement(solver.space(), solver.displacement(),
@@ -97,7 +148,8 @@ namespace softchain::app
     out << "base wrench (on the support, about the base centroid " << base.centroid()
         << "): force [N] " << wrench.force << ", moment [N m] " << wrench.moment << '\n';
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_summary(prm.design.output_directory, result, tip, cavity_volume, wrench);
+      write_summary(prm.design.output_directory, result, tip, cavity_volume, wrench,
+                    cavity_pressure);
     if (prm.output.write_vtu)
       {
         TimerOutput::Scope timer_section(solver.timer(), "output");

@@ -108,15 +108,4 @@ namespace softchain::fem
       x[k] = reference[k] + Point<3>(flat[3 * k], flat[3 * k + 1], flat[3 * k + 2]);
     return x;
   }
-
-  IndexSet EmbeddedPoints::touched_dofs(const types::global_dof_index n_dofs) const
-  {
-    IndexSet set(n_dofs);
-    for (unsigned int k = 0; k < size(); ++k)
-      if (owned(k))
-        for (const auto dof : stencils[k].dof)
-          set.add_index(dof);
-    set.compress();
-    return set;
-  }
 } // namespace softchain::fem

@@ -184,6 +184,12 @@ namespace softchain::fem
 
   void LoadParameters::declare(data::PrmSection &section)
   {
+    section.declare("Control", "pressure",
+                    "pressure: Pressure is applied; volume: the cavity is inflated to Cavity "
+                    "volume ratio times its volume at rest and the pressure is solved for "
+                    "(follows a finger past the pressure's limit point; no other loads)");
+    section.declare("Cavity volume ratio", "1",
+                    "With Control = volume: the cavity's target volume over its volume at rest");
     section.declare("Pressure", "0", "Pa, on the cavity (follower load)");
     section.declare("Point loads", "", "x,y,z : fx,fy,fz ; ... (reference point [m] : force [N])");
     section.declare("Tip traction", "0,0,0", "tx,ty,tz [N/m^2]: dead traction on the tip face");
@@ -219,6 +225,24 @@ namespace softchain::fem
             tip_rotation    = parse_triple(motion.substr(colon + 1), section.describe("Tip motion"));
           }
       }
+    parse_point_loads(section);
+    control = section.get_enum<Control>("Control", {{"pressure", Control::pressure},
+                                                    {"volume", Control::volume}});
+    volume_ratio = bounded_double(section, "Cavity volume ratio", 0.01, 100);
+    if (control == Control::volume)
+      {
+        const std::string why = "is not used under Control = volume (the pressure is the "
+                                "unknown and no other load is applied)";
+        section.require(pressure == 0.0, "Pressure", why);
+        section.require(point_loads.empty(), "Point loads", why);
+        section.require(tip_traction.norm() == 0.0, "Tip traction", why);
+        section.require(!gravity, "Gravity", why);
+        section.require(!prescribe_tip, "Tip motion", why);
+      }
+  }
+
+  void LoadParameters::parse_point_loads(const data::PrmSection &section)
+  {
     point_loads.clear();
     std::stringstream in(section.get("Point loads"));
     std::string       item;

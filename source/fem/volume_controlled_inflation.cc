@@ -41,14 +41,19 @@ namespace softchain::fem
     return g;
   }
 
+  LoadState VolumeControlledInflation::pressure_state() const
+  {
+    LoadState state;
+    state.pressure = p;
+    return state;
+  }
+
   bool VolumeControlledInflation::newton(const double target_volume, Result &result)
   {
     const FiniteElementSpace &s = solver.space();
     for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
       {
-        LoadState state;
-        state.pressure = p;
-        if (!solver.assemble(state, true))
+        if (!solver.assemble(pressure_state(), true))
           return false; // J <= 0 somewhere
         const TrilinosWrappers::MPI::Vector g        = unit_pressure_load();
         const double                        residual = solver.negative_residual().l2_norm();
@@ -109,10 +114,12 @@ namespace softchain::fem
                 << prm.solver.min_load_step << " (last converged V = " << result.curve.back().volume
                 << " m^3, p = " << p << " Pa)";
             result.reason = why.str();
+            solver.set_state(u_converged, pressure_state());
             return result;
           }
       }
     result.converged = true;
+    solver.set_state(owned_displacement(), pressure_state());
     return result;
   }
 } // namespace softchain::fem

@@ -4,12 +4,18 @@
 // control stops.
 #include "fem_test_tools.h"
 
+#include <softchain/app/commands.h>
+#include <softchain/data/prm_file.h>
 #include <softchain/fem/volume_controlled_inflation.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
 
 using namespace dealii;
 using namespace softchain;
@@ -85,4 +91,70 @@ TEST_CASE("volume control passes the balloon limit point where pressure control 
   CHECK(peak->pressure == Approx(p_limit).epsilon(0.03));
   CHECK(peak != result.curve.end() - 1);
   CHECK(result.curve.back().pressure < peak->pressure); // past the peak: softening
+}
+
+namespace
+{
+  // The numbers of <directory>/solve_summary.csv by column name.
+  std::map<std::string, double> solve_summary(const std::string &directory)
+  {
+    std::ifstream in(directory + "/solve_summary.csv");
+    std::string   header, row;
+    std::getline(in, header);
+    std::getline(in, row);
+    std::istringstream            names(header), values(row);
+    std::map<std::string, double> summary;
+    for (std::string name, value; std::getline(names, name, ',') && std::getline(values, value, ',');)
+      summary[name] = std::stod(value);
+    return summary;
+  }
+
+  // `softchain solve` of the unreinforced bender with these Loads entries.
+  std::map<std::string, double> solve_bender(const std::string &name, const std::string &loads)
+  {
+    const std::string prm = test::write_prm(
+      name, test::bender_prm("Q1", 4,
+                             "subsection Springs\n  set Generate for bender = false\nend\n"
+                             "subsection Design\n  set Output directory = " + name + "\nend\n"
+                             "subsection Loads\n" + loads + "end\n"));
+    REQUIRE(softchain::app::solve_command(data::PrmFile::read(prm)) == 0);
+    return solve_summary(name);
+  }
+} // namespace
+
+// Loads/Control = volume in `softchain solve`: the cavity reaches the volume
+// asked for, the pressure it reports is the one that pressure control needs
+// for that state (the same equilibrium, solved the other way round), and the
+// pressure-volume curve is written.
+TEST_CASE("softchain solve under volume control finds the pressure of the volume asked for",
+          "[fem][volume]")
+{
+  const double ratio = 1.2; // 13 kPa, where dp/dV is still well above zero (the limit is near 25 kPa)
+  const auto by_volume = solve_bender("volume_control_solve",
+                                      "  set Control = volume\n  set Cavity volume ratio = " +
+                                        std::to_string(ratio) + "\n");
+  const double pressure = by_volume.at("cavity_pressure");
+  REQUIRE(by_volume.at("converged") == 1);
+  CHECK(pressure > 0);
+
+  std::ifstream curve("volume_control_solve/pressure_volume.csv");
+  std::string   line, last;
+  while (std::getline(curve, line))
+    last = line;
+  // volume_ratio of the last step: the target, to Newton's volume tolerance (1e-6 relative).
+  CHECK(std::stod(last.substr(last.find(',') + 1)) == Approx(ratio).epsilon(1e-6));
+
+  std::ostringstream p;
+  p.precision(17);
+  p << pressure;
+  const auto by_pressure = solve_bender("pressure_control_solve", "  set Pressure = " + p.str() + "\n");
+  // Both solves stop at relative residuals and updates of 1e-6 (Solver
+  // defaults), so their states may differ by about that; measured 7e-10 in
+  // the volume and 1.7e-8 in the tip's axial displacement (the tip's y is
+  // zero by symmetry, 3e-16 m apart). A wrong pressure (e.g. one load step
+  // short) would be off by percent.
+  CHECK(by_pressure.at("cavity_volume") == Approx(by_volume.at("cavity_volume")).epsilon(1e-6));
+  for (const std::string u : {"tip_displacement_x", "tip_displacement_y"})
+    CHECK(by_pressure.at(u) == Approx(by_volume.at(u)).epsilon(1e-6).margin(1e-9));
+  CHECK(by_pressure.at("cavity_pressure") == Approx(pressure).epsilon(1e-12));
 }

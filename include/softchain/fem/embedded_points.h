@@ -59,9 +59,6 @@ namespace softchain::fem
     // Deformed positions of all points, identical on every rank.
     std::vector<dealii::Point<3>> deformed(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u) const;
 
-    // All DoFs that owned points' stencils touch (for writable vectors).
-    dealii::IndexSet touched_dofs(dealii::types::global_dof_index n_dofs) const;
-
   private:
     std::vector<dealii::Point<3>>     reference;
     std::vector<unsigned int> owner;

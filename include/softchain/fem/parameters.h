@@ -80,6 +80,16 @@ namespace softchain::fem
   // subsection Loads
   struct LoadParameters
   {
+    // pressure: the cavity's pressure is prescribed (Pressure); volume: its
+    // volume is (Cavity volume ratio times the volume at rest) and the
+    // pressure is solved for, which follows a finger past a limit point.
+    enum class Control
+    {
+      pressure,
+      volume
+    };
+    Control                control      = Control::pressure;
+    double                 volume_ratio = 1.0;
     double                 pressure = 0.0; // Pa, follower load on `cavity`
     std::vector<PointLoad> point_loads;
     dealii::Tensor<1, 3>   tip_traction; // N/m^2, dead load on `tip`
@@ -92,6 +102,9 @@ namespace softchain::fem
     dealii::Tensor<1, 3>   tip_rotation;
     static void declare(data::PrmSection &section);
     void        parse(const data::PrmSection &section);
+
+  private:
+    void parse_point_loads(const data::PrmSection &section);
   };
 
   // subsection Solver

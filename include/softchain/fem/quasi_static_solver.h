@@ -74,6 +74,8 @@ namespace softchain::fem
     void set_displacement(const dealii::TrilinosWrappers::MPI::Vector &owned_u);
     // Restart from a stored equilibrium: `owned_u` balances `state` (the
     // next solve() continues from there; used by the sample sweep).
+    // The loads of the current state (rest, or the last converged load step).
+    const LoadState &load_state() const { return load; }
     void set_state(const dealii::TrilinosWrappers::MPI::Vector &owned_u, const LoadState &state)
     {
       set_displacement(owned_u);

@@ -46,7 +46,8 @@ namespace softchain::fem
     // g = dV/du: the nodal load of a unit follower pressure at the current state.
     dealii::TrilinosWrappers::MPI::Vector unit_pressure_load() const;
 
-    // Inflates to `target_volume` in adaptive volume steps.
+    // Inflates to `target_volume` in adaptive volume steps; leaves the
+    // solver at the last converged state, with its load the pressure there.
     Result solve(double target_volume);
 
   private:
@@ -57,5 +58,6 @@ namespace softchain::fem
     // Newton at a fixed volume; false if it fails (state restored by caller).
     bool newton(double target_volume, Result &result);
     dealii::TrilinosWrappers::MPI::Vector owned_displacement() const;
+    LoadState                             pressure_state() const; // the load p alone
   };
 } // namespace softchain::fem
