@@ -95,3 +95,50 @@ TEST_CASE("a spring link that crosses a cell face is refused, naming the link", 
   const auto within = cell_conforming_polylines({across}, mesh, *space.mapping);
   CHECK(EmbeddedSpringNetwork(space, within, {{"fabric", EA}}, d).all_links().size() == 20);
 }
+
+// A taut link's tangent against the closed forms of a string under tension
+// T: stretching it along itself stiffens it by dT/dl = EA/L (the material
+// term of the taut branch); moving one end across it changes the force
+// across by T/l per unit displacement (the geometric term, a tensioned
+// string's lateral stiffness). Each is the quadratic form v^T K v of the
+// link's cell matrix for a linear field v that moves node b by a unit vector
+// and node a not at all (Q2 interpolates it exactly), and the link's
+// internal force does the work f . v = T along it. The link lies inside one
+// Q2 cell, stretched by a uniform strain eps > d (the taut branch).
+TEST_CASE("a taut link's tangent is EA/L along it and T/l across it", "[fem][springs]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return;
+  Triangulation<3> mesh;
+  test::cantilever_block(mesh, {1, 1, 1}, L, h);
+  const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
+  const Point<3>           a(0.25 * L, 0.4 * h, 0.5 * h), b(0.75 * L, 0.4 * h, 0.5 * h);
+  const double             rest = b[0] - a[0], eps = 0.01;
+  const EmbeddedSpringNetwork network(space, {{"fabric", {a, b}, false}}, {{"fabric", EA}}, d);
+  REQUIRE(network.all_links().size() == 1);
+
+  // The cell's DoF values of the field x -> (x - a)_0 / rest * direction.
+  const auto cell = space.dof_handler.begin_active();
+  const auto &fe  = *space.fe;
+  const auto values = [&](const Tensor<1, 3> &direction) {
+    Vector<double> v(fe.n_dofs_per_cell());
+    for (unsigned int i = 0; i < v.size(); ++i)
+      {
+        const Point<3> x = space.mapping->transform_unit_to_real_cell(cell, fe.get_unit_support_points()[i]);
+        v[i] = (x[0] - a[0]) / rest * direction[fe.system_to_component_index(i).first];
+      }
+    return v;
+  };
+  Vector<double> u = values(Tensor<1, 3>({eps * rest, 0, 0})); // b moves by eps rest along the link
+  FullMatrix<double> K(u.size(), u.size());
+  Vector<double>     rhs(u.size());
+  network.assemble_cell(cell->active_cell_index(), u, &K, rhs);
+
+  const double   T = EA * (eps - d / 2), l = rest * (1 + eps);
+  const auto     along = values(Tensor<1, 3>({1, 0, 0})), across = values(Tensor<1, 3>({0, 1, 0}));
+  // Sums of ~1e3 products of entries up to EA/L: round-off ~1e-12 relative.
+  CHECK(-(rhs * along) == Approx(T).epsilon(1e-10));
+  CHECK(K.matrix_norm_square(along) == Approx(EA / rest).epsilon(1e-10));
+  CHECK(K.matrix_norm_square(across) == Approx(T / l).epsilon(1e-10));
+  CHECK(std::abs(K.matrix_scalar_product(along, across)) <= 1e-10 * EA / rest);
+}
