@@ -1,6 +1,7 @@
 #pragma once
 // HyperelasticCell: the solid's internal force and tangent on one cell
-// (updated Lagrangian form, as in deal.II step-44), written for the
+// (total Lagrangian, integrated over the reference cell with the spatial
+// stress and tangent pushed forward, as in deal.II step-44), written for the
 // vector-valued Lagrange elements SoftChain uses: shape function i is
 // e_c phi_a, one scalar function phi_a (node a) times one unit vector e_c.
 // With g_a = grad_x phi_a = F^-T grad_X phi_a the spatial gradient, tau the

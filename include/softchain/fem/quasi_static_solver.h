@@ -4,8 +4,9 @@
 // embedded tension-only springs and point loads:
 //     R(u) = f_int(u) + f_springs(u) - f_pressure(u) - f_points = 0,
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
-// stepping (cut on divergence or J <= 0, grow after easy steps) and a
-// backtracking line search on |R|.
+// stepping (cut on divergence or J <= 0, grow after easy steps) and a line
+// search on the energy along the Newton direction. The cells (HyperelasticCell)
+// and the springs inside them are assembled together, cell by cell.
 #include <softchain/fem/dead_surface_traction.h>
 #include <softchain/fem/embedded_points.h>
 #include <softchain/fem/embedded_spring_network.h>
