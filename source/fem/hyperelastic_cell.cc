@@ -51,8 +51,11 @@ namespace softchain::fem
             for (unsigned int c = 0; c < 3; ++c)
               rhs(dof[a][c]) -= tau_g[a][c] * JxW;
             if (gravity)
-              for (unsigned int c = 0; c < 3; ++c)
-                rhs(dof[a][c]) += fe_values.shape_value(dof[a][c], q) * body_force[c] * JxW;
+              {
+                const double phi_JxW = fe_values.shape_value(dof[a][0], q) * JxW; // phi_a dV0
+                for (unsigned int c = 0; c < 3; ++c)
+                  rhs(dof[a][c]) += phi_JxW * body_force[c];
+              }
           }
         if (matrix)
           add_tangent(material.spatial_tangent(F), JxW);

@@ -73,10 +73,10 @@ namespace softchain::fem
     const FiniteElementSpace            &space() const { return *fe_space; }
     const dealii::TrilinosWrappers::MPI::Vector &displacement() const { return u_ghosted; }
     void set_displacement(const dealii::TrilinosWrappers::MPI::Vector &owned_u);
-    // Restart from a stored equilibrium: `owned_u` balances `state` (the
-    // next solve() continues from there; used by the sample sweep).
     // The loads of the current state (rest, or the last converged load step).
     const LoadState &load_state() const { return load; }
+    // Restart from a stored equilibrium: `owned_u` balances `state` (the
+    // next solve() continues from there; used by the sample sweep).
     void set_state(const dealii::TrilinosWrappers::MPI::Vector &owned_u, const LoadState &state)
     {
       set_displacement(owned_u);
