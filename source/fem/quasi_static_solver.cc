@@ -1,5 +1,6 @@
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/data/input_error.h>
+#include <softchain/fem/adaptive_load_stepping.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/cell_conforming_polylines.h>
 #include <softchain/fem/hyperelastic_cell.h>
@@ -409,11 +410,11 @@ namespace softchain::fem
     return {false, false, prm.solver.max_newton_iterations};
   }
 
-  // Load stepping along s in [0, 1] from the current state to `target`. Each
-  // step starts from the secant extrapolation of the last two converged
-  // states (a first-order continuation predictor), which leaves Newton only
-  // the correction; a failed step is retried from the last converged state
-  // with a quarter of the increment.
+  // Load stepping along s in [0, 1] from the current state to `target`
+  // (AdaptiveLoadStepping). Each step starts from the secant extrapolation
+  // of the last two converged states (a first-order continuation
+  // predictor), which leaves Newton only the correction; a failed step is
+  // retried from the last converged state.
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target)
   {
     return solve(target, prm.solver.initial_load_step);
@@ -428,19 +429,20 @@ namespace softchain::fem
     Result     result;
     const LoadState start = load;
     prepare_tip_motion(target);
-    double     s = 0.0, s_previous = 0.0, step = first_step;
-    bool       last_inverted = false;
+    AdaptiveLoadStepping path(prm.solver, first_step);
+    bool                 last_inverted = false;
     // (pressure, cavity volume) of converged states, to tell a limit point.
     std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};
     TrilinosWrappers::MPI::Vector          u_converged(u_owned), u_before(u_owned);
-    while (s < 1.0)
+    while (!path.finished())
       {
-        const double    s_try = std::min(1.0, s + step);
+        const double    s = path.reached(), s_try = path.next();
         const LoadState state = LoadState::interpolate(start, target, s_try);
-        if (prm.solver.secant_predictor && s > s_previous) // predictor: u + (ds / ds_previous) (u - u_before)
+        if (prm.solver.secant_predictor && path.previous() >= 0) // u + (ds / ds_previous) (u - u_before)
           {
-            u_owned.add((s_try - s) / (s - s_previous), u_converged);
-            u_owned.add(-(s_try - s) / (s - s_previous), u_before);
+            const double ratio = (s_try - s) / (s - path.previous());
+            u_owned.add(ratio, u_converged);
+            u_owned.add(-ratio, u_before);
             u_ghosted = u_owned;
           }
         if (state.tip_motion) // the tip where the motion puts it, held there by Newton
@@ -452,36 +454,30 @@ namespace softchain::fem
         result.newton_iterations += outcome.iterations;
         if (outcome.converged)
           {
-            s_previous  = s;
-            s           = s_try;
+            path.converged(outcome.iterations);
             load        = state;
             u_before    = u_converged;
             u_converged = u_owned;
             ++result.load_steps;
             pv.emplace_back(state.pressure, pressure->cavity_volume(u_ghosted));
-            log << "    load step " << result.load_steps << ": factor " << s << ", "
+            log << "    load step " << result.load_steps << ": factor " << path.reached() << ", "
                 << outcome.iterations << " Newton iterations\n";
-            // Grow after steps that took at most two thirds of the allowed
-            // iterations (a hard but converging problem still speeds up).
-            if (3 * outcome.iterations <= 2 * prm.solver.max_newton_iterations)
-              step = std::min(prm.solver.max_load_step, 1.5 * step);
             continue;
           }
         set_displacement(u_converged);
-        s_previous    = s; // no predictor right after a failure
-        last_inverted = outcome.inverted;
-        step *= 0.25;
+        last_inverted   = outcome.inverted;
+        const bool more = path.failed();
         log << "    load factor " << s_try << " failed ("
             << (outcome.inverted ? "an element inverted, J <= 0" : "Newton did not converge")
-            << "); cutting the step to " << step << '\n';
-        if (step < prm.solver.min_load_step)
+            << "); cutting the step to " << path.step() << '\n';
+        if (!more)
           {
             classify_failure(pv, last_inverted, result);
             break;
           }
       }
-    result.converged           = s >= 1.0;
-    result.load_factor_reached = s;
+    result.converged           = path.finished();
+    result.load_factor_reached = path.reached();
     result.wall_time           = seconds_since(start_time);
     return result;
   }

@@ -1,3 +1,4 @@
+#include <softchain/fem/adaptive_load_stepping.h>
 #include <softchain/fem/volume_controlled_inflation.h>
 
 #include <deal.II/lac/solver_control.h>
@@ -86,28 +87,24 @@ namespace softchain::fem
 
   VolumeControlledInflation::Result VolumeControlledInflation::solve(const double target_volume)
   {
-    Result       result;
-    const double v_start = volume();
-    double       s = 0.0, step = prm.solver.initial_load_step;
+    Result               result;
+    const double         v_start = volume();
+    AdaptiveLoadStepping path(prm.solver, prm.solver.initial_load_step);
     result.curve.push_back({v_start, p});
-    while (s < 1.0)
+    while (!path.finished())
       {
-        const double                        s_try = std::min(1.0, s + step);
         const TrilinosWrappers::MPI::Vector u_converged = owned_displacement();
         const double                        p_converged = p;
         const unsigned int                  before      = result.newton_iterations;
-        if (newton(v_start + s_try * (target_volume - v_start), result))
+        if (newton(v_start + path.next() * (target_volume - v_start), result))
           {
-            s = s_try;
+            path.converged(result.newton_iterations - before);
             result.curve.push_back({volume(), p});
-            if (3 * (result.newton_iterations - before) <= 2 * prm.solver.max_newton_iterations)
-              step = std::min(prm.solver.max_load_step, 1.5 * step);
             continue;
           }
         solver.set_displacement(u_converged);
         p = p_converged;
-        step *= 0.25;
-        if (step < prm.solver.min_load_step)
+        if (!path.failed())
           {
             std::ostringstream why;
             why << "volume control did not converge even with volume steps below "

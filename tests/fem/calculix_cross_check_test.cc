@@ -8,21 +8,18 @@
 // HOOKE W = C10 (I1bar - 3) + (J - 1)^2 / D1 with C10 = mu/2, D1 = 2/kappa:
 // the volumetric terms agree to O((J - 1)^3), below 1e-6 here (|J - 1| <
 // 1e-2). The mean tip deflections must agree within 0.5 % (the goal of this cross-check).
+#include "calculix_deck.h"
 #include "fem_test_tools.h"
 
 #include <softchain/fem/boundary_average.h>
 #include <softchain/fem/boundary_ids.h>
-#include <softchain/fem/hyperelastic_material.h>
-
 
 #include <catch2/catch.hpp>
 
 #include <chrono>
 #include <cstdlib>
-#include <fstream>
 #include <map>
-#include <set>
-#include <sstream>
+#include <vector>
 
 using namespace dealii;
 using namespace softchain;
@@ -31,104 +28,14 @@ using namespace softchain::fem;
 namespace
 {
   constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.48;
+  using Load = test::CalculixDeck::Load;
 
-  // Tip-face nodes with their share of the face area (the consistent nodal
-  // forces of a uniform traction on bilinear faces are t times these).
-  std::map<unsigned int, double> tip_area_shares(const Triangulation<3> &mesh)
-  {
-    std::map<unsigned int, double> share;
-    for (const auto &face : mesh.active_face_iterators())
-      if (face->at_boundary() && face->boundary_id() == boundary::tip)
-        for (unsigned int v = 0; v < 4; ++v)
-          share[face->vertex_index(v)] += face->measure() / 4;
-    return share;
-  }
-
-  // The load of a case: a dead tip traction t_y [N/m^2] or a follower
-  // pressure p [Pa] on the cavity.
-  struct Load
-  {
-    double tip_traction_y = 0, pressure = 0;
-  };
-
-  // CalculiX input: nodes, C3D8 elements (deal.II's lexicographic vertex
-  // order to Abaqus' counter-clockwise one), clamped base, the tip traction
-  // as consistent nodal loads or the cavity pressure as face loads (follower
-  // loads under NLGEOM), a nonlinear static step with tight tolerances.
-  void write_calculix_input(const std::string &file, const Triangulation<3> &mesh,
-                            const Load &load)
-  {
-    const ElasticConstants c(E, nu);
-    const double           kappa = c.lambda + 2 * c.mu / 3;
-    std::ofstream          inp(file);
-    inp.precision(12); // CalculiX reads fields of at most 20 characters
-    inp << "*NODE, NSET=NALL\n";
-    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-      inp << v + 1 << ", " << mesh.get_vertices()[v][0] << ", " << mesh.get_vertices()[v][1]
-          << ", " << mesh.get_vertices()[v][2] << '\n';
-    inp << "*ELEMENT, TYPE=C3D8, ELSET=EALL\n";
-    for (const auto &cell : mesh.active_cell_iterators())
-      {
-        inp << cell->active_cell_index() + 1;
-        for (const unsigned int v : {0, 1, 3, 2, 4, 5, 7, 6})
-          inp << ", " << cell->vertex_index(v) + 1;
-        inp << '\n';
-      }
-    std::set<unsigned int> base;
-    for (const auto &face : mesh.active_face_iterators())
-      if (face->at_boundary() && face->boundary_id() == boundary::base)
-        for (unsigned int v = 0; v < 4; ++v)
-          base.insert(face->vertex_index(v));
-    inp << "*NSET, NSET=BASE\n";
-    for (const unsigned int v : base)
-      inp << v + 1 << ",\n";
-    const auto shares = tip_area_shares(mesh);
-    inp << "*NSET, NSET=TIP\n";
-    for (const auto &[v, a] : shares)
-      inp << v + 1 << ",\n";
-    inp << "*MATERIAL, NAME=SILICONE\n*HYPERELASTIC, NEO HOOKE\n"
-        << c.mu / 2 << ", " << 2 / kappa << '\n'
-        << "*SOLID SECTION, ELSET=EALL, MATERIAL=SILICONE\n"
-        << "*BOUNDARY\nBASE, 1, 3\n"
-        << "*STEP, NLGEOM, INC=1000\n*STATIC\n0.1, 1.0, 1e-5, 0.25\n"
-        << "*CONTROLS, PARAMETERS=FIELD\n1e-9, 1e-9\n";
-    if (load.tip_traction_y != 0)
-      {
-        inp << "*CLOAD\n";
-        for (const auto &[v, a] : shares)
-          inp << v + 1 << ", 2, " << load.tip_traction_y * a << '\n';
-      }
-    if (load.pressure != 0)
-      {
-        // deal.II face f of a hexahedron is CalculiX face P<ccx_face[f]>.
-        const unsigned int ccx_face[6] = {6, 4, 3, 5, 1, 2};
-        inp << "*DLOAD\n";
-        for (const auto &cell : mesh.active_cell_iterators())
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary::cavity)
-              inp << cell->active_cell_index() + 1 << ", P" << ccx_face[f] << ", " << load.pressure
-                  << '\n';
-      }
-    inp << "*NODE PRINT, NSET=TIP\nU\n*END STEP\n";
-  }
-
-  // Area-weighted mean tip displacement component `d` from the last
-  // displacement block of the .dat.
+  // Area-weighted mean tip displacement component `d` from a CalculiX .dat.
   double calculix_tip_displacement(const std::string &dat, const std::map<unsigned int, double> &shares,
                                    const unsigned int d)
   {
-    std::ifstream in(dat);
-    std::string   line;
-    std::map<unsigned int, Tensor<1, 3>> u;
-    while (std::getline(in, line))
-      {
-        std::istringstream words(line);
-        unsigned int       node;
-        Tensor<1, 3>       value;
-        if (words >> node >> value[0] >> value[1] >> value[2])
-          u[node - 1] = value; // later blocks (increments) overwrite earlier ones
-      }
-    double sum = 0, area = 0;
+    const auto u   = test::calculix_displacements(dat);
+    double     sum = 0, area = 0;
     for (const auto &[v, a] : shares)
       {
         REQUIRE(u.count(v) == 1);
@@ -151,9 +58,16 @@ namespace
                                        const unsigned int d)
   {
     auto start = std::chrono::steady_clock::now();
-    write_calculix_input(name + ".inp", mesh, load);
+    const auto shares = test::tip_area_shares(mesh);
+    std::vector<unsigned int> tip;
+    for (const auto &[v, a] : shares)
+      tip.push_back(v);
+    test::CalculixDeck deck;
+    deck.youngs_modulus = E;
+    deck.poissons_ratio = nu;
+    deck.write(name + ".inp", mesh, load, tip);
     REQUIRE(std::system(("ccx -i " + name + " > " + name + ".log 2>&1").c_str()) == 0);
-    const double ccx      = calculix_tip_displacement(name + ".dat", tip_area_shares(mesh), d);
+    const double ccx      = calculix_tip_displacement(name + ".dat", shares, d);
     const double ccx_time = seconds_since(start);
 
     start = std::chrono::steady_clock::now();

@@ -1,0 +1,46 @@
+#pragma once
+// AdaptiveLoadStepping: the path parameter s of a load path, from 0 (the
+// start state) to 1 (the target), in steps that adapt to how hard Newton
+// found the last one (Crisfield, Non-linear Finite Element Analysis of
+// Solids and Structures, Vol. 1, Sec. 9.4, automatic increments):
+//  - a step that converged in at most two thirds of the allowed Newton
+//    iterations lets the next one grow by 1.5 (up to Maximum load step),
+//  - a step that failed is retried from the last converged state with a
+//    quarter of the increment, until it falls below Minimum load step.
+// It knows nothing of what s controls: pressure control (QuasiStaticSolver)
+// and volume control (VolumeControlledInflation) both step with it.
+#include <softchain/fem/parameters.h>
+
+namespace softchain::fem
+{
+  class AdaptiveLoadStepping
+  {
+  public:
+    // `first_step` is the first increment of s (e.g. Solver/Initial load step).
+    AdaptiveLoadStepping(const SolverParameters &prm, double first_step);
+
+    bool   finished() const { return s >= 1.0; }
+    // The path parameter of the last converged state (0 before any).
+    double reached() const { return s; }
+    // The path parameter to try next: min(1, reached() + step).
+    double next() const;
+    double step() const { return increment; }
+
+    // The converged state before the last one, when the last two converged
+    // states are consecutive steps (not separated by a failed attempt):
+    // the secant predictor extrapolates from them. Negative if none.
+    double previous() const { return s_previous; }
+
+    // The attempt at next() converged in `newton_iterations`: s moves there.
+    void converged(unsigned int newton_iterations);
+    // The attempt at next() failed: the step is cut. Returns false when the
+    // cut step is below Minimum load step (the path is given up).
+    bool failed();
+
+  private:
+    const SolverParameters &prm;
+    double                  s          = 0.0;
+    double                  s_previous = -1.0;
+    double                  increment;
+  };
+} // namespace softchain::fem
