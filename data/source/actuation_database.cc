@@ -126,6 +126,8 @@ namespace softchain::data
           if (motion->point_contact)
             write_attribute(group, "tip_contact", std::string("point"), path);
         }
+      if (const auto &ratio = sample.actuation.cavity_volume_ratio)
+        write_attribute(group, "cavity_volume_ratio", *ratio, path);
     }
 
     Actuation read_actuation(hid_t group, const std::string &id, const std::string &path)
@@ -147,6 +149,8 @@ namespace softchain::data
                              read_string_attribute(group, "tip_contact", path) == "point";
           actuation.tip_motion = TipMotion{motion[0], motion[1], point};
         }
+      if (H5Aexists(group, "cavity_volume_ratio") > 0)
+        actuation.cavity_volume_ratio = read_double_attribute(group, "cavity_volume_ratio", path);
       return actuation;
     }
 
@@ -243,7 +247,10 @@ namespace softchain::data
 
   std::string Actuation::canonical_text() const
   {
-    std::string text = "pressure " + canonical(pressure) + "\n";
+    // Under volume control the pressure is solved for: the ratio, not the
+    // pressure, is what the sample asks for.
+    std::string text = cavity_volume_ratio ? "cavity volume ratio " + canonical(*cavity_volume_ratio) + "\n" :
+                                             "pressure " + canonical(pressure) + "\n";
     for (const auto &f : point_forces)
       {
         text += "force";

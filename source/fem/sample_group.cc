@@ -1,9 +1,11 @@
 #include <softchain/fem/sample_group.h>
 #include <softchain/fem/solution_output.h>
+#include <softchain/fem/volume_controlled_inflation.h>
 
 #include <softchain/data/input_error.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace softchain::fem
@@ -50,6 +52,9 @@ namespace softchain::fem
     , solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, group, log)
     , nodes(solver.space())
     , base(solver.space())
+    , rest_volume(solver.pressure_load().has_cavity() ?
+                    solver.pressure_load().cavity_volume(solver.displacement()) :
+                    0.0)
   {}
 
   double SampleGroup::first_step(const data::Actuation *start, const data::Actuation &target) const
@@ -80,15 +85,39 @@ namespace softchain::fem
   void SampleGroup::check_samples(const std::vector<Sample> &samples) const
   {
     for (const auto &sample : samples)
-      if (sample.actuation.pressure != 0.0 && !solver.pressure_load().has_cavity())
+      if ((sample.actuation.pressure != 0.0 || sample.actuation.cavity_volume_ratio) &&
+          !solver.pressure_load().has_cavity())
         throw data::InputError(prm.file + ": subsection 'Samples', sample '" + sample.label +
-                               "': a pressure needs the mesh's physical group 'cavity', and "
-                               "this mesh has none");
+                               "': a pressure or cavity volume needs the mesh's physical group "
+                               "'cavity', and this mesh has none");
     for (const auto &sample : samples)
       if (!sample.actuation.point_forces.empty())
         EmbeddedPoints(solver.space(), points_of(sample.actuation),
                        prm.file + ": subsection 'Samples', sample '" + sample.label +
                          "': force point");
+  }
+
+  // Volume control from the current state (rest, or the start sample's
+  // state at its pressure) to the cavity volume `target`; `pressure` becomes
+  // the pressure reached. The outcome in the terms of a pressure-controlled
+  // solve: the load factor is the fraction of the volume increment reached.
+  QuasiStaticSolver::Result SampleGroup::inflate(const double target, double &pressure)
+  {
+    const auto                start = std::chrono::steady_clock::now();
+    VolumeControlledInflation inflation(solver, prm, solver.load_state().pressure);
+    const double              v_start = inflation.volume();
+    const auto                outcome = inflation.solve(target);
+    QuasiStaticSolver::Result result;
+    result.converged           = outcome.converged;
+    result.failure             = outcome.converged ? QuasiStaticSolver::Failure::none :
+                                                     QuasiStaticSolver::Failure::not_converged;
+    result.reason              = outcome.reason;
+    result.load_factor_reached = (outcome.curve.back().volume - v_start) / (target - v_start);
+    result.newton_iterations   = outcome.newton_iterations;
+    result.load_steps          = outcome.curve.size() - 1;
+    result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    pressure         = inflation.pressure();
+    return result;
   }
 
   data::SampleRecord SampleGroup::solve(const Sample &sample, const data::SampleRecord *start,
@@ -106,11 +135,14 @@ namespace softchain::fem
       solver.set_state(nodes.displacement(start->x), load_of(start->actuation));
     else
       solver.reset();
-    const auto result = solver.solve(load_of(sample.actuation),
-                                     first_step(start ? &start->actuation : nullptr, sample.actuation));
     data::SampleRecord record;
-    record.id                  = sample.id;
-    record.actuation           = sample.actuation;
+    record.id        = sample.id;
+    record.actuation = sample.actuation;
+    const auto result =
+      sample.actuation.cavity_volume_ratio ?
+        inflate(*sample.actuation.cavity_volume_ratio * rest_volume, record.actuation.pressure) :
+        solver.solve(load_of(sample.actuation),
+                     first_step(start ? &start->actuation : nullptr, sample.actuation));
     record.status = result.converged ? data::SampleStatus::converged :
                     result.failure == QuasiStaticSolver::Failure::limit_point ?
                                        data::SampleStatus::limit_point :

@@ -14,6 +14,10 @@ namespace softchain::fem
     void declare(data::PrmSection &section)
     {
       section.declare("Pressure sweep", "", "Pa, pressure-only samples (role pressure)");
+      section.declare("Volume sweep", "",
+                      "cavity volume ratios V/V0 > 1: the cavity inflated to each, the pressure "
+                      "solved for and stored (role volume); follows the finger past the limit "
+                      "point of its pressure");
       section.declare("Lateral tip forces", "", "N along +z at the force point (role lateral)");
       section.declare("Torsion couples", "", "N, two opposite forces along y (role torsion)");
       section.declare("Force sample pressures", "0",
@@ -114,6 +118,17 @@ namespace softchain::fem
       std::vector<Sample> samples;
       for (const double p : s.get_double_list("Pressure sweep"))
         samples.push_back({{p, {}, "pressure"}, label("pressure", p, "Pa"), ""});
+      for (const double ratio : s.get_double_list("Volume sweep"))
+        {
+          std::ostringstream value;
+          value << ratio;
+          if (!(ratio > 1 && ratio <= 100))
+            throw data::InputError(s.describe("Volume sweep") + ": " + value.str() +
+                                   " is not a volume ratio in (1, 100]");
+          Sample sample{{0, {}, "volume"}, "volume ratio " + value.str(), ""};
+          sample.actuation.cavity_volume_ratio = ratio;
+          samples.push_back(sample);
+        }
       for (const double p : s.get_double_list("Force sample pressures"))
         {
           for (const double f : s.get_double_list("Lateral tip forces"))
@@ -141,6 +156,8 @@ namespace softchain::fem
 
   double load_size(const data::Actuation &actuation)
   {
+    if (actuation.cavity_volume_ratio)
+      return *actuation.cavity_volume_ratio - 1;
     double size = std::abs(actuation.pressure);
     for (const auto &f : actuation.point_forces)
       size += std::hypot(f.force[0], f.force[1], f.force[2]);

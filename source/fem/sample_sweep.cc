@@ -25,14 +25,15 @@
 #include <optional>
 
 // A sample's result travels from its group to world rank 0 (the actuation is
-// known there by the id).
+// known there by the id; of it only the pressure, which volume control solves for).
 namespace boost::serialization
 {
   template <class Archive>
   void serialize(Archive &archive, softchain::data::SampleRecord &s, const unsigned int)
   {
-    archive &s.id &s.status &s.reason &s.load_factor_reached &s.newton_iterations &s.load_steps
-      &s.wall_time &s.x &s.force_points_deformed &s.base_force &s.base_moment;
+    archive &s.id &s.actuation.pressure &s.status &s.reason &s.load_factor_reached
+      &s.newton_iterations &s.load_steps &s.wall_time &s.x &s.force_points_deformed &s.base_force
+        &s.base_moment;
   }
 } // namespace boost::serialization
 
@@ -47,6 +48,16 @@ namespace softchain::fem
     unsigned int world_rank()
     {
       return Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    }
+
+    // The asked-for actuation on a record that travelled without it; under
+    // volume control the record keeps the pressure its solve found.
+    void adopt_actuation(data::SampleRecord &record, const data::Actuation &asked)
+    {
+      const double found = record.actuation.pressure;
+      record.actuation   = asked;
+      if (asked.cavity_volume_ratio)
+        record.actuation.pressure = found;
     }
 
     // Centre and z extent of the bounding box of the `tip` faces.
@@ -282,8 +293,8 @@ namespace softchain::fem
     if (world_rank() == 0)
       record = known.at(i);
     record           = Utilities::MPI::broadcast(MPI_COMM_WORLD, record, 0);
-    record.actuation = set.samples[i].actuation; // not serialised: known from the id
-    known[i]         = std::move(record);
+    adopt_actuation(record, set.samples[i].actuation); // known from the id
+    known[i] = std::move(record);
   }
 
   // The tip pose of a sample (rank 0: the database's mesh).
@@ -360,7 +371,7 @@ namespace softchain::fem
           for (auto &record : records)
             {
               const std::size_t i = index_of.at(record.id);
-              record.actuation    = set.samples[i].actuation;
+              adopt_actuation(record, set.samples[i].actuation);
               database->store_sample(record);
               progress.solved(set.samples[i], record, database->mesh());
               known[i] = std::move(record);

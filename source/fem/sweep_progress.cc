@@ -44,6 +44,8 @@ namespace softchain::fem
         out << "  tip u = (" << std::setprecision(2) << 1e3 * u[0] << ", " << 1e3 * u[1] << ", "
             << 1e3 * u[2] << ") mm";
       }
+    if (record.actuation.cavity_volume_ratio) // the pressure volume control found
+      out << "  p = " << std::setprecision(0) << record.actuation.pressure << " Pa";
     out << std::defaultfloat << std::endl;
   }
 } // namespace softchain::fem

@@ -264,6 +264,39 @@ TEST_CASE("a prescribed tip motion is part of the sample's id and reads back")
   CHECK_FALSE(again.read_sample(free.id).actuation.tip_motion);
 }
 
+TEST_CASE("a volume-controlled sample is identified by its volume ratio and keeps the pressure found")
+{
+  ScratchDirectory   dir("db_volume_ratio");
+  const std::string  path     = dir.file("f.h5");
+  auto               db       = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  const SampleRecord pressure = sample("h1", 1.7e4, 0.125);
+  SampleRecord       inflated = pressure;
+  inflated.actuation.role                = "volume";
+  inflated.actuation.cavity_volume_ratio = 2.5;
+  inflated.id                            = sample_id("h1", inflated.actuation);
+  // The ratio, not the pressure (an outcome), names the sample: the same
+  // pressure found at another ratio is another sample, another pressure
+  // found at the same ratio the same one; a pressure sample's text is as before.
+  CHECK(inflated.id != pressure.id);
+  SampleRecord other_found = inflated;
+  other_found.actuation.pressure = 1.2e4;
+  CHECK(sample_id("h1", other_found.actuation) == inflated.id);
+  SampleRecord other_ratio = inflated;
+  other_ratio.actuation.cavity_volume_ratio = 3.0;
+  CHECK(sample_id("h1", other_ratio.actuation) != inflated.id);
+  CHECK(pressure.actuation.canonical_text().find("volume") == std::string::npos);
+
+  db.store_sample(pressure);
+  db.store_sample(inflated);
+  const auto again = ActuationDatabase::open(path);
+  const auto read  = again.read_sample(inflated.id);
+  check_equal_samples(read, inflated);
+  REQUIRE(read.actuation.cavity_volume_ratio);
+  CHECK(*read.actuation.cavity_volume_ratio == 2.5);
+  CHECK(read.actuation.pressure == 1.7e4);
+  CHECK_FALSE(again.read_sample(pressure.id).actuation.cavity_volume_ratio);
+}
+
 TEST_CASE("a database in the single-file layout of earlier versions opens and extends")
 {
   ScratchDirectory  dir("db_single_file");

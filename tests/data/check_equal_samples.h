@@ -12,6 +12,8 @@ namespace softchain::testing
   {
     CHECK(a.id == b.id);
     CHECK(a.actuation.canonical_text() == b.actuation.canonical_text());
+    CHECK(a.actuation.pressure == b.actuation.pressure); // not in the text under volume control
+    CHECK(a.actuation.cavity_volume_ratio == b.actuation.cavity_volume_ratio);
     CHECK(a.actuation.role == b.actuation.role);
     CHECK(a.status == b.status);
     CHECK(a.reason == b.reason);

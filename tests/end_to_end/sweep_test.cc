@@ -345,6 +345,60 @@ TEST_CASE("samples beyond a limit point of their chain are stored as failed with
   CHECK(beyond.x == stop.x);            // the state at the limit
 }
 
+TEST_CASE("a volume sweep follows the finger past the limit point of its pressure")
+{
+  // The tiny bender's pressure has a limit point near 25 kPa (test above).
+  // Under volume control the cavity keeps growing past it while the pressure
+  // that holds it falls (measured: 24.7 kPa at 2 V0, 21.8 kPa at 6 V0).
+  TinyDesign design("sweep_volume", "set Volume sweep = 6, 1.25, 2");
+  auto       outcome = design.run("sweep");
+  INFO(outcome.output);
+  REQUIRE(outcome.status == 0);
+  const auto database = ActuationDatabase::open(design.database());
+  const auto &mesh    = database.mesh();
+  // The cavity's volume from its triangles (they point into the cavity).
+  const auto volume = [&](const std::vector<Point3> &x) {
+    double v = 0.0;
+    for (const auto &t : mesh.cavity_triangles)
+      v -= dot(x[t[0]], cross(x[t[1]], x[t[2]])) / 6;
+    return v;
+  };
+  std::map<double, softchain::data::SampleRecord> by_ratio;
+  for (const auto &id : database.sample_ids())
+    {
+      auto s = database.read_sample(id);
+      REQUIRE(s.actuation.cavity_volume_ratio);
+      CHECK(s.actuation.role == "volume");
+      CHECK(s.converged());
+      by_ratio[*s.actuation.cavity_volume_ratio] = s;
+    }
+  REQUIRE(by_ratio.size() == 3);
+  for (const auto &[ratio, s] : by_ratio)
+    {
+      INFO("V/V0 = " << ratio << ", p = " << s.actuation.pressure);
+      // Volume control meets the volume to Solver/Residual tolerance (1e-6)
+      // relative; measured from the stored triangles: 1.4e-11 at most.
+      CHECK(volume(s.x) / volume(mesh.X) == Approx(ratio).epsilon(1e-6));
+    }
+  const double p1 = by_ratio[1.25].actuation.pressure, p2 = by_ratio[2].actuation.pressure,
+               p6 = by_ratio[6].actuation.pressure;
+  CHECK(p1 > 0);
+  CHECK(p2 > p1); // rising towards the limit point
+  CHECK(p6 < p2); // past it: more volume at less pressure
+  // The ratio names the sample: a rerun finds all three cached, with the
+  // pressure found.
+  outcome = design.run("sweep");
+  CHECK(outcome.status == 0);
+  CHECK(softchain::testing::occurrences(outcome.output, " cached (converged)") == 3);
+  const auto again = ActuationDatabase::open(design.database());
+  for (const auto &[ratio, s] : by_ratio)
+    {
+      const auto cached = again.read_sample(s.id);
+      CHECK(cached.actuation.pressure == s.actuation.pressure);
+      CHECK(cached.x == s.x);
+    }
+}
+
 TEST_CASE("force points outside the body or malformed samples fail with exit 1 before any solve")
 {
   TinyDesign design("sweep_bad_point", "set Pressure sweep = 1e3\n"
@@ -360,7 +414,8 @@ TEST_CASE("force points outside the body or malformed samples fail with exit 1 b
     {"set Lateral tip forces = 0.1, abc", "'Lateral tip forces'"},
     {"set Validation samples = 1e3 : tip", "sample 'validation 1': '1e3 : tip' needs 'p'"},
     {"set Pressure sweep = 1e3\nset Validation samples = 1e3",
-     "sample 'validation 1' repeats the actuation of sample 'pressure 1000 Pa'"}};
+     "sample 'validation 1' repeats the actuation of sample 'pressure 1000 Pa'"},
+    {"set Volume sweep = 1.5, 0.8", "'Volume sweep' in subsection 'Samples': 0.8 is not a volume ratio"}};
   for (const auto &[entry, message] : bad)
     {
       design.write(entry);
@@ -398,7 +453,9 @@ TEST_CASE("a sweep on a database that another writer holds stops at once on ever
 
 TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
 {
-  const std::string two_groups = samples + "\nset Sample groups = 2";
+  // With a volume chain: its pressures, found by one group, reach rank 0.
+  const std::string with_volume = samples + "\nset Volume sweep = 1.5, 2";
+  const std::string two_groups  = with_volume + "\nset Sample groups = 2";
   TinyDesign        serial("sweep_serial", two_groups);
   TinyDesign        parallel("sweep_parallel", two_groups);
   REQUIRE(serial.run("sweep").status == 0);
@@ -412,7 +469,7 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
 
   // One group of two ranks: the mesh is partitioned, yet the node numbering
   // and the reference positions are the same bits.
-  TinyDesign split("sweep_split", samples);
+  TinyDesign split("sweep_split", with_volume);
   REQUIRE(split.run("sweep", 2).status == 0);
   const auto c = ActuationDatabase::open(split.database());
   CHECK(c.mesh().X == a.mesh().X);
@@ -421,7 +478,8 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
   CHECK(c.mesh().tip_nodes == a.mesh().tip_nodes);
   REQUIRE(c.sample_ids() == a.sample_ids());
   // The partitioned solve sums in another order: rounding differences only
-  // (measured 1.6e-17 m, ~10 ulp of 0.08 m); 1e-12 m is 1e-9 of the ~1 mm
-  // displacements, far below any numbering or gathering error (>= 1 mm).
+  // (measured 1.6e-17 m, ~10 ulp of 0.08 m, without the volume chain; 6.6e-16 m
+  // with it, whose pressure is itself an unknown); 1e-12 m is 1e-9 of the
+  // ~1 mm displacements, far below any numbering or gathering error (>= 1 mm).
   CHECK(position_difference(a, c) < 1e-12);
 }

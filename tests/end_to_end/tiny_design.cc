@@ -42,7 +42,7 @@ namespace softchain::testing
         {a.newton_iterations == b.newton_iterations, "Newton iterations"},
         {a.load_steps == b.load_steps, "load steps"},
         {a.actuation.canonical_text() == b.actuation.canonical_text() &&
-           a.actuation.role == b.actuation.role,
+           a.actuation.pressure == b.actuation.pressure && a.actuation.role == b.actuation.role,
          "actuation"},
         {a.x == b.x, "x"},
         {a.force_points_deformed == b.force_points_deformed, "force_points_deformed"},

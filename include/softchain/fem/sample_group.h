@@ -31,7 +31,8 @@ namespace softchain::fem
     void check_samples(const std::vector<Sample> &samples) const;
 
     // Solves `sample` from rest (start == nullptr) or from the converged
-    // sample `start` (its stored positions and actuation). A sample with a
+    // sample `start` (its stored positions and actuation); a sample with a
+    // cavity volume ratio under volume control, its pressure the one found. A sample with a
     // tip motion needs `anchor`, the equilibrium its motion is relative to
     // (InputError without). A failed solve returns the last converged state,
     // its reason and load factor along the path from the start. Writes
@@ -48,10 +49,14 @@ namespace softchain::fem
     QuasiStaticSolver solver;
     DatabaseExport    nodes;
     BaseReaction      base; // each sample's base wrench
+    double            rest_volume; // of the cavity (0 without one)
 
     // The first load factor of a solve from `start` to `target`: the .prm's
     // initial load step scaled so that the first increment is as large as
     // that of a solve from rest (a continued sample often needs one step).
     double first_step(const data::Actuation *start, const data::Actuation &target) const;
+    // A volume-controlled sample: the cavity inflated to volume `target`
+    // from the current state; `pressure` receives the pressure reached.
+    QuasiStaticSolver::Result inflate(double target, double &pressure);
   };
 } // namespace softchain::fem

@@ -4,6 +4,8 @@
 //
 //   subsection Samples
 //     set Pressure sweep     = 10e3, 20e3, 30e3   # Pa, no force; role pressure
+//     set Volume sweep       = 2, 4               # V/V0 of the cavity, the
+//                                                 # pressure solved for; role volume
 //     set Lateral tip forces = 0.1, 0.2           # N along +z at the force
 //                                                 # point; role lateral
 //     set Torsion couples    = 0.1, 0.2           # N: +F y at force point
@@ -41,8 +43,8 @@ namespace softchain::fem
     std::string     id;    // data::sample_id(design hash, actuation)
   };
 
-  // |p| + sum |f|: the order of the samples along a chain [mixed units,
-  // compared only within one chain].
+  // |p| + sum |f|, or V/V0 - 1 under volume control: the order of the
+  // samples along a chain [mixed units, compared only within one chain].
   double load_size(const data::Actuation &actuation);
 
   class SampleSet

@@ -110,9 +110,13 @@ namespace softchain::data
     // its inflated state and its tip motions), or a user's name.
     std::string role;
     std::optional<TipMotion> tip_motion; // none: the tip is free
+    // Volume control: the cavity inflated to this multiple of its volume at
+    // rest; `pressure` is then an outcome, the pressure that holds it there
+    // (none: pressure control, `pressure` is prescribed).
+    std::optional<double> cavity_volume_ratio;
 
-    // Canonical text of the actuation (pressure, points, forces, tip motion;
-    // not role).
+    // Canonical text of the actuation (pressure or, under volume control,
+    // the volume ratio instead; points, forces, tip motion; not role).
     std::string canonical_text() const;
   };
 
