@@ -44,6 +44,11 @@ namespace softchain::fem
 
     bool empty() const { return links.empty(); }
 
+    // The strain band d over which the tension law is rounded: the .prm's,
+    // or a wider one while the solver continues in it (QuasiStaticSolver).
+    double band() const { return smoothing; }
+    void   set_band(double d) { smoothing = d; }
+
     // Each link lies in one cell (cell_conforming_polylines() splits the
     // polylines at cell faces; the constructor checks it) and is assembled
     // with that cell: cell_matrix += K, cell_rhs -= f_int of the links in the

@@ -6,7 +6,9 @@
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
 // stepping (cut on divergence or J <= 0, grow after easy steps) and a line
 // search on the energy along the Newton direction. The cells (HyperelasticCell)
-// and the springs inside them are assembled together, cell by cell.
+// and the springs inside them are assembled together, cell by cell. A solve
+// from rest with springs continues in the springs' smoothing band: the load
+// path under a wide band, then the band narrowed to the .prm's at the target.
 #include <softchain/fem/dead_surface_traction.h>
 #include <softchain/fem/embedded_points.h>
 #include <softchain/fem/embedded_spring_network.h>
@@ -140,6 +142,12 @@ namespace softchain::fem
     void assemble_point_loads(const std::vector<PointLoad>         &point_loads,
                               const dealii::AffineConstraints<double> &constraints);
     bool solve_linear(); // false if the linear solver failed
+    // Along the straight load path from the current state to `target`.
+    Result solve_path(const LoadState &target, double first_step);
+    // From an equilibrium under spring band `from` to one under the .prm's
+    // band at the same load, by a path in log d; false if it fails.
+    bool   narrow_band(double from, Result &result);
+    bool   at_rest() const;
 
     struct NewtonOutcome
     {
