@@ -32,9 +32,9 @@ namespace softchain::fem
 
     // Solves `sample` from rest (start == nullptr) or from the converged
     // sample `start` (its stored positions and actuation); a sample with a
-    // cavity volume ratio under volume control, its pressure the one found. A sample with a
-    // tip motion needs `anchor`, the equilibrium its motion is relative to
-    // (InputError without). A failed solve returns the last converged state,
+    // cavity volume ratio by volume control, the record's pressure the one
+    // found. A sample with a tip motion needs `anchor`, the equilibrium its
+    // motion is relative to (InputError without). A failed solve returns the last converged state,
     // its reason and load factor along the path from the start. Writes
     // vtu/sample_<id>_* when Output/Write VTU.
     data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
