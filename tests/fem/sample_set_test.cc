@@ -2,9 +2,10 @@
 // of `Force sample pressures`, each pressure a continuation chain of its own.
 #include <softchain/fem/sample_set.h>
 
+#include "../data/scratch_directory.h"
+
 #include <catch2/catch.hpp>
 
-#include <filesystem>
 #include <fstream>
 
 using namespace softchain;
@@ -12,15 +13,15 @@ using namespace softchain::fem;
 
 TEST_CASE("force samples are made at each force sample pressure, one chain per role and pressure")
 {
-  const auto path = std::filesystem::temp_directory_path() / "softchain_sample_set_test.prm";
+  const testing::ScratchDirectory scratch("sample_set_test");
+  const std::string               path = scratch.file("samples.prm");
   std::ofstream(path) << "subsection Samples\n"
                          "  set Pressure sweep = 1e4, 2e4\n"
                          "  set Lateral tip forces = 0.1, 0.3\n"
                          "  set Torsion couples = 0.2\n"
                          "  set Force sample pressures = 0, 2e4\n"
                          "end\n";
-  const SampleSet set = SampleSet::read(data::PrmFile::read(path.string()), {{0.08, 0, 0}, 0.016}, "h");
-  std::filesystem::remove(path);
+  const SampleSet set = SampleSet::read(data::PrmFile::read(path), {{0.08, 0, 0}, 0.016}, "h");
   // 2 pressures + (2 lateral + 1 torsion) x 2 pressures.
   REQUIRE(set.samples.size() == 8);
   int lateral_at_pressure = 0;

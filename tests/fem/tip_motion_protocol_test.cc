@@ -3,13 +3,14 @@
 // sample to start from) and the motion samples along the tip frame.
 #include <softchain/fem/tip_motion_protocol.h>
 
+#include "../data/scratch_directory.h"
+
 #include <catch2/catch.hpp>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -23,11 +24,11 @@ namespace
 
   TipMotionProtocol read(const std::string &entries)
   {
-    const auto path = std::filesystem::temp_directory_path() / "softchain_protocol_test.prm";
+    // A directory of this process's own: test cases run in parallel.
+    const testing::ScratchDirectory scratch("protocol_test");
+    const std::string               path = scratch.file("protocol.prm");
     std::ofstream(path) << "subsection Protocol\n" << entries << "end\n";
-    const auto protocol = TipMotionProtocol::read(data::PrmFile::read(path.string()), "h");
-    std::filesystem::remove(path);
-    return protocol;
+    return TipMotionProtocol::read(data::PrmFile::read(path), "h");
   }
 
   // The sweep's loop: trials until the angle is reached, a pressure repeats
