@@ -10,10 +10,8 @@
 //
 // A last column measures a chain whose joints twist about another axis:
 // joint i's psi turns about the proximal link's x axis through
-// J_i,0 + (0, t, 0), its theta and phi about J_i,0 as before. t is fitted
-// to the torsion samples (their floor's sum of squares, scanned in 0.25 mm
-// steps up to the top of the body): the height of the section's twist
-// centre above the joints.
+// J_i,0 + (0, t, 0), its theta and phi about J_i,0 as before, t fitted to
+// the torsion samples as the reduction does (TwistAxis).
 //
 // Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5]
 #include <softchain/chain/angle_units.h>
@@ -22,11 +20,10 @@
 #include <softchain/data/actuation_database.h>
 #include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/neutral_layer.h>
+#include <softchain/reduction/twist_axis.h>
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,11 +68,8 @@ namespace
     return {(pose.tip_position + base_shift - fem.position).norm(),
             data::rotation_angle_between(pose.link_rotations.back(), fem.rotation)};
   }
-  // The floor with joint i's twist about the proximal link's x axis through
-  // J_i,0 + (0, t, 0). Forward kinematics: for a point X of link i,
-  //   x = o_i + R_i (X - J_i,0),  R_i = R_i-1 E(q_i),
-  //   o_i = o_i-1 + R_i-1 (J_i,0 - J_i-1,0) + R_i-1 (I - Rx(psi_i)) (0, t, 0),
-  // which is KinematicChain's for t = 0.
+  // The floor of a chain whose joints twist about an axis t above them
+  // (TwistAxis::chain_tip; t = 0 is floor_of's chain).
   Floor twist_axis_floor(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
                          const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh,
                          const double t)
@@ -83,41 +77,9 @@ namespace
     const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
                                         geometry.reference_points(), geometry.points(sample.x),
                                         sample.id);
-    const Eigen::Vector3d offset(0, t, 0);
-    Eigen::Matrix3d       R = Eigen::Matrix3d::Identity();
-    Eigen::Vector3d       o = geometry.reference_centre(0);
-    for (std::size_t k = 0; k < frames.size(); ++k)
-      {
-        if (k > 0)
-          o += R * (geometry.reference_centre(k) - geometry.reference_centre(k - 1));
-        const data::JointAngles angles = frames.relative_angles(k);
-        o += R * (offset - Eigen::AngleAxisd(angles.psi, Eigen::Vector3d::UnitX()) * offset);
-        R = R * data::rotation_from_angles(angles);
-      }
-    const Eigen::Vector3d tip =
-      o + R * (tip_fit.reference_centroid() - geometry.reference_centre(frames.size() - 1));
+    const auto tip = reduction::TwistAxis::chain_tip(geometry, frames, tip_fit.reference_centroid(), t);
     const data::TipPose fem = tip_fit.fit(data::select_nodes(sample.x, mesh.tip_nodes));
-    return {(tip - fem.position).norm(), data::rotation_angle_between(R, fem.rotation)};
-  }
-
-  // The height t of the twist axis above the joints that the torsion
-  // samples' floor is smallest at (0 without torsion samples).
-  double fitted_twist_offset(const reduction::JointGeometry &geometry,
-                             const std::vector<data::SampleRecord> &samples,
-                             const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh,
-                             const double highest)
-  {
-    double best = 0.0, smallest = std::numeric_limits<double>::infinity();
-    for (double t = 0.0; t <= highest; t += 2.5e-4)
-      {
-        double sum = 0.0;
-        for (const auto &s : samples)
-          if (s.actuation.role == "torsion")
-            sum += std::pow(twist_axis_floor(geometry, s, tip_fit, mesh, t).position, 2);
-        if (sum < smallest)
-          smallest = sum, best = t;
-      }
-    return best;
+    return {(tip.position - fem.position).norm(), data::rotation_angle_between(tip.rotation, fem.rotation)};
   }
 } // namespace
 
@@ -163,11 +125,14 @@ int main(int argc, char **argv)
       const std::size_t layer_index = placements.size() - 1;
 
       const data::TipPoseFit tip_fit = data::TipPoseFit::of_mesh(mesh, argv[1]);
-      const double           twist_offset =
-        fitted_twist_offset(placements[layer_index].geometry, samples, tip_fit, mesh,
-                            body->reference_box().max()(1) - layer.height());
-      std::printf("twist axis fitted to the torsion samples: %.2f mm above the joints\n",
-                  1e3 * twist_offset);
+      std::vector<const data::SampleRecord *> torsion;
+      for (const auto &s : samples)
+        if (s.actuation.role == "torsion")
+          torsion.push_back(&s);
+      const reduction::TwistAxis axis(placements[layer_index].geometry, mesh, torsion,
+                                      body->reference_box().max()(1) - layer.height(), argv[1]);
+      const double twist_offset = axis.offset();
+      std::printf("%s\n", axis.description().c_str());
       std::printf("\ntip error of the chain driven by the FEM's M2 rotations (b = %.2f a), "
                   "%% of L = %.1f mm / deg\n\n",
                   fraction, 1e3 * length);

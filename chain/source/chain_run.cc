@@ -204,7 +204,12 @@ namespace softchain::chain
       *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
     if (export_mjcf)
       export_model(selected, database, chain_dir + "/finger.xml", p.newton);
-    models.push_back(baseline_of(selected, mesh, p.baseline_youngs_modulus));
+    // The baseline's beam segments lie between the joints of the reduction's
+    // table, each joint one spherical joint (no separate twist axis).
+    const ChainModel plain = StiffnessFiles(stiffness_dir, p.method, p.half_width_fraction)
+                               .read_model(p.method, selected.chain().tip(), p.stiffness_column,
+                                           p.in_pressure, p.rigid_where_missing, false);
+    models.push_back(baseline_of(plain, mesh, p.baseline_youngs_modulus));
     const int failed = validate(models, validation, p, chain_dir);
     compare_protocol(models, database, p, chain_dir);
     return failed > 0 ? 2 : 0;

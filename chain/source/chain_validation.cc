@@ -98,7 +98,9 @@ namespace softchain::chain
             r.orientation_error =
               data::rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
             r.tip_position       = pose.tip_position;
-            r.joint_positions    = pose.joint_positions;
+            for (int i = 0; i < model.chain().n_joints(); ++i) // the finger's joints, as drawn
+              if (!model.is_twist_joint(i))
+                r.joint_positions.push_back(pose.joint_positions[i]);
             r.tip_rotation_angle =
               data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.link_rotations.back());
           }

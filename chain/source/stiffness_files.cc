@@ -114,7 +114,9 @@ namespace softchain::chain
     struct StiffnessTable
     {
       std::vector<Eigen::Vector3d> joint_centres;
+      std::vector<Eigen::Vector3d> twist_points; // S_i; J_i without the S columns
       std::vector<Eigen::Vector3d> stiffness;
+      Eigen::Vector3d              rigid;        // k of a rigid joint, per axis
     };
 
     // A joint axis without a usable stiffness (NaN: no usable sample, e.g. a
@@ -124,9 +126,11 @@ namespace softchain::chain
     // e.g. torsion in a pressure-only sample set) is held rigid at every
     // joint, k = 1e6 x the largest stiffness of any axis: the chain then
     // bends about the loaded axes only. No usable value at all is an error.
-    void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
-                                  const std::vector<std::string> &columns, const bool rigid)
+    // Returns the k that holds a joint rigid, per axis.
+    Eigen::Vector3d hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
+                                             const std::vector<std::string> &columns, const bool rigid)
     {
+      Eigen::Vector3d rigid_k;
       const auto largest_of = [&](const int axis) {
         double largest = 0;
         for (const auto &k : stiffness)
@@ -141,6 +145,7 @@ namespace softchain::chain
       for (int axis = 0; axis < 3; ++axis)
         {
           const double largest = largest_of(axis);
+          rigid_k[axis]        = 1e6 * (largest > 0 ? largest : largest_any);
           if (largest == 0)
             {
               if (!rigid)
@@ -164,9 +169,10 @@ namespace softchain::chain
                   std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": " << what
                             << " is not a positive stiffness; the joint is held rigid about this "
                                "axis\n";
-                stiffness[joint][axis] = 1e6 * (largest > 0 ? largest : largest_any);
+                stiffness[joint][axis] = rigid_k[axis];
               }
         }
+      return rigid_k;
     }
 
     StiffnessTable read_stiffness(const std::string &path, const std::string &column,
@@ -192,12 +198,22 @@ namespace softchain::chain
                                             finite_number(table, path, row, "Jz"));
           if (row > 0 && !(result.joint_centres[row].x() > result.joint_centres[row - 1].x()))
             throw InputError(where(path, row) + "Jx must increase from joint to joint");
+          result.twist_points.push_back(result.joint_centres.back());
+          if (table.has_column("Sx") && table.has_column("Sy") && table.has_column("Sz"))
+            {
+              result.twist_points.back() = {finite_number(table, path, row, "Sx"),
+                                            finite_number(table, path, row, "Sy"),
+                                            finite_number(table, path, row, "Sz")};
+              if (result.twist_points.back().x() != result.joint_centres.back().x())
+                throw InputError(where(path, row) + "Sx must equal Jx (the twist axis passes through "
+                                                    "the joint's section)");
+            }
           Eigen::Vector3d k;
           for (int axis = 0; axis < 3; ++axis)
             k[axis] = stiffness_entry(table, path, row, k_columns[axis]);
           result.stiffness.push_back(k);
         }
-      hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
+      result.rigid = hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
       return result;
     }
 
@@ -264,6 +280,63 @@ namespace softchain::chain
       return result;
     }
 
+    // A chain's joints as read: centres, k, k(p) per axis (empty: constant),
+    // J_p(p) per joint and axis.
+    struct JointTables
+    {
+      std::vector<Eigen::Vector3d>                joint_centres;
+      std::vector<Eigen::Vector3d>                stiffness;
+      std::array<std::vector<PiecewiseLinear>, 3> k_in_pressure;
+      std::vector<PiecewiseLinear>                pressure_torque;
+      std::vector<bool>                           twist_joints; // empty: none
+    };
+
+    PiecewiseLinear constant(const double value)
+    {
+      return PiecewiseLinear({0.0}, {value});
+    }
+
+    // Joint i twists about the proximal link's x axis through S_i and bends
+    // about J_i: where S_i != J_i it becomes two spherical joints, a twist
+    // joint at S_i (moved 1 nm towards the base along x, which leaves its
+    // twist axis, parallel to x, where it is) free about psi only, and the
+    // bending joint at J_i free about theta and phi only; the other axes are
+    // held rigid (k = `rigid`, 1e6 x the largest of the axis). The twist
+    // joint takes k_psi and J_p,x (the reduction's torque about S_i), the
+    // bending joint k_theta, k_phi and J_p,y, J_p,z.
+    JointTables with_twist_joints(const JointTables &joints, const std::vector<Eigen::Vector3d> &twist_points,
+                                  const Eigen::Vector3d &rigid)
+    {
+      bool any = false;
+      for (std::size_t i = 0; i < twist_points.size(); ++i)
+        any = any || twist_points[i] != joints.joint_centres[i];
+      if (!any)
+        return joints;
+      JointTables expanded;
+      for (std::size_t i = 0; i < twist_points.size(); ++i)
+        {
+          expanded.joint_centres.push_back(twist_points[i] - Eigen::Vector3d(1e-9, 0, 0));
+          expanded.joint_centres.push_back(joints.joint_centres[i]);
+          expanded.twist_joints.insert(expanded.twist_joints.end(), {true, false});
+          const Eigen::Vector3d &k = joints.stiffness[i];
+          expanded.stiffness.emplace_back(k[0], rigid[1], rigid[2]);
+          expanded.stiffness.emplace_back(rigid[0], k[1], k[2]);
+          for (int axis = 0; axis < 3; ++axis)
+            if (!joints.k_in_pressure[axis].empty())
+              {
+                const bool twist_axis = axis == 0;
+                const PiecewiseLinear &table = joints.k_in_pressure[axis][i];
+                expanded.k_in_pressure[axis].push_back(twist_axis ? table : constant(rigid[axis]));
+                expanded.k_in_pressure[axis].push_back(twist_axis ? constant(rigid[axis]) : table);
+              }
+          for (int axis = 0; axis < 3; ++axis)
+            expanded.pressure_torque.push_back(axis == 0 ? joints.pressure_torque[3 * i] : constant(0.0));
+          for (int axis = 0; axis < 3; ++axis)
+            expanded.pressure_torque.push_back(axis == 0 ? constant(0.0) : joints.pressure_torque[3 * i + axis]);
+        }
+      return expanded;
+    }
+
     PressureActuation actuation_from(std::vector<PiecewiseLinear> torque, bool in_pressure)
     {
       Eigen::VectorXd rest(torque.size());
@@ -298,19 +371,18 @@ namespace softchain::chain
 
   ChainModel StiffnessFiles::read_model(const std::string &name, const Eigen::Vector3d &tip,
                                         const std::string &column, bool in_pressure,
-                                        bool rigid_where_missing) const
+                                        bool rigid_where_missing, bool twist_axes) const
   {
     StiffnessTable table = read_stiffness(stiffness_path_, column, rigid_where_missing);
     const int      n     = static_cast<int>(table.stiffness.size());
     if (!(tip.x() > table.joint_centres.back().x()))
       throw InputError(stiffness_path_ + ": the last joint lies beyond the finger's tip");
-    JointStiffness stiffness(table.stiffness);
+    JointTables joints{table.joint_centres, table.stiffness, {}, read_pressure_torque(pressure_torque_path_, n), {}};
     if (in_pressure)
       {
         std::size_t n_pressures = 0;
-        stiffness.set_in_pressure(2, read_k_in_pressure(bending_in_pressure_path_, n, 2,
-                                                        table.stiffness, rigid_where_missing,
-                                                        n_pressures));
+        joints.k_in_pressure[2] = read_k_in_pressure(bending_in_pressure_path_, n, 2, table.stiffness,
+                                                     rigid_where_missing, n_pressures);
         // k_psi(p), k_theta(p) where the torsion (lateral) samples were made
         // at more than one pressure; otherwise (also without any such
         // sample: a table of no rows) k stays the stiffness table's.
@@ -321,11 +393,19 @@ namespace softchain::chain
               auto tables = read_k_in_pressure(force_in_pressure_paths_[axis], n, axis,
                                                table.stiffness, rigid_where_missing, n_pressures);
               if (n_pressures > 1)
-                stiffness.set_in_pressure(axis, std::move(tables));
+                joints.k_in_pressure[axis] = std::move(tables);
             }
       }
-    return ChainModel(name, KinematicChain(std::move(table.joint_centres), tip),
-                      std::move(stiffness),
-                      actuation_from(read_pressure_torque(pressure_torque_path_, n), in_pressure));
+    if (twist_axes)
+      joints = with_twist_joints(joints, table.twist_points, table.rigid);
+    JointStiffness stiffness(joints.stiffness);
+    for (int axis = 0; axis < 3; ++axis)
+      if (!joints.k_in_pressure[axis].empty())
+        stiffness.set_in_pressure(axis, std::move(joints.k_in_pressure[axis]));
+    ChainModel model(name, KinematicChain(std::move(joints.joint_centres), tip), std::move(stiffness),
+                     actuation_from(std::move(joints.pressure_torque), in_pressure));
+    if (!joints.twist_joints.empty())
+      model.set_twist_joints(std::move(joints.twist_joints));
+    return model;
   }
 } // namespace softchain::chain

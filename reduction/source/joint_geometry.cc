@@ -62,6 +62,19 @@ namespace softchain::reduction
     return body_ ? body_->deformed(located_centres_[i], x) : frames[i].centre;
   }
 
+  Eigen::Vector3d JointGeometry::reference_twist_point(std::size_t i) const
+  {
+    return reference_centres_[i] + Eigen::Vector3d(0, twist_offset_, 0);
+  }
+
+  Eigen::Vector3d JointGeometry::deformed_twist_point(std::size_t i, const JointFrames &frames,
+                                                      const std::vector<data::Point3> &x) const
+  {
+    const Eigen::Matrix3d proximal =
+      i == 0 ? Eigen::Matrix3d::Identity() : Eigen::Matrix3d(frames[i - 1].rotation);
+    return deformed_centre(i, frames, x) + proximal * Eigen::Vector3d(0, twist_offset_, 0);
+  }
+
   Eigen::Vector3d JointGeometry::section_normal(std::size_t i, const JointFrames &frames) const
   {
     const Eigen::Vector3d distal = frames[i].rotation.col(0);

@@ -58,9 +58,17 @@ namespace softchain::reduction
                                              const Eigen::Matrix3d &frame,
                                              const Eigen::Vector3d &normal) const
   {
+    return per_pascal_about(centre, centre, frame, normal);
+  }
+
+  Eigen::Vector3d PressureTorque::per_pascal_about(const Eigen::Vector3d &moment_point,
+                                                   const Eigen::Vector3d &centre,
+                                                   const Eigen::Matrix3d &frame,
+                                                   const Eigen::Vector3d &normal) const
+  {
     Eigen::Vector3d moment = Eigen::Vector3d::Zero();
     for (const auto &triangle : triangles_)
-      moment += polygon_moment(clip_distal(triangle, centre, normal), centre);
+      moment += polygon_moment(clip_distal(triangle, centre, normal), moment_point);
     return frame.transpose() * moment;
   }
 } // namespace softchain::reduction

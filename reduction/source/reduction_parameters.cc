@@ -15,6 +15,9 @@ namespace softchain::reduction
                       "strain-limiting layer | paper (bounding-box centres, Sec. III-C)");
       section.declare("Joint height", "auto",
                       "y of the strain-limiting layer [m]; auto: fitted to the bending samples");
+      section.declare("Twist axis offset", "auto",
+                      "height [m] of the joints' twist axis above them; auto: fitted to the "
+                      "torsion samples");
       section.declare("Slab half-widths", "1, 0.5, 0.3333333333333333", "b as fractions of a");
       section.declare("Methods", "M1, M2", "M1: bounding box, M2: affine fit");
       section.declare("Rotation threshold", "0.0017453292519943296",
@@ -48,12 +51,13 @@ namespace softchain::reduction
     }
 
     // "auto" (NaN: measured) or a height in metres.
-    double read_joint_height(const data::PrmSection &section)
+    // A length in metres, or NaN for `auto` (measured by the reduction).
+    double read_length_or_auto(const data::PrmSection &section, const std::string &name)
     {
-      if (section.get("Joint height") == "auto")
+      if (section.get(name) == "auto")
         return NAN;
-      const double y = section.get_double("Joint height");
-      section.require(std::isfinite(y), "Joint height", "must be a number of metres or auto");
+      const double y = section.get_double(name);
+      section.require(std::isfinite(y), name, "must be a number of metres or auto");
       return y;
     }
   } // namespace
@@ -75,7 +79,8 @@ namespace softchain::reduction
     p.n_joints = section.get_integer("Number of joints");
     section.require(p.n_joints >= 0, "Number of joints", "must be >= 0");
     p.placement    = read_placement(section);
-    p.joint_height = read_joint_height(section);
+    p.joint_height      = read_length_or_auto(section, "Joint height");
+    p.twist_axis_offset = read_length_or_auto(section, "Twist axis offset");
     p.slab_half_width_fractions = section.get_double_list("Slab half-widths");
     section.require(!p.slab_half_width_fractions.empty(), "Slab half-widths", "no value given");
     for (const double f : p.slab_half_width_fractions)

@@ -7,6 +7,7 @@
 #include <softchain/reduction/reduction_run.h>
 #include <softchain/reduction/stiffness_plots.h>
 #include <softchain/reduction/stiffness_tables.h>
+#include <softchain/reduction/twist_axis.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +52,19 @@ namespace softchain::reduction
       return bending;
     }
 
+    // The converged samples whose role feeds k_psi: they twist the finger
+    // and locate its twist axis.
+    std::vector<const data::SampleRecord *> torsion_samples(const ReductionParameters &parameters,
+                                                            const std::vector<data::SampleRecord> &samples)
+    {
+      std::vector<const data::SampleRecord *> torsion;
+      for (const auto &sample : samples)
+        if (std::count(parameters.torsion_roles.begin(), parameters.torsion_roles.end(),
+                       sample.actuation.role))
+          torsion.push_back(&sample);
+      return torsion;
+    }
+
     // Builds the joint geometry of every b for the placement of the .prm.
     class GeometryFactory
     {
@@ -72,12 +86,25 @@ namespace softchain::reduction
             layer_height_ = layer.height();
             std::cout << "softchain reduce: " << layer.description() << "\n";
           }
+        twist_offset_ = parameters.twist_axis_offset;
+        if (std::isnan(twist_offset_))
+          {
+            // Fitted on the links' own slabs (b = a/2), like the layer.
+            const TwistAxis axis((*this)(0.5 * layout.spacing()), mesh_,
+                                 torsion_samples(parameters, samples),
+                                 body_->reference_box().max()(1) - layer_height_, source);
+            twist_offset_ = axis.offset();
+            std::cout << "softchain reduce: " << axis.description() << "\n";
+          }
       }
 
       JointGeometry operator()(double half_width) const
       {
-        return body_ ? JointGeometry(layout_, body_, layer_height_, half_width) :
-                       JointGeometry(layout_, mesh_, half_width);
+        if (!body_)
+          return JointGeometry(layout_, mesh_, half_width);
+        JointGeometry geometry(layout_, body_, layer_height_, half_width);
+        geometry.set_twist_offset(std::isnan(twist_offset_) ? 0.0 : twist_offset_);
+        return geometry;
       }
 
     private:
@@ -85,6 +112,7 @@ namespace softchain::reduction
       const data::MeshRecord            &mesh_;
       std::shared_ptr<const BodySamples> body_;
       double                             layer_height_ = NAN;
+      double                             twist_offset_ = NAN;
     };
 
     // Writes the CSV files of every (b, method); returns their labels and

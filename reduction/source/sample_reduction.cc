@@ -28,10 +28,19 @@ namespace softchain::reduction
         const JointFrame     &frame  = frames[i];
         const Eigen::Vector3d centre = geometry.deformed_centre(i, frames, sample.x);
         JointResult           joint;
-        joint.pressure_torque = pressure_torque.per_pascal(centre, frame.rotation,
-                                                           geometry.section_normal(i, frames));
+        const Eigen::Vector3d normal = geometry.section_normal(i, frames);
+        joint.pressure_torque = pressure_torque.per_pascal(centre, frame.rotation, normal);
         joint.torque = external.about(geometry.x_joint(i), centre, frame.rotation) +
                        joint.pressure_torque * pressure_;
+        if (geometry.twist_offset() != 0.0) // the twisting torque about the twist axis
+          {
+            const Eigen::Vector3d twist_point = geometry.deformed_twist_point(i, frames, sample.x);
+            const Eigen::Vector3d pressure_about_twist =
+              pressure_torque.per_pascal_about(twist_point, centre, frame.rotation, normal);
+            joint.pressure_torque.x() = pressure_about_twist.x();
+            joint.torque.x() = external.about(geometry.x_joint(i), twist_point, frame.rotation).x() +
+                               pressure_about_twist.x() * pressure_;
+          }
         joint.stretches = frame.stretches;
         largest_torque  = std::max(largest_torque, joint.torque.norm());
         joints_.push_back(joint);

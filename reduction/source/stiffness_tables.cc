@@ -31,16 +31,17 @@ namespace softchain::reduction
 
   CsvTable StiffnessTables::stiffness() const
   {
-    CsvTable table({"joint", "x_ref", "Jx", "Jy", "Jz", "k_psi", "k_theta", "k_phi", "k_psi_fit",
-                    "k_theta_fit", "k_phi_fit", "n_psi", "n_theta", "n_phi"});
+    CsvTable table({"joint", "x_ref", "Jx", "Jy", "Jz", "Sx", "Sy", "Sz", "k_psi", "k_theta", "k_phi",
+                    "k_psi_fit", "k_theta_fit", "k_phi_fit", "n_psi", "n_theta", "n_phi"});
     const auto &joints = reduction_.stiffness().joints();
     for (std::size_t i = 0; i < joints.size(); ++i)
       {
         const JointGeometry  &geometry = reduction_.geometry();
         const Eigen::Vector3d J        = geometry.reference_centre(i);
+        const Eigen::Vector3d S        = geometry.reference_twist_point(i);
         const JointStiffness &k        = joints[i];
         table.add_row(std::vector<double>{
-          double(i + 1), geometry.x_joint(i), J(0), J(1), J(2), k.at_largest_load(0),
+          double(i + 1), geometry.x_joint(i), J(0), J(1), J(2), S(0), S(1), S(2), k.at_largest_load(0),
           k.at_largest_load(1), k.at_largest_load(2), k.fit(0), k.fit(1), k.fit(2),
           double(k.n_used[0]), double(k.n_used[1]), double(k.n_used[2])});
       }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace softchain::chain::testing
 {
@@ -19,17 +20,28 @@ namespace softchain::chain::testing
     double          jp_growth  = 0.5;       // J_p(p_max) = (1 + growth) J_p(0)
     double          p_max      = 8e4;       // Pa
     double          k_phi_drop = 0.3;       // k_phi(p_max) = (1 - drop) k_phi
+    double          twist_height = 0.0;     // S_i = J_i + (0, twist_height, 0)
   };
 
   inline data::CsvTable stiffness_table(const UniformReduction &r)
   {
-    data::CsvTable table({"joint", "x_ref", "Jx", "Jy", "Jz", "k_psi", "k_theta", "k_phi",
-                          "k_psi_fit", "k_theta_fit", "k_phi_fit", "n_psi", "n_theta", "n_phi"});
+    // The twist axis columns only where the twist axis is not the joint's
+    // (the reduction's files before them had none).
+    const bool twist = r.twist_height != 0.0;
+    std::vector<std::string> columns = {"joint", "x_ref", "Jx", "Jy", "Jz"};
+    if (twist)
+      columns.insert(columns.end(), {"Sx", "Sy", "Sz"});
+    columns.insert(columns.end(), {"k_psi", "k_theta", "k_phi", "k_psi_fit", "k_theta_fit",
+                                   "k_phi_fit", "n_psi", "n_theta", "n_phi"});
+    data::CsvTable table(columns);
     for (int i = 0; i < r.n; ++i)
       {
-        const double x = (i + 0.5) * r.a;
-        table.add_row(std::vector<double>{double(i + 1), x, x, 0.0, 0.0, r.k[0], r.k[1], r.k[2],
-                                          r.k_fit[0], r.k_fit[1], r.k_fit[2], 3, 3, 8});
+        const double        x   = (i + 0.5) * r.a;
+        std::vector<double> row = {double(i + 1), x, x, 0.0, 0.0};
+        if (twist)
+          row.insert(row.end(), {x, r.twist_height, 0.0});
+        row.insert(row.end(), {r.k[0], r.k[1], r.k[2], r.k_fit[0], r.k_fit[1], r.k_fit[2], 3, 3, 8});
+        table.add_row(row);
       }
     return table;
   }

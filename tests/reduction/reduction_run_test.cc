@@ -203,8 +203,8 @@ TEST_CASE("run_reduction end to end on a synthetic database")
       {
         const std::string stem = dir.file("out/stiffness/" + method + "_b" + f + "a");
         const CsvTable    k    = CsvTable::read(stem + ".csv");
-        CHECK(k.columns() == std::vector<std::string>{"joint", "x_ref", "Jx", "Jy", "Jz", "k_psi",
-                                                       "k_theta", "k_phi", "k_psi_fit",
+        CHECK(k.columns() == std::vector<std::string>{"joint", "x_ref", "Jx", "Jy", "Jz", "Sx", "Sy",
+                                                       "Sz", "k_psi", "k_theta", "k_phi", "k_psi_fit",
                                                        "k_theta_fit", "k_phi_fit", "n_psi",
                                                        "n_theta", "n_phi"});
         REQUIRE(k.n_rows() == 5);

@@ -7,6 +7,7 @@
 #include <softchain/chain/pressure_actuation.h>
 
 #include <string>
+#include <vector>
 
 namespace softchain::chain
 {
@@ -22,10 +23,17 @@ namespace softchain::chain
     const JointStiffness    &stiffness() const { return stiffness_; }
     const PressureActuation &actuation() const { return actuation_; }
 
+    // A twist joint is the first of the pair a joint with its own twist axis
+    // becomes (StiffnessFiles): it carries only psi, on a point above the
+    // finger's joint, and is left out where the chain's joints are drawn.
+    void set_twist_joints(std::vector<bool> twist_joints);
+    bool is_twist_joint(int i) const { return !twist_joints_.empty() && twist_joints_[i]; }
+
   private:
     std::string       name_;
     KinematicChain    chain_;
     JointStiffness    stiffness_;
     PressureActuation actuation_;
+    std::vector<bool> twist_joints_; // empty: none
   };
 } // namespace softchain::chain

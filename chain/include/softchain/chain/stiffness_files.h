@@ -2,8 +2,9 @@
 // StiffnessFiles: the reduction tier's output that defines a chain, for one
 // method (M1, M2) and slab half-width b = fraction * a, under
 // <output_dir>/stiffness/ with label <M>_b<fraction with 2 decimals>a:
-//   <label>.csv                   joint,x_ref,Jx,Jy,Jz,k_psi,k_theta,k_phi,
+//   <label>.csv                   joint,x_ref,Jx,Jy,Jz,Sx,Sy,Sz,k_psi,k_theta,k_phi,
 //                                 k_psi_fit,k_theta_fit,k_phi_fit,n_psi,n_theta,n_phi
+//                                 (Sx, Sy, Sz, the twist axis point, optional)
 //   <label>_kphi_vs_pressure.csv  pressure,joint,k_phi
 //   <label>_kpsi_vs_pressure.csv, <label>_ktheta_vs_pressure.csv
 //                                 pressure,joint,k_psi (k_theta); optional, used
@@ -43,9 +44,12 @@ namespace softchain::chain
     // `in_pressure` makes k_phi and J_p follow their pressure tables. A k
     // that is NaN or not positive at some joints holds them rigid
     // (`rigid_where_missing`) or is an InputError.
+    // With `twist_axes`, a joint whose twist axis point S_i (columns Sx, Sy,
+    // Sz) is not J_i becomes a twist joint at S_i and a bending joint at J_i
+    // (see with_twist_joints in the source): 2n joints.
     ChainModel read_model(const std::string &name, const Eigen::Vector3d &tip,
                           const std::string &column, bool in_pressure,
-                          bool rigid_where_missing = true) const;
+                          bool rigid_where_missing = true, bool twist_axes = true) const;
 
   private:
     std::string stiffness_path_;

@@ -20,6 +20,12 @@
 // links it joins, R_i-1 e_x + R_i e_x (R_0 = identity, the clamped base).
 // Rigid links between joints on a layer that keeps its length follow the
 // finger exactly where it bends like a beam.
+//
+// Twist axis (strain-limiting-layer placement): joint i twists (psi) about
+// the proximal link's x axis through S_i,0 = J_i,0 + (0, t, 0), the section's
+// twist centre t above the joint (TwistAxis), and bends (theta, phi) about
+// J_i. The torque that twists it is the moment about S_i. t = 0 (the paper's
+// placement, and the default until set) twists about the joint centre.
 #include <softchain/reduction/body_samples.h>
 #include <softchain/reduction/joint_frames.h>
 #include <softchain/reduction/joint_layout.h>
@@ -54,6 +60,13 @@ namespace softchain::reduction
     // J_i of a sample whose slabs gave `frames` (x: the sample's nodes).
     Eigen::Vector3d deformed_centre(std::size_t i, const JointFrames &frames,
                                     const std::vector<data::Point3> &x) const;
+    // The twist axis: t, S_i,0, and S_i of a sample (J_i moved by the sample
+    // plus R_i-1 (0, t, 0), R_i-1 the proximal slab's rotation).
+    void            set_twist_offset(double t) { twist_offset_ = t; }
+    double          twist_offset() const { return twist_offset_; }
+    Eigen::Vector3d reference_twist_point(std::size_t i) const;
+    Eigen::Vector3d deformed_twist_point(std::size_t i, const JointFrames &frames,
+                                         const std::vector<data::Point3> &x) const;
     // Normal of the section through J_i that splits the finger at joint i.
     Eigen::Vector3d section_normal(std::size_t i, const JointFrames &frames) const;
 
@@ -65,5 +78,6 @@ namespace softchain::reduction
     std::vector<double>                x_joints_;
     std::vector<Eigen::Vector3d>       reference_centres_;
     std::vector<CellPoint>             located_centres_;
+    double                             twist_offset_ = 0.0;
   };
 } // namespace softchain::reduction

@@ -31,6 +31,11 @@ namespace softchain::reduction
     // the section through the centre with the given normal.
     Eigen::Vector3d per_pascal(const Eigen::Vector3d &centre, const Eigen::Matrix3d &frame,
                                const Eigen::Vector3d &normal) const;
+    // The same distal walls' moment about another point (a joint's twist
+    // axis point), the section still through `centre`.
+    Eigen::Vector3d per_pascal_about(const Eigen::Vector3d &moment_point,
+                                     const Eigen::Vector3d &centre, const Eigen::Matrix3d &frame,
+                                     const Eigen::Vector3d &normal) const;
 
   private:
     std::vector<std::array<Eigen::Vector3d, 3>> triangles_;

@@ -33,6 +33,7 @@ namespace softchain::reduction
     int                         n_joints      = 0;    // 0: round(L / a)
     JointPlacement              placement     = JointPlacement::strain_limiting_layer;
     double                      joint_height  = NAN;  // y_n [m]; NaN: measured
+    double                      twist_axis_offset = NAN; // t [m] above the joints; NaN: fitted
     std::vector<double>         slab_half_width_fractions; // b / a
     std::vector<RotationMethod> methods;
     double                      rotation_threshold = 0.0; // rad
