@@ -6,6 +6,7 @@
 
 #include "../data/occurrences.h"
 #include "../data/scratch_directory.h"
+#include "reduction_output.h"
 
 #include <catch2/catch.hpp>
 
@@ -32,7 +33,34 @@ namespace
     return ChainModel("tapered", KinematicChain(joints, {0.09, -0.0036, 0.0}), JointStiffness(k),
                       PressureActuation(jp));
   }
+
+  // The uniform finger of the reduction's files with twist axes 4 mm above
+  // its joints: 9 twist joints and 9 bending joints.
+  ChainModel twist_axis_finger(const softchain::testing::ScratchDirectory &dir)
+  {
+    softchain::chain::testing::UniformReduction r;
+    r.twist_height = 0.004;
+    r.jp           = {0.0, 0.0, 2e-7};
+    const StiffnessFiles files(dir.path().string(), "M2", 0.5);
+    write_reduction(files, r);
+    return files.read_model("M2", {0.09, 0.006, 0.0}, "value", false);
+  }
 } // namespace
+
+TEST_CASE("a chain with twist axes exports the free hinges only: psi at S, theta and phi at J")
+{
+  softchain::testing::ScratchDirectory dir("mjcf_twist");
+  const ChainModel  model = twist_axis_finger(dir);
+  REQUIRE(model.chain().n_joints() == 18);
+  const std::string xml = MjcfExport(model, {}).text();
+  CHECK(softchain::testing::occurrences(xml, "<body name=") == 18);
+  CHECK(softchain::testing::occurrences(xml, "<joint name=") == 27);
+  CHECK(softchain::testing::occurrences(xml, "_psi\" axis") == 9);
+  CHECK(xml.find("joint1_psi\"") != std::string::npos);
+  CHECK(xml.find("joint1_theta\"") == std::string::npos);
+  CHECK(xml.find("joint2_psi\"") == std::string::npos);
+  CHECK(xml.find("joint2_theta\"") != std::string::npos);
+}
 
 TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness and a pressure actuator")
 {
@@ -79,7 +107,7 @@ namespace
     mjModel *m = mj_loadXML(dir.file("finger.xml").c_str(), nullptr, error, sizeof(error));
     INFO(error);
     REQUIRE(m != nullptr);
-    REQUIRE(m->nq == 27);
+    REQUIRE(m->nq == 27); // both fingers below have 27 hinges
     mjData *d = mj_makeData(m);
     m->opt.gravity[2] = 0.0;
     d->ctrl[0]        = p;
@@ -164,5 +192,26 @@ TEST_CASE("With K(p) and J_p(p), the MJCF at p* is exact at p* and is the frozen
   check_same_pose(mujoco_rest_pose(model, options, 0.5 * p_max, f), half, frozen_chain.pose());
   REQUIRE(chain.solve({0.5 * p_max, {{tip, f}}}).converged);
   CHECK((chain.pose().tip_position - frozen_chain.pose().tip_position).norm() > 1e-3);
+}
+
+TEST_CASE("MuJoCo comes to rest in the pose of a chain with twist axes")
+{
+  softchain::testing::ScratchDirectory dir("mjcf_twist_rest");
+  const ChainModel      model = twist_axis_finger(dir);
+  const double          p     = 4e4;
+  const Eigen::Vector3d f(0.02, 0.05, 0.03), tip = model.chain().tip();
+  ChainEquilibrium      solver(model);
+  const Equilibrium     e = solver.solve({p, {{tip, f}}});
+  REQUIRE(e.converged);
+  const RestPose mujoco = mujoco_rest_pose(model, {}, p, f);
+  // The chain holds the missing hinges' axes with k = 1e6 x the axis' k, so
+  // they turn by 1e-6 of the free angles (<= 1 rad here): the free angles
+  // agree to 1e-6 rad, the tip (0.1 m of arm) to 1e-7 m.
+  Eigen::VectorXd free(27);
+  for (int i = 0; i < 9; ++i)
+    free.segment<3>(3 * i) << e.angles[6 * i], e.angles[6 * i + 4], e.angles[6 * i + 5];
+  CHECK((mujoco.angles - free).cwiseAbs().maxCoeff() < 1e-6);
+  CHECK((mujoco.tip - solver.pose().tip_position).norm() < 1e-7);
+  CHECK(free.cwiseAbs().maxCoeff() > 0.1); // far from linear
 }
 #endif
