@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "../chain/box_mesh.h"
+#include "layer_finger_mesh.h"
 
 using namespace softchain;
 using namespace softchain::reduction;
@@ -32,15 +33,9 @@ namespace
   const std::vector<RotationMethod> both_methods = {RotationMethod::bounding_box,
                                                     RotationMethod::affine_fit};
 
-  // 90 mm x 12 mm x 16 mm, y from -2 mm (the layer y = 0 is 2 mm above the
-  // bottom), hollow with 2 mm walls, 5 mm long cells: 9 joints at
-  // 5, 15, ..., 85 mm, each on a node plane.
   data::MeshRecord finger_mesh(bool tetrahedra)
   {
-    BoxMeshSpec spec;
-    spec.wall_cells = 1;
-    spec.tetrahedra = tetrahedra;
-    return box_mesh(spec);
+    return testing::layer_finger_mesh(tetrahedra);
   }
 
   std::vector<data::Point3> deform(const std::vector<data::Point3> &X,

@@ -10,25 +10,20 @@
 
 #include <Eigen/Geometry>
 
-#include "../chain/box_mesh.h"
+#include "layer_finger_mesh.h"
 
 using namespace softchain;
 using namespace softchain::reduction;
-using softchain::chain::testing::box_mesh;
-using softchain::chain::testing::BoxMeshSpec;
 
 namespace
 {
   constexpr double mm = 1e-3;
-  constexpr double a  = 10 * mm;
+  constexpr double a  = 10 * mm; // joint spacing
 
-  // 90 mm x 12 mm x 16 mm, y from -2 mm, hollow with 2 mm walls; joints on
-  // the layer y = 0 at 5, 15, ..., 85 mm.
+  // Hexahedra: the layer finger of layer_finger_mesh.h.
   data::MeshRecord finger_mesh()
   {
-    BoxMeshSpec spec;
-    spec.wall_cells = 1;
-    return box_mesh(spec);
+    return testing::layer_finger_mesh(false);
   }
 
   data::SampleRecord torsion_sample(const data::MeshRecord &mesh, const Eigen::Vector3d &axis,
