@@ -4,6 +4,7 @@
 // The paper's SOFA chain took about 6 ms per finger (Sec. V).
 // Run: chain_benchmark --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/joint_tables.h>
 
 #include <benchmark/benchmark.h>
 
@@ -34,6 +35,28 @@ namespace
       }
     return ChainModel("finger", KinematicChain(joints, {n_joints * a, -0.003, 0.0}),
                       JointStiffness(k), PressureActuation(jp));
+  }
+
+  // The same finger whose joints twist about an axis 5 mm above them (the
+  // reduction's default gives P10 one 5 mm up): a twist joint and a
+  // bending joint per joint, 2n in all (JointTables).
+  ChainModel finger_with_twist_axes()
+  {
+    const ChainModel             plain = finger();
+    JointTables                  tables;
+    std::vector<Eigen::Vector3d> twist_points;
+    Eigen::Vector3d              rigid = Eigen::Vector3d::Zero();
+    for (int i = 0; i < n_joints; ++i)
+      {
+        tables.joint_centres.push_back(plain.chain().joint_centre(i));
+        tables.stiffness.push_back(plain.stiffness().joint(i));
+        rigid = rigid.cwiseMax(1e6 * plain.stiffness().joint(i));
+        twist_points.push_back(plain.chain().joint_centre(i) + Eigen::Vector3d(0, 0.005, 0));
+        for (int axis = 0; axis < 3; ++axis)
+          tables.pressure_torque.emplace_back(std::vector<double>{0.0},
+                                              std::vector<double>{plain.actuation().rest_torque_per_pascal()[3 * i + axis]});
+      }
+    return tables.with_twist_joints(twist_points, rigid).model("twist axes", plain.chain().tip(), false);
   }
 
   // A contact-like force at the fingertip, in world axes.
@@ -84,6 +107,39 @@ static void equilibrium_pressure_and_force_from_rest(benchmark::State &state)
   report_iterations(state, iterations, 1);
 }
 BENCHMARK(equilibrium_pressure_and_force_from_rest);
+
+// The two above with twist axes: twice the joints.
+static void equilibrium_pressure_from_rest_twist_axes(benchmark::State &state)
+{
+  const ChainModel model = finger_with_twist_axes();
+  ChainEquilibrium solver(model);
+  int              iterations = 0;
+  for (auto _ : state)
+    {
+      const Equilibrium e = solver.solve({0.5 * p_max, {}});
+      require(e);
+      iterations = e.iterations;
+      benchmark::DoNotOptimize(e.angles.data());
+    }
+  report_iterations(state, iterations, 1);
+}
+BENCHMARK(equilibrium_pressure_from_rest_twist_axes);
+
+static void equilibrium_pressure_and_force_from_rest_twist_axes(benchmark::State &state)
+{
+  const ChainModel model = finger_with_twist_axes();
+  ChainEquilibrium solver(model);
+  int              iterations = 0;
+  for (auto _ : state)
+    {
+      const Equilibrium e = solver.solve(load(0.5 * p_max));
+      require(e);
+      iterations = e.iterations;
+      benchmark::DoNotOptimize(e.angles.data());
+    }
+  report_iterations(state, iterations, 1);
+}
+BENCHMARK(equilibrium_pressure_and_force_from_rest_twist_axes);
 
 // 100 pressures 0..p_max with the tip force, each from the previous pose.
 static void pressure_sweep_100_warm_start(benchmark::State &state)

@@ -1,3 +1,4 @@
+#include <softchain/chain/joint_tables.h>
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
@@ -280,73 +281,6 @@ namespace softchain::chain
       return result;
     }
 
-    // A chain's joints as read: centres, k, k(p) per axis (empty: constant),
-    // J_p(p) per joint and axis.
-    struct JointTables
-    {
-      std::vector<Eigen::Vector3d>                joint_centres;
-      std::vector<Eigen::Vector3d>                stiffness;
-      std::array<std::vector<PiecewiseLinear>, 3> k_in_pressure;
-      std::vector<PiecewiseLinear>                pressure_torque;
-      std::vector<bool>                           twist_joints; // empty: none
-    };
-
-    PiecewiseLinear constant(const double value)
-    {
-      return PiecewiseLinear({0.0}, {value});
-    }
-
-    // Joint i twists about the proximal link's x axis through S_i and bends
-    // about J_i: where S_i != J_i it becomes two spherical joints, a twist
-    // joint at S_i (moved 1 nm towards the base along x, which leaves its
-    // twist axis, parallel to x, where it is) free about psi only, and the
-    // bending joint at J_i free about theta and phi only; the other axes are
-    // held rigid (k = `rigid`, 1e6 x the largest of the axis). The twist
-    // joint takes k_psi and J_p,x (the reduction's torque about S_i), the
-    // bending joint k_theta, k_phi and J_p,y, J_p,z.
-    JointTables with_twist_joints(const JointTables &joints, const std::vector<Eigen::Vector3d> &twist_points,
-                                  const Eigen::Vector3d &rigid)
-    {
-      bool any = false;
-      for (std::size_t i = 0; i < twist_points.size(); ++i)
-        any = any || twist_points[i] != joints.joint_centres[i];
-      if (!any)
-        return joints;
-      JointTables expanded;
-      for (std::size_t i = 0; i < twist_points.size(); ++i)
-        {
-          expanded.joint_centres.push_back(twist_points[i] - Eigen::Vector3d(1e-9, 0, 0));
-          expanded.joint_centres.push_back(joints.joint_centres[i]);
-          expanded.twist_joints.insert(expanded.twist_joints.end(), {true, false});
-          const Eigen::Vector3d &k = joints.stiffness[i];
-          expanded.stiffness.emplace_back(k[0], rigid[1], rigid[2]);
-          expanded.stiffness.emplace_back(rigid[0], k[1], k[2]);
-          for (int axis = 0; axis < 3; ++axis)
-            if (!joints.k_in_pressure[axis].empty())
-              {
-                const bool twist_axis = axis == 0;
-                const PiecewiseLinear &table = joints.k_in_pressure[axis][i];
-                expanded.k_in_pressure[axis].push_back(twist_axis ? table : constant(rigid[axis]));
-                expanded.k_in_pressure[axis].push_back(twist_axis ? constant(rigid[axis]) : table);
-              }
-          for (int axis = 0; axis < 3; ++axis)
-            expanded.pressure_torque.push_back(axis == 0 ? joints.pressure_torque[3 * i] : constant(0.0));
-          for (int axis = 0; axis < 3; ++axis)
-            expanded.pressure_torque.push_back(axis == 0 ? constant(0.0) : joints.pressure_torque[3 * i + axis]);
-        }
-      return expanded;
-    }
-
-    PressureActuation actuation_from(std::vector<PiecewiseLinear> torque, bool in_pressure)
-    {
-      Eigen::VectorXd rest(torque.size());
-      for (std::size_t j = 0; j < torque.size(); ++j)
-        rest[j] = torque[j](0.0);
-      PressureActuation actuation(rest);
-      if (in_pressure)
-        actuation.set_torque_in_pressure(std::move(torque));
-      return actuation;
-    }
   } // namespace
 
   StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
@@ -377,7 +311,10 @@ namespace softchain::chain
     const int      n     = static_cast<int>(table.stiffness.size());
     if (!(tip.x() > table.joint_centres.back().x()))
       throw InputError(stiffness_path_ + ": the last joint lies beyond the finger's tip");
-    JointTables joints{table.joint_centres, table.stiffness, {}, read_pressure_torque(pressure_torque_path_, n), {}};
+    JointTables joints;
+    joints.joint_centres   = table.joint_centres;
+    joints.stiffness       = table.stiffness;
+    joints.pressure_torque = read_pressure_torque(pressure_torque_path_, n);
     if (in_pressure)
       {
         std::size_t n_pressures = 0;
@@ -397,15 +334,7 @@ namespace softchain::chain
             }
       }
     if (twist_axes)
-      joints = with_twist_joints(joints, table.twist_points, table.rigid);
-    JointStiffness stiffness(joints.stiffness);
-    for (int axis = 0; axis < 3; ++axis)
-      if (!joints.k_in_pressure[axis].empty())
-        stiffness.set_in_pressure(axis, std::move(joints.k_in_pressure[axis]));
-    ChainModel model(name, KinematicChain(std::move(joints.joint_centres), tip), std::move(stiffness),
-                     actuation_from(std::move(joints.pressure_torque), in_pressure));
-    if (!joints.twist_joints.empty())
-      model.set_twist_joints(std::move(joints.twist_joints));
-    return model;
+      joints = joints.with_twist_joints(table.twist_points, table.rigid);
+    return joints.model(name, tip, in_pressure);
   }
 } // namespace softchain::chain
