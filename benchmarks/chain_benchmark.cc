@@ -74,72 +74,30 @@ namespace
   }
 } // namespace
 
+// One equilibrium from rest of `model` under `chain_load`.
+static void equilibrium_from_rest(benchmark::State &state, const ChainModel &model,
+                                  const ChainLoad &chain_load)
+{
+  ChainEquilibrium solver(model);
+  int              iterations = 0;
+  for (auto _ : state)
+    {
+      const Equilibrium e = solver.solve(chain_load);
+      require(e);
+      iterations = e.iterations;
+      benchmark::DoNotOptimize(e.angles.data());
+    }
+  report_iterations(state, iterations, 1);
+}
 // Pressure only: K q = J_p p is linear, one Newton step.
-static void equilibrium_pressure_from_rest(benchmark::State &state)
-{
-  const ChainModel model = finger();
-  ChainEquilibrium solver(model);
-  int              iterations = 0;
-  for (auto _ : state)
-    {
-      const Equilibrium e = solver.solve({0.5 * p_max, {}});
-      require(e);
-      iterations = e.iterations;
-      benchmark::DoNotOptimize(e.angles.data());
-    }
-  report_iterations(state, iterations, 1);
-}
-BENCHMARK(equilibrium_pressure_from_rest);
-
+BENCHMARK_CAPTURE(equilibrium_from_rest, pressure, finger(), ChainLoad{0.5 * p_max, {}});
 // Pressure and a tip force: the nonlinear case, ~100 deg of bending.
-static void equilibrium_pressure_and_force_from_rest(benchmark::State &state)
-{
-  const ChainModel model = finger();
-  ChainEquilibrium solver(model);
-  int              iterations = 0;
-  for (auto _ : state)
-    {
-      const Equilibrium e = solver.solve(load(0.5 * p_max));
-      require(e);
-      iterations = e.iterations;
-      benchmark::DoNotOptimize(e.angles.data());
-    }
-  report_iterations(state, iterations, 1);
-}
-BENCHMARK(equilibrium_pressure_and_force_from_rest);
-
+BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force, finger(), load(0.5 * p_max));
 // The two above with twist axes: twice the joints.
-static void equilibrium_pressure_from_rest_twist_axes(benchmark::State &state)
-{
-  const ChainModel model = finger_with_twist_axes();
-  ChainEquilibrium solver(model);
-  int              iterations = 0;
-  for (auto _ : state)
-    {
-      const Equilibrium e = solver.solve({0.5 * p_max, {}});
-      require(e);
-      iterations = e.iterations;
-      benchmark::DoNotOptimize(e.angles.data());
-    }
-  report_iterations(state, iterations, 1);
-}
-BENCHMARK(equilibrium_pressure_from_rest_twist_axes);
-
-static void equilibrium_pressure_and_force_from_rest_twist_axes(benchmark::State &state)
-{
-  const ChainModel model = finger_with_twist_axes();
-  ChainEquilibrium solver(model);
-  int              iterations = 0;
-  for (auto _ : state)
-    {
-      const Equilibrium e = solver.solve(load(0.5 * p_max));
-      require(e);
-      iterations = e.iterations;
-      benchmark::DoNotOptimize(e.angles.data());
-    }
-  report_iterations(state, iterations, 1);
-}
-BENCHMARK(equilibrium_pressure_and_force_from_rest_twist_axes);
+BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_twist_axes, finger_with_twist_axes(),
+                  ChainLoad{0.5 * p_max, {}});
+BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_twist_axes, finger_with_twist_axes(),
+                  load(0.5 * p_max));
 
 // 100 pressures 0..p_max with the tip force, each from the previous pose.
 static void pressure_sweep_100_warm_start(benchmark::State &state)
