@@ -5,6 +5,7 @@
 // Run: chain_benchmark --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/joint_tables.h>
+#include <softchain/chain/link_geometry.h>
 
 #include <benchmark/benchmark.h>
 
@@ -59,6 +60,31 @@ namespace
     return tables.with_twist_joints(twist_points, rigid).model("twist axes", plain.chain().tip(), false);
   }
 
+  // The chain the reduction gives a finger by default: twist axes and links
+  // shaped by the pressure (LinkGeometry, tabulated at 0, p_max / 2 and
+  // p_max: 3 % longer and 0.2 mm lower per joint at p_max).
+  ChainModel finger_as_reduced()
+  {
+    const ChainModel             plain = finger();
+    const auto                   point = [](const Eigen::Vector3d &X, const double sink) {
+      const auto line = [&](const int c) {
+        const double at_p_max = 1.03 * X(c) - (c == 1 ? sink : 0.0);
+        return PiecewiseLinear({0.0, 0.5 * p_max, p_max}, {X(c), 0.5 * (X(c) + at_p_max), at_p_max});
+      };
+      return LinkGeometry::PointInPressure{line(0), line(1), line(2)};
+    };
+    std::vector<LinkGeometry::PointInPressure> joints;
+    for (int i = 0; i < n_joints; ++i)
+      joints.push_back(point(plain.chain().joint_centre(i), 2e-4 * i));
+    const LinkGeometry links(joints, point(plain.chain().tip(), 2e-3), point(Eigen::Vector3d::Zero(), 0.0));
+    ChainModel model = finger_with_twist_axes();
+    std::vector<Eigen::Vector3d> offsets;
+    for (int i = 0; i < n_joints; ++i)
+      offsets.push_back(model.chain().joint_centre(2 * i) - model.chain().joint_centre(2 * i + 1));
+    model.set_link_geometry(links.with_twist_joints(offsets));
+    return model;
+  }
+
   // A contact-like force at the fingertip, in world axes.
   ChainLoad load(double pressure) { return {pressure, {{{n_joints * a, 0.0, 0.0}, {0.0, 0.3, 0.05}}}}; }
 
@@ -98,6 +124,9 @@ BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_twist_axes, finger_with_twist_
                   ChainLoad{0.5 * p_max, {}});
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_twist_axes, finger_with_twist_axes(),
                   load(0.5 * p_max));
+// And with links shaped by the pressure: the reduction's default chain.
+BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_as_reduced, finger_as_reduced(), ChainLoad{0.5 * p_max, {}});
+BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_as_reduced, finger_as_reduced(), load(0.5 * p_max));
 
 // 100 pressures 0..p_max with the tip force, each from the previous pose.
 static void pressure_sweep_100_warm_start(benchmark::State &state)

@@ -44,7 +44,7 @@ namespace softchain::chain
     Eigen::MatrixXd  g(3, 3 * n);
     for (int b = 0; b < n; ++b)
       {
-        const Eigen::Vector3d x = model_.chain().point_position(pose, b, mass_points_[b]);
+        const Eigen::Vector3d x = statics_.chain().point_position(pose, b, mass_points_[b]);
         g.setZero();
         for (int j = 0; j <= b; ++j)
           for (int alpha = 0; alpha < 3; ++alpha)

@@ -26,6 +26,7 @@ namespace softchain::chain
   ChainEquilibrium::ChainEquilibrium(const ChainModel &model, EquilibriumSettings settings)
     : model_(model)
     , settings_(settings)
+    , chain_(model.chain())
     , pose_(model.chain().rest_pose())
     , moment_(model.chain().n_joints())
     , moment_gradient_(model.chain().n_joints())
@@ -43,6 +44,8 @@ namespace softchain::chain
   {
     if (!std::isfinite(load.pressure))
       throw std::invalid_argument("ChainEquilibrium: pressure is not finite");
+    if (model_.has_link_geometry())
+      chain_ = model_.chain_at(load.pressure);
     stiffness_       = model_.stiffness().diagonal(load.pressure);
     pressure_torque_ = model_.actuation().torque(load.pressure);
     loads_.clear();
@@ -50,7 +53,7 @@ namespace softchain::chain
       {
         if (!p.reference_point.allFinite() || !p.force.allFinite())
           throw std::invalid_argument("ChainEquilibrium: point load is not finite");
-        const int link = model_.chain().link_of(p.reference_point);
+        const int link = chain_.link_of(p.reference_point);
         if (link >= 0) // loads on the clamped base do no work
           loads_.push_back({link, p.reference_point, p.force});
       }
@@ -60,7 +63,7 @@ namespace softchain::chain
 
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
   {
-    model_.chain().update_pose(q, pose_);
+    chain_.update_pose(q, pose_);
     accumulate_distal_loads();
     const double strain = 0.5 * q.dot(stiffness_.cwiseProduct(q));
     const double work   = pressure_torque_.dot(q);
@@ -82,12 +85,12 @@ namespace softchain::chain
     energy_                = 0.0;
     energy_magnitude_      = 0.0;
     auto load              = loads_.rbegin();
-    for (int m = model_.chain().n_joints() - 1; m >= 0; --m)
+    for (int m = chain_.n_joints() - 1; m >= 0; --m)
       {
         for (; load != loads_.rend() && load->link == m; ++load)
           {
             const Eigen::Vector3d x =
-              model_.chain().point_position(pose_, m, load->reference_point);
+              chain_.point_position(pose_, m, load->reference_point);
             force += load->force;
             moment += x.cross(load->force);
             dyad += x * load->force.transpose();
@@ -109,7 +112,7 @@ namespace softchain::chain
   // A^T [M]x A is antisymmetric.) D_j is mirrored from it.
   void ChainEquilibrium::prepare_tangent()
   {
-    for (int j = 0; j < model_.chain().n_joints(); ++j)
+    for (int j = 0; j < chain_.n_joints(); ++j)
       {
         const Eigen::Matrix3d &axes = pose_.joint_axes[j];
         tangent_.axes(j)            = axes;

@@ -16,6 +16,32 @@ namespace softchain::chain
       throw std::invalid_argument("ChainModel: joint counts of geometry, stiffness and J_p differ");
   }
 
+  ChainModel ChainModel::with_name(std::string name) const
+  {
+    ChainModel renamed = *this;
+    renamed.name_      = std::move(name);
+    return renamed;
+  }
+
+  ChainModel ChainModel::with_rigid_links() const
+  {
+    ChainModel rigid = *this;
+    rigid.link_geometry_.reset();
+    return rigid;
+  }
+
+  KinematicChain ChainModel::chain_at(const double pressure) const
+  {
+    return link_geometry_ ? link_geometry_->at(pressure, chain_) : chain_;
+  }
+
+  void ChainModel::set_link_geometry(LinkGeometry geometry)
+  {
+    if (geometry.n_joints() != chain_.n_joints())
+      throw std::invalid_argument("ChainModel: the link geometry has another number of joints");
+    link_geometry_ = std::move(geometry);
+  }
+
   void ChainModel::set_twist_joints(std::vector<bool> twist_joints)
   {
     if (static_cast<int>(twist_joints.size()) != chain_.n_joints())

@@ -13,6 +13,11 @@ namespace softchain::chain
       section.declare("Stiffness column", "value", "value (largest load) or fit (least squares)");
       section.declare("Interpolate k_phi in pressure", "true",
                       "k_phi and J_p follow their pressure tables");
+      section.declare("Link geometry", "pressure",
+                      "pressure: the links stretched and sheared by the pressure as the "
+                      "reduction measured them (<label>_link_geometry.csv), so that the chain "
+                      "lands on the FEM finger's joints; rigid: rigid links between the "
+                      "reference joint centres (the paper's chain)");
       section.declare("Missing stiffness", "rigid",
                       "a joint axis whose k is NaN or not positive in the CSV (no usable sample, "
                       "e.g. a joint in the solid base fill, or a torque opposite to the "
@@ -41,6 +46,10 @@ namespace softchain::chain
     section.require(p.stiffness_column == "value" || p.stiffness_column == "fit",
             "Stiffness column", "'" + p.stiffness_column + "' is neither value nor fit");
     p.in_pressure      = section.get_bool("Interpolate k_phi in pressure");
+    const std::string links = section.get("Link geometry");
+    section.require(links == "pressure" || links == "rigid", "Link geometry",
+                    "'" + links + "' is neither pressure nor rigid");
+    p.pressure_link_geometry = links == "pressure";
     const std::string missing = section.get("Missing stiffness");
     section.require(missing == "rigid" || missing == "error", "Missing stiffness",
                     "'" + missing + "' is neither rigid nor error");

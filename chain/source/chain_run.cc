@@ -37,17 +37,22 @@ namespace softchain::chain
                                         const Eigen::Vector3d &tip)
     {
       std::vector<ChainModel> models;
+      const auto read = [&](const StiffnessFiles &files, const std::string &method) {
+        const ChainModel model =
+          files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing);
+        return p.pressure_link_geometry ? model : model.with_rigid_links();
+      };
       for (const std::string method : {"M1", "M2"})
         {
           const StiffnessFiles files(directory, method, p.half_width_fraction);
           if (method == p.method)
-            models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing));
+            models.push_back(read(files, method));
           else if (!files.exist())
             std::cout << "chain: no " << files.stiffness_path() << ", " << method << " skipped\n";
           else
             try // the other method is a comparison only: unusable files skip it
               {
-                models.push_back(files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing));
+                models.push_back(read(files, method));
               }
             catch (const data::InputError &e)
               {
@@ -87,8 +92,7 @@ namespace softchain::chain
       options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
       options.max_pressure = max_pressure(database);
       options.pressure     = options.max_pressure;
-      const ChainModel named(database.design().name + "_" + model.name(), model.chain(),
-                             model.stiffness(), model.actuation());
+      const ChainModel named = model.with_name(database.design().name + "_" + model.name());
       const MjcfExport mjcf(named, options);
       mjcf.write(path);
       std::cout << "chain: MuJoCo model " << path << "\n";

@@ -96,13 +96,13 @@ namespace softchain::chain
             const ChainPose &pose = solver.pose();
             r.position_error      = (pose.tip_position - s.tip.position).norm();
             r.orientation_error =
-              data::rotation_angle_between(pose.link_rotations.back(), s.tip.rotation);
+              data::rotation_angle_between(pose.tip_rotation, s.tip.rotation);
             r.tip_position       = pose.tip_position;
             for (int i = 0; i < model.chain().n_joints(); ++i) // the finger's joints, as drawn
               if (!model.is_twist_joint(i))
                 r.joint_positions.push_back(pose.joint_positions[i]);
             r.tip_rotation_angle =
-              data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.link_rotations.back());
+              data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.tip_rotation);
           }
         records_.push_back(r);
       }

@@ -19,10 +19,12 @@ namespace softchain::chain
       any = any || twist_points[i] != joint_centres[i];
     if (!any)
       return *this;
-    JointTables pairs;
+    JointTables                  pairs;
+    std::vector<Eigen::Vector3d> offsets; // twist joint from its bending joint
     for (std::size_t i = 0; i < twist_points.size(); ++i)
       {
-        pairs.joint_centres.push_back(twist_points[i] - Eigen::Vector3d(1e-9, 0, 0));
+        offsets.push_back(twist_points[i] - Eigen::Vector3d(1e-9, 0, 0) - joint_centres[i]);
+        pairs.joint_centres.push_back(joint_centres[i] + offsets.back());
         pairs.joint_centres.push_back(joint_centres[i]);
         pairs.twist_joints.insert(pairs.twist_joints.end(), {true, false});
         const Eigen::Vector3d &k = stiffness[i];
@@ -40,6 +42,8 @@ namespace softchain::chain
         for (int axis = 0; axis < 3; ++axis)
           pairs.pressure_torque.push_back(axis == 0 ? constant(0.0) : pressure_torque[3 * i + axis]);
       }
+    if (link_geometry)
+      pairs.link_geometry = link_geometry->with_twist_joints(offsets);
     return pairs;
   }
 
@@ -60,6 +64,8 @@ namespace softchain::chain
                            std::move(actuation));
     if (!twist_joints.empty())
       chain_model.set_twist_joints(twist_joints);
+    if (pressure_tables && link_geometry)
+      chain_model.set_link_geometry(*link_geometry);
     return chain_model;
   }
 } // namespace softchain::chain

@@ -1,7 +1,9 @@
 #include <softchain/chain/kinematic_chain.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace softchain::chain
 {
@@ -28,22 +30,42 @@ namespace softchain::chain
       f.theta_axis << 0.0, cx, sx;
       return f;
     }
+
+    void check_order(const std::vector<Eigen::Vector3d> &joints, const Eigen::Vector3d &tip,
+                     const std::string &what)
+    {
+      if (joints.empty())
+        throw std::invalid_argument("KinematicChain: no joints");
+      for (std::size_t i = 1; i < joints.size(); ++i)
+        if (!(joints[i].x() > joints[i - 1].x()))
+          throw std::invalid_argument("KinematicChain: " + what + " must increase strictly along x");
+      if (!(tip.x() > joints.back().x()))
+        throw std::invalid_argument("KinematicChain: the tip must lie beyond the last joint along x");
+    }
   } // namespace
 
   KinematicChain::KinematicChain(std::vector<Eigen::Vector3d> joint_centres,
                                  const Eigen::Vector3d       &tip)
     : joint_centres_(std::move(joint_centres))
     , tip_(tip)
+    , link_joints_(joint_centres_)
+    , link_tip_(tip)
   {
-    if (joint_centres_.empty())
-      throw std::invalid_argument("KinematicChain: no joints");
-    for (std::size_t i = 1; i < joint_centres_.size(); ++i)
-      if (!(joint_centres_[i].x() > joint_centres_[i - 1].x()))
-        throw std::invalid_argument(
-          "KinematicChain: joint centres must increase strictly along x");
-    if (!(tip_.x() > joint_centres_.back().x()))
-      throw std::invalid_argument(
-        "KinematicChain: the tip must lie beyond the last joint along x");
+    check_order(joint_centres_, tip_, "joint centres");
+  }
+
+  KinematicChain KinematicChain::with_link_geometry(std::vector<Eigen::Vector3d> joints,
+                                                    const Eigen::Vector3d       &tip,
+                                                    const Eigen::Matrix3d       &tip_frame) const
+  {
+    if (joints.size() != joint_centres_.size())
+      throw std::invalid_argument("KinematicChain: the link geometry needs one point per joint");
+    check_order(joints, tip, "the link geometry's joints");
+    KinematicChain chain = *this;
+    chain.link_joints_   = std::move(joints);
+    chain.link_tip_      = tip;
+    chain.tip_frame_     = tip_frame;
+    return chain;
   }
 
   int KinematicChain::link_of(const Eigen::Vector3d &X) const
@@ -57,17 +79,18 @@ namespace softchain::chain
   ChainPose KinematicChain::rest_pose() const
   {
     ChainPose pose;
-    pose.joint_positions = joint_centres_;
+    pose.joint_positions = link_joints_;
     pose.link_rotations.assign(n_joints(), Eigen::Matrix3d::Identity());
     pose.joint_axes.assign(n_joints(), Eigen::Matrix3d::Identity());
-    pose.tip_position = tip_;
+    pose.tip_position = link_tip_;
+    pose.tip_rotation = tip_frame_;
     return pose;
   }
 
   void KinematicChain::update_pose(const Eigen::VectorXd &q, ChainPose &pose) const
   {
     Eigen::Matrix3d parent   = Eigen::Matrix3d::Identity();
-    Eigen::Vector3d position = joint_centres_[0];
+    Eigen::Vector3d position = link_joints_[0];
     for (int i = 0; i < n_joints(); ++i)
       {
         const EulerFrame frame  = euler_frame(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
@@ -78,10 +101,11 @@ namespace softchain::chain
         parent                    = parent * frame.rotation;
         pose.joint_axes[i].col(2) = parent.col(2);
         pose.link_rotations[i]  = parent;
-        const Eigen::Vector3d &next = i + 1 < n_joints() ? joint_centres_[i + 1] : tip_;
-        position += parent * (next - joint_centres_[i]);
+        const Eigen::Vector3d &next = i + 1 < n_joints() ? link_joints_[i + 1] : link_tip_;
+        position += parent * (next - link_joints_[i]);
       }
     pose.tip_position = position;
+    pose.tip_rotation = parent * tip_frame_;
   }
 
   Eigen::Vector3d KinematicChain::point_position(const ChainPose &pose, int link,
@@ -89,7 +113,13 @@ namespace softchain::chain
   {
     if (link < 0)
       return X;
+    const bool             last = link + 1 == n_joints();
+    const Eigen::Vector3d &end  = last ? tip_ : joint_centres_[link + 1];
+    const Eigen::Vector3d  end_shift = (last ? link_tip_ : link_joints_[link + 1]) - end;
+    const Eigen::Vector3d  start_shift = link_joints_[link] - joint_centres_[link];
+    const double s = std::clamp((X - joint_centres_[link]).x() / (end - joint_centres_[link]).x(), 0.0, 1.0);
     return pose.joint_positions[link] +
-           pose.link_rotations[link] * (X - joint_centres_[link]);
+           pose.link_rotations[link] *
+             (X + (1.0 - s) * start_shift + s * end_shift - link_joints_[link]);
   }
 } // namespace softchain::chain

@@ -43,7 +43,7 @@ namespace softchain::chain
         k.push_back(pressure > 0 ? Eigen::Vector3d(diagonal.segment<3>(3 * i)) : model.stiffness().joint(i));
       const Eigen::VectorXd jp = pressure > 0 ? Eigen::VectorXd(model.actuation().torque(pressure) / pressure)
                                               : model.actuation().rest_torque_per_pascal();
-      ChainModel constant(model.name(), model.chain(), JointStiffness(k), PressureActuation(jp));
+      ChainModel constant(model.name(), model.chain_at(pressure), JointStiffness(k), PressureActuation(jp));
       std::vector<bool> twist(model.chain().n_joints());
       for (int i = 0; i < model.chain().n_joints(); ++i)
         twist[i] = model.is_twist_joint(i);
@@ -75,9 +75,9 @@ namespace softchain::chain
     const KinematicChain &chain = exported_.chain();
     const bool            last  = i + 1 == chain.n_joints();
     const Eigen::Vector3d to_next =
-      (last ? chain.tip() : chain.joint_centre(i + 1)) - chain.joint_centre(i);
+      (last ? chain.link_tip() : chain.link_joint(i + 1)) - chain.link_joint(i);
     const Eigen::Vector3d offset =
-      i == 0 ? chain.joint_centre(0) : Eigen::Vector3d(chain.joint_centre(i) - chain.joint_centre(i - 1));
+      i == 0 ? chain.link_joint(0) : Eigen::Vector3d(chain.link_joint(i) - chain.link_joint(i - 1));
     const std::string indent(2 * i + 4, ' ');
     std::ostringstream s;
     s << indent << "<body name=\"link" << i + 1 << "\" pos=\"" << triple(offset) << "\">\n";

@@ -92,7 +92,7 @@ namespace softchain::chain
         return;
       }
     const Eigen::Vector3d tip0 = free.pose().tip_position;
-    const Eigen::Matrix3d R0   = free.pose().link_rotations.back();
+    const Eigen::Matrix3d R0   = free.pose().tip_rotation;
 
     // Each state is solved once, from the angles of the trace's previous
     // state (the motion is continuous along the trace).
@@ -115,7 +115,7 @@ namespace softchain::chain
               {
                 angles_of[p.sample] = result.angles;
                 torque_of[p.sample] =
-                  base_wrench(model.chain(), held.pose(), held.with_contact(load, result.contact_force),
+                  base_wrench(held.chain(), held.pose(), held.with_contact(load, result.contact_force),
                               base_centroid_).moment + result.contact_moment;
               }
             else

@@ -281,6 +281,68 @@ namespace softchain::chain
       return result;
     }
 
+    // The link geometry U_i(p), U_T(p), Q_T(p) (LinkGeometry): per pressure
+    // a row for each joint (point 1..n) and the tip (point "tip", its
+    // rx, ry, rz the tip frame's rotation vector); the rest rows (pressure 0)
+    // must be the chain's reference joints and tip, with no tip rotation.
+    LinkGeometry read_link_geometry(const std::string &path, const std::vector<Eigen::Vector3d> &joints,
+                                    const Eigen::Vector3d &tip)
+    {
+      const int      n     = static_cast<int>(joints.size());
+      const CsvTable table = read_table(path, {"pressure", "point", "x", "y", "z", "rx", "ry", "rz"});
+      std::vector<std::array<std::map<double, double>, 3>> per_point(n + 1);
+      std::array<std::map<double, double>, 3>              tip_frame;
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          const std::string point = table.text(row, "point");
+          int               index = n;
+          if (point != "tip")
+            {
+              const double joint = table.number(row, "point");
+              if (!(joint >= 1 && joint <= n && joint == std::round(joint)))
+                throw InputError(where(path, row) + "point " + point + " is neither one of the joints 1.." +
+                                 std::to_string(n) + " nor 'tip'");
+              index = static_cast<int>(joint) - 1;
+            }
+          const double pressure = finite_number(table, path, row, "pressure");
+          for (int c = 0; c < 3; ++c)
+            insert_consistent(per_point[index][c], pressure,
+                              finite_number(table, path, row, std::string(1, char('x' + c))), path, row);
+          if (index == n)
+            for (int c = 0; c < 3; ++c)
+              insert_consistent(tip_frame[c], pressure,
+                                finite_number(table, path, row, "r" + std::string(1, char('x' + c))), path, row);
+        }
+      for (int c = 0; c < 3; ++c)
+        if (tip_frame[c].count(0.0) > 0 && std::abs(tip_frame[c].at(0.0)) > 1e-9)
+          throw InputError(path + ": the rest row of the tip has a tip frame rotation (" +
+                           number_text(tip_frame[c].at(0.0)) + " rad); at rest it is 0 (to 1e-9 rad)");
+      std::vector<LinkGeometry::PointInPressure> points;
+      for (int i = 0; i <= n; ++i)
+        {
+          const std::string     name      = i < n ? "joint " + std::to_string(i + 1) : std::string("the tip");
+          const Eigen::Vector3d reference = i < n ? joints[i] : tip;
+          for (int c = 0; c < 3; ++c)
+            {
+              const auto rest = per_point[i][c].find(0.0);
+              if (rest == per_point[i][c].end())
+                throw InputError(path + ": no rest row (pressure 0) for " + name);
+              if (std::abs(rest->second - reference(c)) > 1e-9)
+                throw InputError(path + ": the rest row of " + name + " (" + number_text(rest->second) +
+                                 " m) is not the chain's reference position (" + number_text(reference(c)) +
+                                 " m): the files come from different reductions");
+            }
+          points.push_back({in_pressure(per_point[i][0], path, "x of " + name),
+                            in_pressure(per_point[i][1], path, "y of " + name),
+                            in_pressure(per_point[i][2], path, "z of " + name)});
+        }
+      const LinkGeometry::PointInPressure tip_table = points.back();
+      points.pop_back();
+      return LinkGeometry(std::move(points), tip_table,
+                          {in_pressure(tip_frame[0], path, "rx of the tip"),
+                           in_pressure(tip_frame[1], path, "ry of the tip"),
+                           in_pressure(tip_frame[2], path, "rz of the tip")});
+    }
   } // namespace
 
   StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
@@ -292,6 +354,7 @@ namespace softchain::chain
     bending_in_pressure_path_ = base + "_kphi_vs_pressure.csv";
     force_in_pressure_paths_  = {base + "_kpsi_vs_pressure.csv", base + "_ktheta_vs_pressure.csv"};
     pressure_torque_path_     = base + "_pressure_torque.csv";
+    link_geometry_path_       = base + "_link_geometry.csv";
   }
 
   std::string StiffnessFiles::label(const std::string &method, double half_width_fraction)
@@ -333,6 +396,8 @@ namespace softchain::chain
                 joints.k_in_pressure[axis] = std::move(tables);
             }
       }
+    if (in_pressure && std::filesystem::exists(link_geometry_path_))
+      joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
     if (twist_axes)
       joints = joints.with_twist_joints(table.twist_points, table.rigid);
     return joints.model(name, tip, in_pressure);

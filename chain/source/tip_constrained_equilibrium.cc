@@ -94,7 +94,7 @@ namespace softchain::chain
         Eigen::VectorXd contact_torque = C.topRows(3).transpose() * result.contact_force;
         if (target.rotation)
           {
-            const Eigen::AngleAxisd error(pose().link_rotations.back() * target.rotation->transpose());
+            const Eigen::AngleAxisd error(pose().tip_rotation * target.rotation->transpose());
             c.tail<3>()      = error.angle() * error.axis();
             C.bottomRows(3)  = angular_jacobian(pose());
             const Eigen::VectorXd couple_torque = C.bottomRows(3).transpose() * result.contact_moment;

@@ -3,7 +3,10 @@
 #include <softchain/reduction/joint_frames.h>
 #include <softchain/reduction/pressure_torque.h>
 #include <softchain/reduction/sample_reduction.h>
+#include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/vector_of_point.h>
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 
@@ -22,11 +25,13 @@ namespace softchain::reduction
                              geometry.points(sample.x), sample.id);
     const PressureTorque      pressure_torque(mesh.cavity_triangles, sample.x);
     const ExternalForceTorque external(sample);
-    double largest_torque = 0;
+    double                       largest_torque = 0;
+    std::vector<Eigen::Vector3d> centres;
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
         const JointFrame     &frame  = frames[i];
         const Eigen::Vector3d centre = geometry.deformed_centre(i, frames, sample.x);
+        centres.push_back(centre);
         JointResult           joint;
         const Eigen::Vector3d normal = geometry.section_normal(i, frames);
         joint.pressure_torque = pressure_torque.per_pascal(centre, frame.rotation, normal);
@@ -52,7 +57,8 @@ namespace softchain::reduction
     // the next joint: angles are measured from the last frame that carries
     // torque. "No torque" is |tau_i| <= 1e-6 of the sample's largest (the
     // geometric torques are exact up to round-off, 1e-12 relative).
-    Eigen::Matrix3d parent = Eigen::Matrix3d::Identity();
+    std::vector<Eigen::Matrix3d> link_rotations;
+    Eigen::Matrix3d              parent = Eigen::Matrix3d::Identity();
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
         const bool carries_torque = joints_[i].torque.norm() > 1e-6 * largest_torque;
@@ -61,6 +67,32 @@ namespace softchain::reduction
                               data::JointAngles{};
         if (carries_torque)
           parent = frames[i].rotation;
+        link_rotations.push_back(parent);
       }
+    if (!mesh.tip_nodes.empty())
+      {
+        const data::TipPose tip =
+          data::TipPoseFit::of_mesh(mesh, sample.id).fit(data::select_nodes(sample.x, mesh.tip_nodes));
+        centres.push_back(tip.position);
+        set_link_geometry(centres, link_rotations);
+        const Eigen::AngleAxisd tip_frame(link_rotations.back().transpose() * tip.rotation);
+        tip_frame_ = tip_frame.angle() * tip_frame.axis();
+      }
+  }
+
+  // The chain's link geometry at this sample (chain/link_geometry.h): the
+  // joint and tip positions U at zero angles from which the chain, its link
+  // i turned by R_i (the rotation the sample's angles give it), lands on the
+  // deformed joint centres J_i and the tip centroid T:
+  //   U_1 = J_1,   U_i+1 = U_i + R_i^T (J_i+1 - J_i)   (J_n+1 = T),
+  // and the tip face's frame R_T (TipPoseFit) in the last link's frame,
+  // Q_T = R_n^T R_T, kept as its rotation vector.
+  void SampleReduction::set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
+                                          const std::vector<Eigen::Matrix3d> &link_rotations)
+  {
+    link_geometry_ = {deformed.front()};
+    for (std::size_t i = 0; i + 1 < deformed.size(); ++i)
+      link_geometry_.push_back(link_geometry_.back() +
+                               link_rotations[i].transpose() * (deformed[i + 1] - deformed[i]));
   }
 } // namespace softchain::reduction

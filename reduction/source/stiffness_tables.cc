@@ -106,6 +106,28 @@ namespace softchain::reduction
     return table;
   }
 
+  CsvTable StiffnessTables::link_geometry() const
+  {
+    CsvTable table({"pressure", "point", "x", "y", "z", "rx", "ry", "rz"});
+    std::vector<const SampleReduction *> configurations = {&reduction_.rest()};
+    for (const auto *sample : pressure_samples())
+      configurations.push_back(sample);
+    for (const auto *sample : configurations)
+      {
+        const auto &points = sample->link_geometry();
+        for (std::size_t i = 0; i < points.size(); ++i)
+          {
+            const bool            tip      = i + 1 == points.size();
+            const Eigen::Vector3d rotation = tip ? sample->tip_frame() : Eigen::Vector3d::Zero();
+            table.add_row({CsvTable::cell(sample->pressure()), tip ? "tip" : std::to_string(i + 1),
+                           CsvTable::cell(points[i](0)), CsvTable::cell(points[i](1)),
+                           CsvTable::cell(points[i](2)), CsvTable::cell(rotation(0)),
+                           CsvTable::cell(rotation(1)), CsvTable::cell(rotation(2))});
+          }
+      }
+    return table;
+  }
+
   void StiffnessTables::write(const std::string &directory) const
   {
     const std::string stem = directory + "/" + reduction_.label();
@@ -115,5 +137,7 @@ namespace softchain::reduction
     k_vs_pressure(1).write(stem + "_ktheta_vs_pressure.csv");
     k_vs_pressure(0).write(stem + "_kpsi_vs_pressure.csv");
     pressure_torque().write(stem + "_pressure_torque.csv");
+    if (!reduction_.rest().link_geometry().empty())
+      link_geometry().write(stem + "_link_geometry.csv");
   }
 } // namespace softchain::reduction

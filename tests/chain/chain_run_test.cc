@@ -194,6 +194,15 @@ TEST_CASE("the Chain subsection is read and checked")
     CHECK(p.method == "M2");
     CHECK(p.validation_roles == std::vector<std::string>{"validation", "pressure"});
     CHECK(p.newton.max_iterations == 50);
+    CHECK(p.pressure_link_geometry); // the default: links as the pressure shapes them
+  }
+  SECTION("rigid links, and a link geometry that is neither")
+  {
+    std::ofstream(prm) << "subsection Chain\n  set Link geometry = rigid\nend\n";
+    CHECK_FALSE(ChainParameters::read(data::PrmFile::read(prm)).pressure_link_geometry);
+    std::ofstream(prm) << "subsection Chain\n  set Link geometry = bent\nend\n";
+    CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
+                      Catch::Contains(prm + ":2") && Catch::Contains("Link geometry") && Catch::Contains("bent"));
   }
   SECTION("a bad method names file, line and parameter")
   {

@@ -158,9 +158,10 @@ TEST_CASE("MuJoCo comes to rest in the chain solver's pose")
   check_same_pose(mujoco_rest_pose(model, {}, p, f), e, solver.pose());
 }
 
-TEST_CASE("With K(p) and J_p(p), the MJCF at p* is exact at p* and is the frozen chain elsewhere")
+TEST_CASE("With K(p), J_p(p) and links shaped by p, the MJCF at p* is exact at p* and is the frozen chain elsewhere")
 {
-  // The tapered finger with k_phi falling and J_p growing linearly in p.
+  // The tapered finger with k_phi falling and J_p growing linearly in p,
+  // its links stretching by 3 % and sinking by 0.2 mm per joint at p*.
   ChainModel       base  = tapered_finger();
   const double     p_max = 5e4;
   JointStiffness   k     = base.stiffness();
@@ -173,7 +174,18 @@ TEST_CASE("With K(p) and J_p(p), the MJCF at p* is exact at p* and is the frozen
     jp.emplace_back(std::vector<double>{0, p_max}, std::vector<double>{rest[j], 1.3 * rest[j]});
   PressureActuation actuation(rest);
   actuation.set_torque_in_pressure(jp);
-  const ChainModel model("in pressure", base.chain(), k, actuation);
+  ChainModel model("in pressure", base.chain(), k, actuation);
+  const auto stretched = [&](const Eigen::Vector3d &X, const double sink) {
+    const Eigen::Vector3d at_p_max = 1.03 * X - Eigen::Vector3d(0, sink, 0);
+    const auto line = [&](const int c) { return PiecewiseLinear({0, p_max}, {X(c), at_p_max(c)}); };
+    return LinkGeometry::PointInPressure{line(0), line(1), line(2)};
+  };
+  std::vector<LinkGeometry::PointInPressure> joints;
+  for (int i = 0; i < 9; ++i)
+    joints.push_back(stretched(base.chain().joint_centre(i), 2e-4 * i));
+  model.set_link_geometry(LinkGeometry(joints, stretched(base.chain().tip(), 2e-3),
+                                       {PiecewiseLinear({0}, {0}), PiecewiseLinear({0}, {0}),
+                                        PiecewiseLinear({0}, {0})}));
   MjcfOptions      options;
   options.pressure = p_max;
   const Eigen::Vector3d f(0.0, 0.02, 0.02), tip = model.chain().tip();

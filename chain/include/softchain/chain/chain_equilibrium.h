@@ -76,8 +76,10 @@ namespace softchain::chain
     Eigen::MatrixXd        tangent(const Eigen::VectorXd &q);
     // The (shifted, capped) Newton step at q, by ChainTangent's O(n) solve.
     Eigen::VectorXd        newton_step(const Eigen::VectorXd &q);
-    // Pose of the last evaluation.
-    const ChainPose &pose() const { return pose_; }
+    // Pose of the last evaluation, and the geometry it belongs to: the
+    // model's at the pressure of the last set_load (ChainModel::chain_at).
+    const ChainPose      &pose() const { return pose_; }
+    const KinematicChain &chain() const { return chain_; }
 
   private:
     struct AttachedLoad
@@ -99,6 +101,7 @@ namespace softchain::chain
 
     const ChainModel   &model_;
     EquilibriumSettings settings_;
+    KinematicChain      chain_; // the model's geometry at the load's pressure
 
     // Load (set_load)
     Eigen::VectorXd           stiffness_;       // diag K

@@ -1,11 +1,14 @@
 #pragma once
-// ChainModel: one finger of the chain tier, i.e. the geometry (KinematicChain),
-// the joint stiffness K and the pressure actuation J_p; everything the
-// equilibrium K q = J_p p + J(q)^T f needs besides the load.
+// ChainModel: one finger of the chain tier, i.e. the geometry (KinematicChain,
+// optionally with links shaped by the pressure: LinkGeometry), the joint
+// stiffness K and the pressure actuation J_p; everything the equilibrium
+// K q = J_p p + J(q)^T f needs besides the load.
 #include <softchain/chain/joint_stiffness.h>
 #include <softchain/chain/kinematic_chain.h>
+#include <softchain/chain/link_geometry.h>
 #include <softchain/chain/pressure_actuation.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,16 @@ namespace softchain::chain
                PressureActuation actuation);
 
     const std::string       &name() const { return name_; }
+    ChainModel               with_name(std::string name) const;
+    // The reference geometry (rigid links between the reference joint centres).
     const KinematicChain    &chain() const { return chain_; }
+    // The geometry under `pressure`: the links of the LinkGeometry if set,
+    // else the reference one.
+    KinematicChain           chain_at(double pressure) const;
+    void                     set_link_geometry(LinkGeometry geometry);
+    // The same model with rigid links between the reference centres.
+    ChainModel               with_rigid_links() const;
+    bool                     has_link_geometry() const { return link_geometry_.has_value(); }
     const JointStiffness    &stiffness() const { return stiffness_; }
     const PressureActuation &actuation() const { return actuation_; }
 
@@ -35,5 +47,6 @@ namespace softchain::chain
     JointStiffness    stiffness_;
     PressureActuation actuation_;
     std::vector<bool> twist_joints_; // empty: none
+    std::optional<LinkGeometry> link_geometry_;
   };
 } // namespace softchain::chain

@@ -26,6 +26,7 @@ namespace softchain::chain
     double                   half_width_fraction = 0.5;
     std::string              stiffness_column    = "value";
     bool                     in_pressure         = true;
+    bool                     pressure_link_geometry = true; // links as the pressure shapes them (LinkGeometry)
     bool                     rigid_where_missing = true; // NaN or k <= 0: rigid joint (or an error)
     std::vector<std::string> validation_roles    = {"validation", "pressure"};
     double                   baseline_youngs_modulus = 2.6e5;

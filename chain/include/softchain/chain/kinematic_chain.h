@@ -8,10 +8,20 @@
 // phi_{n-1}) are the relative rotations of docs/conventions.md ("Joints") with the shared
 // Euler convention (data/joint_angles.h): E(q_i) = Rx(psi) Ry(theta) Rz(phi),
 // the convention of the reduction that measured the angles.
-// Forward kinematics (R_{-1} = I, c_0 = J_0):
+// Forward kinematics (R_{-1} = I, c_0 = U_0):
 //   R_i     = R_{i-1} E(q_i)
-//   c_{i+1} = c_i + R_i (J_{i+1} - J_i),   tip = c_{n-1} + R_{n-1} (T - J_{n-1})
-// and a material point X of link b moves to x = c_b + R_b (X - J_b).
+//   c_{i+1} = c_i + R_i (U_{i+1} - U_i),   tip = c_{n-1} + R_{n-1} (U_T - U_{n-1})
+// where U_i, U_T are the link geometry: the positions of the joints and the
+// tip at zero angles. By default U = J (rigid links between the reference
+// centres); with_link_geometry sets another one, e.g. the finger's links
+// stretched and sheared by the pressure (ChainModel::chain_at). A material
+// point X of link b (reference position) moves with its link, stretched
+// linearly along it: with s = (X - J_b)_x / (J_{b+1} - J_b)_x clipped to
+// [0, 1] and the end shifts D_i = U_i - J_i (D_n = U_T - T),
+//   x = c_b + R_b (X + (1 - s) D_b + s D_{b+1} - U_b),
+// which is x = c_b + R_b (X - J_b) for the default geometry and carries the
+// reference tip T to the chain's tip. The tip frame is R_{n-1} Q_T, Q_T the
+// tip face's rotation in the last link's frame (identity by default).
 // The world axes of the three angles of joint i are the columns of
 //   A_i = R_{i-1} [ e_x,  Rx(psi) e_y,  Rx(psi) Ry(theta) e_z ]
 // so that dx/dq_{i,alpha} = a_{i,alpha} x (x - c_i) for points distal to i.
@@ -28,6 +38,7 @@ namespace softchain::chain
     std::vector<Eigen::Matrix3d> link_rotations;  // R_i
     std::vector<Eigen::Matrix3d> joint_axes;      // A_i (world axes as columns)
     Eigen::Vector3d              tip_position = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d              tip_rotation = Eigen::Matrix3d::Identity(); // R_{n-1} Q_T
   };
 
   class KinematicChain
@@ -43,6 +54,15 @@ namespace softchain::chain
     const Eigen::Vector3d &joint_centre(int i) const { return joint_centres_[i]; }
     const Eigen::Vector3d &tip() const { return tip_; }
 
+    // The same joints with link geometry U (one point per joint), U_T and
+    // the tip frame Q_T; throws std::invalid_argument unless U increases
+    // strictly along x and U_T lies beyond the last one.
+    KinematicChain with_link_geometry(std::vector<Eigen::Vector3d> joints,
+                                      const Eigen::Vector3d       &tip,
+                                      const Eigen::Matrix3d       &tip_frame) const;
+    const Eigen::Vector3d &link_joint(int i) const { return link_joints_[i]; }
+    const Eigen::Vector3d &link_tip() const { return link_tip_; }
+
     // Link that carries the material point with reference position X: the
     // last joint i with J_i,x <= X_x, or -1 for the clamped base.
     int link_of(const Eigen::Vector3d &X) const;
@@ -57,5 +77,8 @@ namespace softchain::chain
   private:
     std::vector<Eigen::Vector3d> joint_centres_;
     Eigen::Vector3d              tip_;
+    std::vector<Eigen::Vector3d> link_joints_; // U_i
+    Eigen::Vector3d              link_tip_;    // U_T
+    Eigen::Matrix3d              tip_frame_ = Eigen::Matrix3d::Identity(); // Q_T
   };
 } // namespace softchain::chain

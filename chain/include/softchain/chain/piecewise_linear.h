@@ -15,6 +15,8 @@ namespace softchain::chain
     PiecewiseLinear(std::vector<double> abscissae, std::vector<double> values);
 
     double operator()(double x) const;
+    const std::vector<double> &abscissae() const { return abscissae_; }
+    const std::vector<double> &values() const { return values_; }
 
   private:
     std::vector<double> abscissae_;

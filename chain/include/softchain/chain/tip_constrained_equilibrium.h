@@ -82,6 +82,7 @@ namespace softchain::chain
     ChainLoad with_contact(const ChainLoad &load, const Eigen::Vector3d &contact_force) const;
     // Pose of the last evaluation.
     const ChainPose &pose() const { return equilibrium_.pose(); }
+    const KinematicChain &chain() const { return equilibrium_.chain(); }
 
   private:
     // dx_tip/dq at pose(): 3 x (3 n_joints).

@@ -35,12 +35,23 @@ namespace softchain::reduction
     // Sum of the magnitudes |f_k| of the sample's point forces (N).
     double                          force_norm() const { return force_norm_; }
     const std::vector<JointResult> &joints() const { return joints_; }
+    // The chain's link geometry U_1..U_n, U_T at this sample: joint and tip
+    // positions at zero angles (chain/link_geometry.h); empty if the mesh
+    // has no tip face.
+    const std::vector<Eigen::Vector3d> &link_geometry() const { return link_geometry_; }
+    // The tip face's frame in the last link's frame, as a rotation vector (rad).
+    const Eigen::Vector3d &tip_frame() const { return tip_frame_; }
 
   private:
+    void set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
+                           const std::vector<Eigen::Matrix3d> &link_rotations);
+
     std::string              id_;
     std::string              role_;
     double                   pressure_;
     double                   force_norm_;
     std::vector<JointResult> joints_;
+    std::vector<Eigen::Vector3d> link_geometry_;
+    Eigen::Vector3d              tip_frame_ = Eigen::Vector3d::Zero();
   };
 } // namespace softchain::reduction

@@ -11,6 +11,11 @@
 //                                 samples and joint: their least-squares k
 //   <label>_pressure_torque.csv   J_p per joint at rest (pressure 0) and at
 //                                 each pressure sample
+//   <label>_link_geometry.csv     the chain's link geometry (joints 1..n and
+//                                 the tip at zero angles, the tip frame in
+//                                 the last link's) at rest and at each
+//                                 pressure sample; not written for a mesh
+//                                 without a tip face
 #include <softchain/data/csv_table.h>
 #include <softchain/reduction/method_reduction.h>
 
@@ -30,8 +35,9 @@ namespace softchain::reduction
     // their distinct pressures, by increasing pressure.
     data::CsvTable k_vs_pressure(int axis) const;
     data::CsvTable pressure_torque() const;
+    data::CsvTable link_geometry() const;
 
-    // Writes the six files into `directory` (created if missing).
+    // Writes the seven files into `directory` (created if missing).
     void write(const std::string &directory) const;
 
   private:
