@@ -7,6 +7,7 @@
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/input_error.h>
 
+#include "../data/occurrences.h"
 #include "../data/scratch_directory.h"
 #include "box_mesh.h"
 #include "reduction_output.h"
@@ -218,4 +219,28 @@ TEST_CASE("the Chain subsection is read and checked")
     data::ActuationDatabase::open_or_create(dir.file("db.h5"), design, chain::testing::box_mesh({}));
     CHECK_THROWS_AS(run_chain(data::PrmFile::read(prm), dir.file("db.h5"), dir.file("out"), false), data::InputError);
   }
+}
+
+TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's free hinges only")
+{
+  // Each joint with a twist axis is a body with the psi hinge and a body
+  // with the theta and phi hinges (MjcfExport): 18 bodies, 27 hinges, not
+  // 54 hinges of which 27 are held rigid.
+  softchain::testing::ScratchDirectory dir("chain_run_twist_mjcf");
+  const std::string                    out = dir.file("out");
+  const std::string                    prm = dir.file("finger.prm");
+  std::ofstream(prm) << chain_prm;
+  chain::testing::BoxMeshSpec spec;
+  spec.y0 = -0.5 * spec.height;
+  const data::MeshRecord           mesh = chain::testing::box_mesh(spec);
+  chain::testing::UniformReduction r;
+  r.twist_height = 0.004;
+  const StiffnessFiles files(out + "/stiffness", "M2", 0.5);
+  chain::testing::write_reduction(files, r);
+  write_database(dir.file("database.h5"), files.read_model("M2", {0.09, 0, 0}, "value", true), mesh);
+  REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
+  std::ifstream     xml(out + "/chain/finger.xml");
+  const std::string text((std::istreambuf_iterator<char>(xml)), {});
+  CHECK(softchain::testing::occurrences(text, "<body name=\"link") == 18);
+  CHECK(softchain::testing::occurrences(text, "<joint name=") == 27);
 }
