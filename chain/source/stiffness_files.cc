@@ -281,6 +281,31 @@ namespace softchain::chain
       return result;
     }
 
+    // Every point of the link geometry (the joints, then the tip) at every
+    // tabulated pressure, each beyond the one before along x. That keeps
+    // them in order at every pressure between (a convex combination of
+    // increasing sequences increases), as KinematicChain requires.
+    void check_link_order(const std::vector<std::array<std::map<double, double>, 3>> &per_point,
+                          const std::string                                           &path)
+    {
+      const auto name = [&](const std::size_t i) {
+        return i + 1 < per_point.size() ? "joint " + std::to_string(i + 1) : std::string("the tip");
+      };
+      std::set<double> pressures;
+      for (const auto &point : per_point)
+        for (const auto &[pressure, x] : point[0])
+          pressures.insert(pressure);
+      for (const double pressure : pressures)
+        for (std::size_t i = 0; i < per_point.size(); ++i)
+          {
+            if (per_point[i][0].count(pressure) == 0)
+              throw InputError(path + ": no row for " + name(i) + " at pressure " + number_text(pressure));
+            if (i > 0 && !(per_point[i][0].at(pressure) > per_point[i - 1][0].at(pressure)))
+              throw InputError(path + ": at pressure " + number_text(pressure) + ", " + name(i) +
+                               " does not lie beyond " + name(i - 1) + " along x");
+          }
+    }
+
     // The link geometry U_i(p), U_T(p), Q_T(p) (LinkGeometry): per pressure
     // a row for each joint (point 1..n) and the tip (point "tip", its
     // rx, ry, rz the tip frame's rotation vector); the rest rows (pressure 0)
@@ -336,6 +361,7 @@ namespace softchain::chain
                             in_pressure(per_point[i][1], path, "y of " + name),
                             in_pressure(per_point[i][2], path, "z of " + name)});
         }
+      check_link_order(per_point, path);
       const LinkGeometry::PointInPressure tip_table = points.back();
       points.pop_back();
       return LinkGeometry(std::move(points), tip_table,

@@ -154,13 +154,16 @@ TEST_CASE("the link geometry file: read with the pressure tables, its rest rows 
   const testing::UniformReduction      r;
   testing::write_reduction(files, r);
   const Eigen::Vector3d tip(r.n * r.a, 0, 0);
-  const auto write = [&](const double rest_shift) {
+  const auto write = [&](const double rest_shift, const double joint3_shift = 0.0, const bool tip_row = true) {
     softchain::data::CsvTable table({"pressure", "point", "x", "y", "z", "rx", "ry", "rz"});
     for (const double p : {0.0, r.p_max})
       for (int i = 0; i <= r.n; ++i)
         {
           const double stretch = p > 0 ? 1.02 : 1.0;
-          const double x       = (i < r.n ? (i + 0.5) * r.a : r.n * r.a) * stretch + (p > 0 ? 0 : rest_shift);
+          const double x = (i < r.n ? (i + 0.5) * r.a : r.n * r.a) * stretch + (p > 0 ? 0 : rest_shift) +
+                           (p > 0 && i == 2 ? joint3_shift : 0.0);
+          if (i == r.n && p > 0 && !tip_row)
+            continue;
           table.add_row({softchain::data::CsvTable::cell(p), i < r.n ? std::to_string(i + 1) : "tip",
                          softchain::data::CsvTable::cell(x), "0", "0", "0", "0",
                          i < r.n || p == 0 ? "0" : "0.02"});
@@ -179,6 +182,15 @@ TEST_CASE("the link geometry file: read with the pressure tables, its rest rows 
   CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true),
                     Catch::Contains(files.link_geometry_path()) && Catch::Contains("joint 1") &&
                       Catch::Contains("different reductions"));
+  // Joints out of order along x at a pressure: the chain would fold back.
+  write(0.0, -0.015);
+  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true),
+                    Catch::Contains(files.link_geometry_path()) && Catch::Contains("at pressure 80000") &&
+                      Catch::Contains("joint 3 does not lie beyond joint 2"));
+  // A pressure without the tip's row.
+  write(0.0, 0.0, false);
+  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true),
+                    Catch::Contains("no row for the tip at pressure 80000"));
   // Without the file (a reduction before link geometry): rigid links.
   std::filesystem::remove(files.link_geometry_path());
   CHECK_FALSE(files.read_model("M2", tip, "value", true).has_link_geometry());
