@@ -4,6 +4,7 @@
 // differences, and loads that the chain cannot equilibrate.
 #include <softchain/chain/chain_equilibrium.h>
 
+#include "central_differences.h"
 #include "uniform_finger.h"
 
 #include <catch2/catch.hpp>
@@ -150,17 +151,9 @@ TEST_CASE("the exact tangent matches central differences of the residual")
   Eigen::VectorXd q(3 * n_joints);
   for (int j = 0; j < q.size(); ++j)
     q[j] = 0.4 * std::sin(2.3 * j + 1.0);
-  const Eigen::MatrixXd tangent = solver.tangent(q);
-  const double          h       = 1e-5;
-  Eigen::MatrixXd       difference(q.size(), q.size());
-  for (int j = 0; j < q.size(); ++j)
-    {
-      Eigen::VectorXd plus = q, minus = q;
-      plus[j] += h;
-      minus[j] -= h;
-      difference.col(j) = (solver.residual(plus) - solver.residual(minus)) / (2 * h);
-    }
-  const double scale = tangent.cwiseAbs().maxCoeff();
+  const Eigen::MatrixXd tangent    = solver.tangent(q);
+  const Eigen::MatrixXd difference = testing::central_differences(solver, q, 1e-5);
+  const double          scale      = tangent.cwiseAbs().maxCoeff();
   CHECK((tangent - difference).cwiseAbs().maxCoeff() < 1e-8 * scale);
   // The load part of H is what is being checked: it must be significant.
   CHECK((tangent - Eigen::MatrixXd(Eigen::VectorXd::Constant(q.size(), 0.03).asDiagonal()))

@@ -8,6 +8,7 @@
 #include <softchain/data/input_error.h>
 
 #include "../data/scratch_directory.h"
+#include "central_differences.h"
 #include "reduction_output.h"
 #include "uniform_finger.h"
 
@@ -134,16 +135,8 @@ TEST_CASE("the equilibrium on stretched links: closed form under pressure, exact
   Eigen::VectorXd q(12);
   for (int j = 0; j < q.size(); ++j)
     q[j] = 0.4 * std::sin(2.3 * j + 1.0);
-  const Eigen::MatrixXd tangent = solver.tangent(q);
-  const double          h       = 1e-5;
-  Eigen::MatrixXd       difference(q.size(), q.size());
-  for (int j = 0; j < q.size(); ++j)
-    {
-      Eigen::VectorXd plus = q, minus = q;
-      plus[j] += h;
-      minus[j] -= h;
-      difference.col(j) = (solver.residual(plus) - solver.residual(minus)) / (2 * h);
-    }
+  const Eigen::MatrixXd tangent    = solver.tangent(q);
+  const Eigen::MatrixXd difference = testing::central_differences(solver, q, 1e-5);
   CHECK((tangent - difference).cwiseAbs().maxCoeff() < 1e-8 * tangent.cwiseAbs().maxCoeff());
 }
 

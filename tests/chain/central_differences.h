@@ -1,0 +1,22 @@
+#pragma once
+// Central differences of the equilibrium's residual: the reference the
+// exact tangent dr/dq is checked against. Each column errs by
+// h^2/6 |r'''| + eps |r| / h.
+#include <softchain/chain/chain_equilibrium.h>
+
+namespace softchain::chain::testing
+{
+  inline Eigen::MatrixXd central_differences(ChainEquilibrium &solver, const Eigen::VectorXd &q,
+                                             const double h)
+  {
+    Eigen::MatrixXd difference(q.size(), q.size());
+    for (Eigen::Index j = 0; j < q.size(); ++j)
+      {
+        Eigen::VectorXd plus = q, minus = q;
+        plus[j] += h;
+        minus[j] -= h;
+        difference.col(j) = (solver.residual(plus) - solver.residual(minus)) / (2 * h);
+      }
+    return difference;
+  }
+} // namespace softchain::chain::testing
