@@ -4,7 +4,6 @@
 // The paper's SOFA chain took about 6 ms per finger (Sec. V).
 // Run: chain_benchmark --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <softchain/chain/chain_equilibrium.h>
-#include <softchain/chain/joint_tables.h>
 #include <softchain/chain/link_geometry.h>
 
 #include <benchmark/benchmark.h>
@@ -39,25 +38,14 @@ namespace
   }
 
   // The same finger whose joints twist about an axis 5 mm above them (the
-  // reduction's default gives P10 one 5 mm up): a twist joint and a
-  // bending joint per joint, 2n in all (JointTables).
+  // reduction's default gives P10 one 5 mm up).
   ChainModel finger_with_twist_axes()
   {
-    const ChainModel             plain = finger();
-    JointTables                  tables;
-    std::vector<Eigen::Vector3d> twist_points;
-    Eigen::Vector3d              rigid = Eigen::Vector3d::Zero();
-    for (int i = 0; i < n_joints; ++i)
-      {
-        tables.joint_centres.push_back(plain.chain().joint_centre(i));
-        tables.stiffness.push_back(plain.stiffness().joint(i));
-        rigid = rigid.cwiseMax(1e6 * plain.stiffness().joint(i));
-        twist_points.push_back(plain.chain().joint_centre(i) + Eigen::Vector3d(0, 0.005, 0));
-        for (int axis = 0; axis < 3; ++axis)
-          tables.pressure_torque.emplace_back(std::vector<double>{0.0},
-                                              std::vector<double>{plain.actuation().rest_torque_per_pascal()[3 * i + axis]});
-      }
-    return tables.with_twist_joints(twist_points, rigid).model("twist axes", plain.chain().tip(), false);
+    const ChainModel plain = finger();
+    return ChainModel("twist axes",
+                      plain.chain().with_twist_offsets(
+                        std::vector<Eigen::Vector3d>(n_joints, Eigen::Vector3d(0, 0.005, 0))),
+                      plain.stiffness(), plain.actuation());
   }
 
   // The chain the reduction gives a finger by default: twist axes and links
@@ -65,8 +53,8 @@ namespace
   // p_max: 3 % longer and 0.2 mm lower per joint at p_max).
   ChainModel finger_as_reduced()
   {
-    const ChainModel             plain = finger();
-    const auto                   point = [](const Eigen::Vector3d &X, const double sink) {
+    const ChainModel plain = finger();
+    const auto       point = [](const Eigen::Vector3d &X, const double sink) {
       const auto line = [&](const int c) {
         const double at_p_max = 1.03 * X(c) - (c == 1 ? sink : 0.0);
         return PiecewiseLinear({0.0, 0.5 * p_max, p_max}, {X(c), 0.5 * (X(c) + at_p_max), at_p_max});
@@ -76,12 +64,9 @@ namespace
     std::vector<LinkGeometry::PointInPressure> joints;
     for (int i = 0; i < n_joints; ++i)
       joints.push_back(point(plain.chain().joint_centre(i), 2e-4 * i));
-    const LinkGeometry links(joints, point(plain.chain().tip(), 2e-3), point(Eigen::Vector3d::Zero(), 0.0));
     ChainModel model = finger_with_twist_axes();
-    std::vector<Eigen::Vector3d> offsets;
-    for (int i = 0; i < n_joints; ++i)
-      offsets.push_back(model.chain().joint_centre(2 * i) - model.chain().joint_centre(2 * i + 1));
-    model.set_link_geometry(links.with_twist_joints(offsets));
+    model.set_link_geometry(
+      LinkGeometry(joints, point(plain.chain().tip(), 2e-3), point(Eigen::Vector3d::Zero(), 0.0)));
     return model;
   }
 
@@ -119,7 +104,7 @@ static void equilibrium_from_rest(benchmark::State &state, const ChainModel &mod
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure, finger(), ChainLoad{0.5 * p_max, {}});
 // Pressure and a tip force: the nonlinear case, ~100 deg of bending.
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force, finger(), load(0.5 * p_max));
-// The two above with twist axes: twice the joints.
+// The two above with twist axes (psi about a pivot 5 mm above each joint).
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_twist_axes, finger_with_twist_axes(),
                   ChainLoad{0.5 * p_max, {}});
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_twist_axes, finger_with_twist_axes(),

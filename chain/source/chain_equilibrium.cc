@@ -30,6 +30,7 @@ namespace softchain::chain
     , pose_(model.chain().rest_pose())
     , moment_(model.chain().n_joints())
     , moment_gradient_(model.chain().n_joints())
+    , distal_force_(model.chain().n_joints())
     , generalised_force_(model.chain().n_angles())
     , residual_(model.chain().n_angles())
     , tangent_(model.chain().n_joints())
@@ -44,10 +45,9 @@ namespace softchain::chain
   {
     if (!std::isfinite(load.pressure))
       throw std::invalid_argument("ChainEquilibrium: pressure is not finite");
-    if (model_.has_link_geometry())
-      chain_ = model_.chain_at(load.pressure);
-    stiffness_       = model_.stiffness().diagonal(load.pressure);
-    pressure_torque_ = model_.actuation().torque(load.pressure);
+    model_.chain_at(load.pressure, chain_);
+    model_.stiffness().diagonal(load.pressure, stiffness_);
+    model_.actuation().torque(load.pressure, pressure_torque_);
     loads_.clear();
     for (const PointLoad &p : load.point_loads)
       {
@@ -101,15 +101,25 @@ namespace softchain::chain
         moment_[m]               = moment - c.cross(force);
         const Eigen::Matrix3d a  = dyad - c * force.transpose();
         moment_gradient_[m]      = a - a.trace() * Eigen::Matrix3d::Identity();
+        distal_force_[m]         = force;
         generalised_force_.segment<3>(3 * m) = pose_.joint_axes[m].transpose() * moment_[m];
+        if (chain_.has_twist_offsets()) // psi: the moment about the twist pivot s_m
+          generalised_force_[3 * m] = pose_.joint_axes[m].col(0).dot(twist_moment(m));
       }
+  }
+
+  // M about s_m = M_m + (c_m - s_m) x F_m.
+  Eigen::Vector3d ChainEquilibrium::twist_moment(const int m) const
+  {
+    return moment_[m] + (pose_.joint_positions[m] - pose_.twist_pivots[m]).cross(distal_force_[m]);
   }
 
   // H = K - dQ/dq in ChainTangent's form (header): U_j = -A_j^T (B_j + [M_j]x)
   // for every (l, beta) before (j, alpha), also within joint j, so the lower
   // triangle of D_j - K_j is that of U_j A_j. (Directly: the lower triangle of
   // -A_j^T B_j A_j - strictly lower part of A_j^T [M_j]x A_j, the same since
-  // A^T [M]x A is antisymmetric.) D_j is mirrored from it.
+  // A^T [M]x A is antisymmetric.) D_j is mirrored from it. With a twist
+  // pivot s_j the psi row takes M and B about s_j (header).
   void ChainEquilibrium::prepare_tangent()
   {
     for (int j = 0; j < chain_.n_joints(); ++j)
@@ -117,6 +127,16 @@ namespace softchain::chain
         const Eigen::Matrix3d &axes = pose_.joint_axes[j];
         tangent_.axes(j)            = axes;
         tangent_.coupling(j) = -axes.transpose() * (moment_gradient_[j] + cross_matrix(moment_[j]));
+        if (chain_.has_twist_offsets())
+          {
+            // About s_j: B^s = B_j + d F^T - (d . F) I, M^s = M_j + d x F with
+            // d = c_j - s_j, so the psi row -(B^s^T a + a x M^s)^T differs
+            // from the one about c_j by -(d (a . F) - a (d . F))^T.
+            const Eigen::Vector3d  d = pose_.joint_positions[j] - pose_.twist_pivots[j];
+            const Eigen::Vector3d &F = distal_force_[j];
+            const Eigen::Vector3d  a = axes.col(0);
+            tangent_.coupling(j).row(0) -= (d * a.dot(F) - a * d.dot(F)).transpose();
+          }
         const Eigen::Matrix3d lower = tangent_.coupling(j) * axes;
         Eigen::Matrix3d      &d     = tangent_.diagonal(j);
         d                           = lower.selfadjointView<Eigen::Lower>();
@@ -153,7 +173,8 @@ namespace softchain::chain
   // round-off of U itself (a few ulps of its largest term) near convergence.
   bool ChainEquilibrium::line_search(Eigen::VectorXd &q)
   {
-    const Eigen::VectorXd start  = q;
+    line_start_                  = q; // no allocation after the first solve
+    const Eigen::VectorXd &start  = line_start_;
     const double          energy = energy_;
     const double          slope  = residual_.dot(direction_);
     const double          slack  = 64.0 * std::numeric_limits<double>::epsilon() * energy_magnitude_;
@@ -200,9 +221,14 @@ namespace softchain::chain
     return "unstable equilibrium: the tangent stiffness is not positive definite (buckling)";
   }
 
+  // From the pressure's own equilibrium: without forces K q = J_p p is
+  // linear (diagonal K), q = K^-1 J_p p, which is where the forces then
+  // bend the finger from.
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load)
   {
-    return solve(load, Eigen::VectorXd::Zero(model_.chain().n_angles()));
+    model_.stiffness().diagonal(load.pressure, stiffness_);
+    model_.actuation().torque(load.pressure, pressure_torque_);
+    return solve(load, pressure_torque_.cwiseQuotient(stiffness_));
   }
 
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load, const Eigen::VectorXd &start)

@@ -35,6 +35,12 @@ namespace softchain::chain
     return link_geometry_ ? link_geometry_->at(pressure, chain_) : chain_;
   }
 
+  void ChainModel::chain_at(const double pressure, KinematicChain &chain) const
+  {
+    if (link_geometry_)
+      link_geometry_->apply(pressure, chain);
+  }
+
   void ChainModel::set_link_geometry(LinkGeometry geometry)
   {
     if (geometry.n_joints() != chain_.n_joints())
@@ -42,10 +48,4 @@ namespace softchain::chain
     link_geometry_ = std::move(geometry);
   }
 
-  void ChainModel::set_twist_joints(std::vector<bool> twist_joints)
-  {
-    if (static_cast<int>(twist_joints.size()) != chain_.n_joints())
-      throw std::invalid_argument("ChainModel: one twist-joint flag per joint needed");
-    twist_joints_ = std::move(twist_joints);
-  }
 } // namespace softchain::chain

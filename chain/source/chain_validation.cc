@@ -98,9 +98,7 @@ namespace softchain::chain
             r.orientation_error =
               data::rotation_angle_between(pose.tip_rotation, s.tip.rotation);
             r.tip_position       = pose.tip_position;
-            for (int i = 0; i < model.chain().n_joints(); ++i) // the finger's joints, as drawn
-              if (!model.is_twist_joint(i))
-                r.joint_positions.push_back(pose.joint_positions[i]);
+            r.joint_positions = pose.joint_positions;
             r.tip_rotation_angle =
               data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.tip_rotation);
           }

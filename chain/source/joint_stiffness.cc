@@ -29,11 +29,17 @@ namespace softchain::chain
 
   Eigen::VectorXd JointStiffness::diagonal(double pressure) const
   {
-    Eigen::VectorXd k(3 * n_joints());
+    Eigen::VectorXd k;
+    diagonal(pressure, k);
+    return k;
+  }
+
+  void JointStiffness::diagonal(double pressure, Eigen::VectorXd &k) const
+  {
+    k.resize(3 * n_joints());
     for (int i = 0; i < n_joints(); ++i)
       for (int axis = 0; axis < 3; ++axis)
         k[3 * i + axis] = in_pressure_[axis].empty() ? per_joint_[i][axis] :
                                                        in_pressure_[axis][i](pressure);
-    return k;
   }
 } // namespace softchain::chain

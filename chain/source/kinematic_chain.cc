@@ -17,6 +17,12 @@ namespace softchain::chain
     {
       Eigen::Matrix3d rotation;
       Eigen::Vector3d theta_axis;
+      double          cos_psi, sin_psi;
+      // Rx(psi) v
+      Eigen::Vector3d twisted(const Eigen::Vector3d &v) const
+      {
+        return {v.x(), cos_psi * v.y() - sin_psi * v.z(), sin_psi * v.y() + cos_psi * v.z()};
+      }
     };
 
     EulerFrame euler_frame(double psi, double theta, double phi)
@@ -28,6 +34,8 @@ namespace softchain::chain
         cx * sz + sx * sy * cz, cx * cz - sx * sy * sz, -sx * cy, //
         sx * sz - cx * sy * cz, sx * cz + cx * sy * sz, cx * cy;
       f.theta_axis << 0.0, cx, sx;
+      f.cos_psi = cx;
+      f.sin_psi = sx;
       return f;
     }
 
@@ -50,8 +58,24 @@ namespace softchain::chain
     , tip_(tip)
     , link_joints_(joint_centres_)
     , link_tip_(tip)
+    , twist_offsets_(joint_centres_.size(), Eigen::Vector3d::Zero())
   {
     check_order(joint_centres_, tip_, "joint centres");
+  }
+
+  KinematicChain KinematicChain::with_twist_offsets(std::vector<Eigen::Vector3d> offsets) const
+  {
+    if (offsets.size() != joint_centres_.size())
+      throw std::invalid_argument("KinematicChain: one twist offset per joint needed");
+    for (const Eigen::Vector3d &o : offsets)
+      if (!o.allFinite())
+        throw std::invalid_argument("KinematicChain: a twist offset is not finite");
+    KinematicChain chain     = *this;
+    chain.twist_offsets_     = std::move(offsets);
+    chain.has_twist_offsets_ = false;
+    for (const Eigen::Vector3d &o : chain.twist_offsets_)
+      chain.has_twist_offsets_ = chain.has_twist_offsets_ || o != Eigen::Vector3d::Zero();
+    return chain;
   }
 
   KinematicChain KinematicChain::with_link_geometry(std::vector<Eigen::Vector3d> joints,
@@ -60,12 +84,14 @@ namespace softchain::chain
   {
     if (joints.size() != joint_centres_.size())
       throw std::invalid_argument("KinematicChain: the link geometry needs one point per joint");
-    check_order(joints, tip, "the link geometry's joints");
     KinematicChain chain = *this;
-    chain.link_joints_   = std::move(joints);
-    chain.link_tip_      = tip;
-    chain.tip_frame_     = tip_frame;
+    chain.assign_link_geometry([&](const int i) { return joints[i]; }, tip, tip_frame);
     return chain;
+  }
+
+  void KinematicChain::check_link_order() const
+  {
+    check_order(link_joints_, link_tip_, "the link geometry's joints");
   }
 
   int KinematicChain::link_of(const Eigen::Vector3d &X) const
@@ -80,6 +106,9 @@ namespace softchain::chain
   {
     ChainPose pose;
     pose.joint_positions = link_joints_;
+    pose.twist_pivots    = link_joints_;
+    for (int i = 0; i < n_joints(); ++i)
+      pose.twist_pivots[i] += twist_offsets_[i];
     pose.link_rotations.assign(n_joints(), Eigen::Matrix3d::Identity());
     pose.joint_axes.assign(n_joints(), Eigen::Matrix3d::Identity());
     pose.tip_position = link_tip_;
@@ -93,7 +122,15 @@ namespace softchain::chain
     Eigen::Vector3d position = link_joints_[0];
     for (int i = 0; i < n_joints(); ++i)
       {
-        const EulerFrame frame  = euler_frame(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
+        const EulerFrame frame = euler_frame(q[3 * i], q[3 * i + 1], q[3 * i + 2]);
+        if (has_twist_offsets_) // psi turns J_i about the twist pivot s_i
+          {
+            const Eigen::Vector3d &o = twist_offsets_[i];
+            pose.twist_pivots[i]     = position + parent * o;
+            position                 = pose.twist_pivots[i] - parent * frame.twisted(o);
+          }
+        else
+          pose.twist_pivots[i] = position;
         pose.joint_positions[i] = position;
         // a_psi = R_{i-1} e_x, a_theta = R_{i-1} Rx e_y, a_phi = R_{i-1} E e_z = R_i e_z.
         pose.joint_axes[i].col(0) = parent.col(0);

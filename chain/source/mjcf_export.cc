@@ -43,22 +43,7 @@ namespace softchain::chain
         k.push_back(pressure > 0 ? Eigen::Vector3d(diagonal.segment<3>(3 * i)) : model.stiffness().joint(i));
       const Eigen::VectorXd jp = pressure > 0 ? Eigen::VectorXd(model.actuation().torque(pressure) / pressure)
                                               : model.actuation().rest_torque_per_pascal();
-      ChainModel constant(model.name(), model.chain_at(pressure), JointStiffness(k), PressureActuation(jp));
-      std::vector<bool> twist(model.chain().n_joints());
-      for (int i = 0; i < model.chain().n_joints(); ++i)
-        twist[i] = model.is_twist_joint(i);
-      constant.set_twist_joints(twist);
-      return constant;
-    }
-
-    // The hinges joint i has: a twist joint only psi, the bending joint
-    // after it only theta and phi (the chain holds the others rigid), any
-    // other joint all three.
-    bool has_hinge(const ChainModel &model, int i, int axis)
-    {
-      if (model.is_twist_joint(i))
-        return axis == 0;
-      return !(axis == 0 && i > 0 && model.is_twist_joint(i - 1));
+      return ChainModel(model.name(), model.chain_at(pressure), JointStiffness(k), PressureActuation(jp));
     }
   } // namespace
 
@@ -83,12 +68,15 @@ namespace softchain::chain
     s << indent << "<body name=\"link" << i + 1 << "\" pos=\"" << triple(offset) << "\">\n";
     for (int axis = 0; axis < 3; ++axis)
       {
-        if (!has_hinge(exported_, i, axis))
-          continue;
-        const double k = exported_.stiffness().joint(i)[axis];
-        s << indent << "  <joint name=\"" << joint_name(i, axis) << "\" axis=\""
-          << axis_vectors[axis] << "\" stiffness=\"" << number(k) << "\" damping=\""
-          << number(k * options_.damping_time) << "\"/>\n";
+        // MuJoCo turns a body's hinges in order, each about its anchor `pos`
+        // in the body's current frame: psi about the twist pivot J_i + o_i,
+        // then theta and phi about the joint centre J_i (KinematicChain).
+        const Eigen::Vector3d &pivot = chain.twist_offset(i);
+        const double           k     = exported_.stiffness().joint(i)[axis];
+        s << indent << "  <joint name=\"" << joint_name(i, axis) << "\" axis=\"" << axis_vectors[axis] << "\"";
+        if (axis == 0 && pivot != Eigen::Vector3d::Zero())
+          s << " pos=\"" << triple(pivot) << "\"";
+        s << " stiffness=\"" << number(k) << "\" damping=\"" << number(k * options_.damping_time) << "\"/>\n";
       }
     s << indent << "  <geom name=\"link" << i + 1 << "\" fromto=\"0 0 0 " << triple(to_next)
       << "\"/>\n";

@@ -21,11 +21,15 @@ namespace softchain::chain
 
   Eigen::VectorXd PressureActuation::torque(double pressure) const
   {
-    if (!depends_on_pressure())
-      return rest_ * pressure;
-    Eigen::VectorXd tau(rest_.size());
-    for (Eigen::Index j = 0; j < rest_.size(); ++j)
-      tau[j] = in_pressure_[j](pressure) * pressure;
+    Eigen::VectorXd tau;
+    torque(pressure, tau);
     return tau;
+  }
+
+  void PressureActuation::torque(double pressure, Eigen::VectorXd &tau) const
+  {
+    tau.resize(rest_.size());
+    for (Eigen::Index j = 0; j < rest_.size(); ++j)
+      tau[j] = (depends_on_pressure() ? in_pressure_[j](pressure) : rest_[j]) * pressure;
   }
 } // namespace softchain::chain

@@ -117,7 +117,6 @@ namespace softchain::chain
       std::vector<Eigen::Vector3d> joint_centres;
       std::vector<Eigen::Vector3d> twist_points; // S_i; J_i without the S columns
       std::vector<Eigen::Vector3d> stiffness;
-      Eigen::Vector3d              rigid;        // k of a rigid joint, per axis
     };
 
     // A joint axis without a usable stiffness (NaN: no usable sample, e.g. a
@@ -127,8 +126,7 @@ namespace softchain::chain
     // e.g. torsion in a pressure-only sample set) is held rigid at every
     // joint, k = 1e6 x the largest stiffness of any axis: the chain then
     // bends about the loaded axes only. No usable value at all is an error.
-    // Returns the k that holds a joint rigid, per axis.
-    Eigen::Vector3d hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
+    void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
                                              const std::vector<std::string> &columns, const bool rigid)
     {
       Eigen::Vector3d rigid_k;
@@ -173,7 +171,6 @@ namespace softchain::chain
                 stiffness[joint][axis] = rigid_k[axis];
               }
         }
-      return rigid_k;
     }
 
     StiffnessTable read_stiffness(const std::string &path, const std::string &column,
@@ -214,7 +211,7 @@ namespace softchain::chain
             k[axis] = stiffness_entry(table, path, row, k_columns[axis]);
           result.stiffness.push_back(k);
         }
-      result.rigid = hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
+      hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
       return result;
     }
 
@@ -425,7 +422,7 @@ namespace softchain::chain
     if (in_pressure && std::filesystem::exists(link_geometry_path_))
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
     if (twist_axes)
-      joints = joints.with_twist_joints(table.twist_points, table.rigid);
+      joints.twist_points = table.twist_points;
     return joints.model(name, tip, in_pressure);
   }
 } // namespace softchain::chain

@@ -221,11 +221,10 @@ TEST_CASE("the Chain subsection is read and checked")
   }
 }
 
-TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's free hinges only")
+TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's twist pivots")
 {
-  // Each joint with a twist axis is a body with the psi hinge and a body
-  // with the theta and phi hinges (MjcfExport): 18 bodies, 27 hinges, not
-  // 54 hinges of which 27 are held rigid.
+  // One body per joint, its psi hinge anchored on the twist pivot 4 mm above
+  // the joint (MjcfExport).
   softchain::testing::ScratchDirectory dir("chain_run_twist_mjcf");
   const std::string                    out = dir.file("out");
   const std::string                    prm = dir.file("finger.prm");
@@ -241,6 +240,7 @@ TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's free hinge
   REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
   std::ifstream     xml(out + "/chain/finger.xml");
   const std::string text((std::istreambuf_iterator<char>(xml)), {});
-  CHECK(softchain::testing::occurrences(text, "<body name=\"link") == 18);
+  CHECK(softchain::testing::occurrences(text, "<body name=\"link") == 9);
   CHECK(softchain::testing::occurrences(text, "<joint name=") == 27);
+  CHECK(softchain::testing::occurrences(text, "_psi\" axis=\"1 0 0\" pos=\"0 0.0040000000000000001 0\"") == 9);
 }

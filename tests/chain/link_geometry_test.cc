@@ -71,7 +71,7 @@ TEST_CASE("a chain with link geometry: closed-form joints, tip and tip frame")
   CHECK_THROWS_AS(two_links().with_link_geometry({U[0]}, U_T, rz(0)), std::invalid_argument);
 }
 
-TEST_CASE("LinkGeometry interpolates in pressure, holds beyond, and keeps twist offsets")
+TEST_CASE("LinkGeometry interpolates in pressure, holds beyond, and carries the twist pivots")
 {
   const double                                p1 = 4e4;
   std::vector<LinkGeometry::PointInPressure> joints;
@@ -88,15 +88,12 @@ TEST_CASE("LinkGeometry interpolates in pressure, holds beyond, and keeps twist 
   ChainPose       pose = half.rest_pose();
   half.update_pose(q, pose);
   CHECK((pose.tip_rotation - rz(0.05)).norm() < 1e-15);
-  // A twist joint 5 mm above each joint, moved 1 nm towards the base as
-  // JointTables makes it, rides with its joint.
-  const Eigen::Vector3d    below(-1e-9, 0.005, 0);
-  const KinematicChain     ordered({two_links().joint_centre(0) + below, two_links().joint_centre(0),
-                                    two_links().joint_centre(1) + below, two_links().joint_centre(1)},
-                                   two_links().tip());
-  const KinematicChain twisted = geometry.with_twist_joints({below, below}).at(p1, ordered);
-  CHECK((twisted.link_joint(2) - (U[1] + below)).norm() < 1e-17);
-  CHECK(twisted.link_joint(3) == U[1]);
+  // A twist axis 5 mm above each joint rides with its joint.
+  const Eigen::Vector3d up(0, 0.005, 0);
+  const KinematicChain  twisted = geometry.at(p1, two_links().with_twist_offsets({up, up}));
+  ChainPose             rest    = twisted.rest_pose();
+  CHECK((rest.twist_pivots[1] - (U[1] + up)).norm() < 1e-17);
+  CHECK(rest.joint_positions[1] == U[1]);
 }
 
 TEST_CASE("the equilibrium on stretched links: closed form under pressure, exact tangent under forces")

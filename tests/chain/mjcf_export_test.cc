@@ -35,7 +35,7 @@ namespace
   }
 
   // The uniform finger of the reduction's files with twist axes 4 mm above
-  // its joints: 9 twist joints and 9 bending joints.
+  // its joints.
   ChainModel twist_axis_finger(const softchain::testing::ScratchDirectory &dir)
   {
     softchain::chain::testing::UniformReduction r;
@@ -47,19 +47,17 @@ namespace
   }
 } // namespace
 
-TEST_CASE("a chain with twist axes exports the free hinges only: psi at S, theta and phi at J")
+TEST_CASE("a chain with twist axes exports each joint's psi hinge anchored on its twist pivot")
 {
   softchain::testing::ScratchDirectory dir("mjcf_twist");
   const ChainModel  model = twist_axis_finger(dir);
-  REQUIRE(model.chain().n_joints() == 18);
+  REQUIRE(model.chain().n_joints() == 9);
   const std::string xml = MjcfExport(model, {}).text();
-  CHECK(softchain::testing::occurrences(xml, "<body name=") == 18);
+  CHECK(softchain::testing::occurrences(xml, "<body name=") == 9);
   CHECK(softchain::testing::occurrences(xml, "<joint name=") == 27);
-  CHECK(softchain::testing::occurrences(xml, "_psi\" axis") == 9);
-  CHECK(xml.find("joint1_psi\"") != std::string::npos);
-  CHECK(xml.find("joint1_theta\"") == std::string::npos);
-  CHECK(xml.find("joint2_psi\"") == std::string::npos);
-  CHECK(xml.find("joint2_theta\"") != std::string::npos);
+  // psi turns about the axis 4 mm above the joint, theta and phi about it.
+  CHECK(softchain::testing::occurrences(xml, "_psi\" axis=\"1 0 0\" pos=\"0 0.0040000000000000001 0\"") == 9);
+  CHECK(softchain::testing::occurrences(xml, "_theta\" axis=\"0 1 0\" stiffness") == 9);
 }
 
 TEST_CASE("the MJCF has three hinges x, y, z per joint with the CSV stiffness and a pressure actuator")
@@ -215,15 +213,10 @@ TEST_CASE("MuJoCo comes to rest in the pose of a chain with twist axes")
   ChainEquilibrium      solver(model);
   const Equilibrium     e = solver.solve({p, {{tip, f}}});
   REQUIRE(e.converged);
-  const RestPose mujoco = mujoco_rest_pose(model, {}, p, f);
-  // The chain holds the missing hinges' axes with k = 1e6 x the axis' k, so
-  // they turn by 1e-6 of the free angles (<= 1 rad here): the free angles
-  // agree to 1e-6 rad, the tip (0.1 m of arm) to 1e-7 m.
-  Eigen::VectorXd free(27);
-  for (int i = 0; i < 9; ++i)
-    free.segment<3>(3 * i) << e.angles[6 * i], e.angles[6 * i + 4], e.angles[6 * i + 5];
-  CHECK((mujoco.angles - free).cwiseAbs().maxCoeff() < 1e-6);
-  CHECK((mujoco.tip - solver.pose().tip_position).norm() < 1e-7);
-  CHECK(free.cwiseAbs().maxCoeff() > 0.1); // far from linear
+  // MuJoCo's hinge anchors are the chain's pivots: the same pose to the
+  // tolerance of check_same_pose.
+  check_same_pose(mujoco_rest_pose(model, {}, p, f), e, solver.pose());
+  CHECK(e.angles.cwiseAbs().maxCoeff() > 0.1); // far from linear
+  CHECK(e.angles[0] != 0.0);                   // the twist pivots are used
 }
 #endif

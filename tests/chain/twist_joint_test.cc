@@ -1,11 +1,12 @@
 // A joint whose twist axis passes through S_i above its centre J_i: read
-// from the reduction's files as a twist joint at S_i and a bending joint at
-// J_i, and its equilibrium under a small tip force against the closed form
-// of a straight chain.
+// from the reduction's files as a joint that twists about S_i and bends
+// about J_i, its equilibrium under a small tip force against the closed form
+// of a straight chain, and its exact tangent against finite differences.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/stiffness_files.h>
 
 #include "../data/scratch_directory.h"
+#include "central_differences.h"
 #include "reduction_output.h"
 
 #include <catch2/catch.hpp>
@@ -52,7 +53,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("a joint with its own twist axis becomes a twist joint at S and a bending joint at J")
+TEST_CASE("a joint with its own twist axis twists about S and bends about J")
 {
   softchain::testing::ScratchDirectory dir("twist_joint");
   const StiffnessFiles files(dir.path().string(), "M2", 0.5);
@@ -60,30 +61,30 @@ TEST_CASE("a joint with its own twist axis becomes a twist joint at S and a bend
   const auto           r = three_joints(h);
   write_reduction(files, r);
   const ChainModel model = files.read_model("M2", tip, "value", true);
-  REQUIRE(model.chain().n_joints() == 6);
+  REQUIRE(model.chain().n_joints() == 3);
+  REQUIRE(model.chain().has_twist_offsets());
   for (int i = 0; i < 3; ++i)
     {
-      const double x = (i + 0.5) * r.a;
-      CHECK(model.is_twist_joint(2 * i));
-      CHECK_FALSE(model.is_twist_joint(2 * i + 1));
-      CHECK((model.chain().joint_centre(2 * i) - Eigen::Vector3d(x - 1e-9, h, 0)).norm() < 1e-15);
-      CHECK((model.chain().joint_centre(2 * i + 1) - Eigen::Vector3d(x, 0, 0)).norm() < 1e-15);
-      // The twist joint takes k_psi, the bending joint k_theta and k_phi;
-      // the other axes are rigid (1e6 x the axis' largest k).
-      CHECK(model.stiffness().joint(2 * i) == Eigen::Vector3d(r.k[0], 1e6 * r.k[1], 1e6 * r.k[2]));
-      CHECK(model.stiffness().joint(2 * i + 1) == Eigen::Vector3d(1e6 * r.k[0], r.k[1], r.k[2]));
+      CHECK(model.chain().joint_centre(i) == Eigen::Vector3d((i + 0.5) * r.a, 0, 0));
+      CHECK(model.chain().twist_offset(i) == Eigen::Vector3d(0, h, 0));
+      CHECK(model.stiffness().joint(i) == r.k);
     }
-  // J_p: psi's on the twist joint, theta's and phi's on the bending joint.
-  const Eigen::VectorXd jp = model.actuation().rest_torque_per_pascal();
-  CHECK(jp.segment<3>(0) == Eigen::Vector3d(r.jp[0], 0, 0));
-  CHECK(jp.segment<3>(3) == Eigen::Vector3d(0, r.jp[1], r.jp[2]));
+  // Turned by psi alone the joint's centre swings about its twist pivot S,
+  // h above it: c = S + R_x(psi) (0, -h, 0) = J + (0, h (1 - cos psi), -h sin psi).
+  ChainPose       pose = model.chain().rest_pose();
+  Eigen::VectorXd q    = Eigen::VectorXd::Zero(9);
+  q[0]                 = 0.3;
+  model.chain().update_pose(q, pose);
+  CHECK((pose.twist_pivots[0] - Eigen::Vector3d(0.5 * r.a, h, 0)).norm() < 1e-17);
+  CHECK((pose.joint_positions[0] - Eigen::Vector3d(0.5 * r.a, h * (1 - std::cos(0.3)), -h * std::sin(0.3)))
+          .norm() < 1e-17);
 
-  // Without twist axis columns a joint stays one spherical joint; so does
+  // Without twist axis columns every joint twists about its centre; so does
   // every joint when the twist axes are not asked for.
   write_reduction(files, three_joints(0.0));
-  CHECK(files.read_model("M2", tip, "value", true).chain().n_joints() == 3);
+  CHECK_FALSE(files.read_model("M2", tip, "value", true).chain().has_twist_offsets());
   write_reduction(files, r);
-  CHECK(files.read_model("M2", tip, "value", true, true, false).chain().n_joints() == 3);
+  CHECK_FALSE(files.read_model("M2", tip, "value", true, true, false).chain().has_twist_offsets());
 }
 
 TEST_CASE("a small tip force twists the chain about the joints' twist axes, in closed form")
@@ -91,7 +92,7 @@ TEST_CASE("a small tip force twists the chain about the joints' twist axes, in c
   softchain::testing::ScratchDirectory dir("twist_joint_force");
   const StiffnessFiles files(dir.path().string(), "M2", 0.5);
   // F = 1e-5 N turns the joints by <= 1e-5 rad: the first-order closed form
-  // holds to that relative size; the rigid axes (1e6 x k) add 1e-6.
+  // holds to that relative size.
   const double F = 1e-5;
   for (const double h : {0.0, 0.004, 0.009})
     {
@@ -105,4 +106,50 @@ TEST_CASE("a small tip force twists the chain about the joints' twist axes, in c
   // 6 mm, it cuts the twist's share of u_z by ((6 - 4) / 6)^2 = 1/9, here
   // from 37 % to 6 % of u_z.
   CHECK(closed_form_uz(three_joints(0.004), F) < 0.7 * closed_form_uz(three_joints(0.0), F));
+}
+
+TEST_CASE("with twist pivots the tangent is exact and the residual is the energy's gradient")
+{
+  // The chain_equilibrium_test.cc cases (soft joints, 1 N forces at and
+  // between the joints, angles up to 0.4 rad) with twist axes 3-9 mm above
+  // the joints and below them, and links shaped by the pressure: central
+  // differences with h = 1e-5 err by 1e-8 of |H| (tangent) and of |r|
+  // (gradient).
+  const int                    n = 5;
+  std::vector<Eigen::Vector3d> centres, offsets;
+  for (int i = 0; i < n; ++i)
+    {
+      centres.emplace_back((i + 0.5) * 0.01, 0.0, 0.0);
+      offsets.emplace_back(0.0, (i % 2 ? -1.0 : 1.0) * (0.003 + 0.0015 * i), 0.001 * i);
+    }
+  ChainModel model("twist pivots", KinematicChain(centres, {0.05, 0.004, 0}).with_twist_offsets(offsets),
+                   JointStiffness(std::vector<Eigen::Vector3d>(n, {0.03, 0.01, 0.02})),
+                   PressureActuation(Eigen::Vector3d(0.01, -0.02, 0.05).replicate(n, 1)));
+  ChainEquilibrium solver(model);
+  solver.set_load({0.5,
+                   {{{0.022, 0.002, -0.001}, {0.2, -1.0, 0.3}},
+                    {{0.05, 0.004, 0.0}, {-0.5, 0.1, 0.8}},
+                    {{0.037, -0.003, 0.002}, {0.0, 0.7, -0.6}}}});
+  Eigen::VectorXd q(3 * n);
+  for (int j = 0; j < q.size(); ++j)
+    q[j] = 0.4 * std::sin(2.3 * j + 1.0);
+  const Eigen::MatrixXd tangent    = solver.tangent(q);
+  const Eigen::MatrixXd difference = testing::central_differences(solver, q, 1e-5);
+  CHECK((tangent - difference).cwiseAbs().maxCoeff() < 1e-8 * tangent.cwiseAbs().maxCoeff());
+  const Eigen::VectorXd residual = solver.residual(q);
+  for (int j = 0; j < q.size(); ++j)
+    {
+      Eigen::VectorXd plus = q, minus = q;
+      plus[j] += 1e-5;
+      minus[j] -= 1e-5;
+      CHECK(std::abs((solver.energy(plus) - solver.energy(minus)) / 2e-5 - residual[j]) <
+            1e-8 * residual.cwiseAbs().maxCoeff());
+    }
+  // The pivots matter: the same chain about its joint centres has another tangent.
+  ChainModel       centred("centred", KinematicChain(centres, {0.05, 0.004, 0}), model.stiffness(),
+                           model.actuation());
+  ChainEquilibrium plain(centred);
+  plain.set_load({0.5, {{{0.05, 0.004, 0.0}, {-0.5, 0.1, 0.8}}}});
+  solver.set_load({0.5, {{{0.05, 0.004, 0.0}, {-0.5, 0.1, 0.8}}}});
+  CHECK((plain.tangent(q) - solver.tangent(q)).cwiseAbs().maxCoeff() > 1e-3 * tangent.cwiseAbs().maxCoeff());
 }

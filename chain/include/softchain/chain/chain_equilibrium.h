@@ -18,6 +18,14 @@
 // H has the block semiseparable form of ChainTangent, which solves the
 // Newton system in O(n).
 //
+// Twist pivots (KinematicChain::with_twist_offsets): psi of joint j turns
+// about an axis through s_j, not c_j. Then Q_{j,psi} = a_{j,psi} . M_j^s with
+// the moment about s_j, M_j^s = M_j + d_j x F_j (d_j = c_j - s_j, F_j the sum
+// of the loads distal to j), and in the formulas above the psi row takes
+// M_j^s and B_j^s = A_j^s - tr(A_j^s) I, A_j^s = A_j + d_j F_j^T, in place of
+// M_j and B_j: the derivation holds for any pivot of each angle, since the
+// difference of two points distal to a rotation does not depend on its pivot.
+//
 // Globalisation, so that bending through 180 deg and beyond converges from
 // rest: the Newton step is capped at max_step_angle per angle; where H is not
 // positive definite (post-buckling) it is shifted, H + mu I, which keeps the
@@ -91,6 +99,7 @@ namespace softchain::chain
 
     void   evaluate(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
+    Eigen::Vector3d twist_moment(int m) const;
     void   prepare_tangent();
     bool   converged() const;
     double relative_residual() const;
@@ -112,6 +121,7 @@ namespace softchain::chain
     ChainPose                    pose_;
     std::vector<Eigen::Vector3d> moment_;       // M_i
     std::vector<Eigen::Matrix3d> moment_gradient_; // B_i
+    std::vector<Eigen::Vector3d> distal_force_;    // F_i = sum of the loads distal to i
     Eigen::VectorXd              generalised_force_; // Q = J^T f
     Eigen::VectorXd              residual_;
     double                       residual_scale_ = 0.0;   // |K q| + |J_p p| + |Q|
@@ -119,6 +129,7 @@ namespace softchain::chain
     double                       energy_magnitude_ = 0.0; // sum of |terms| of U
     ChainTangent                 tangent_;
     Eigen::VectorXd              direction_;
+    Eigen::VectorXd              line_start_; // the line search's start
     bool                         shifted_ = false; // the last Newton step shifted H
   };
 } // namespace softchain::chain

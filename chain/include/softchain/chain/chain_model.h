@@ -28,6 +28,8 @@ namespace softchain::chain
     // The geometry under `pressure`: the links of the LinkGeometry if set,
     // else the reference one.
     KinematicChain           chain_at(double pressure) const;
+    // The same into `chain`, which must be a copy of chain() (no allocation).
+    void                     chain_at(double pressure, KinematicChain &chain) const;
     void                     set_link_geometry(LinkGeometry geometry);
     // The same model with rigid links between the reference centres.
     ChainModel               with_rigid_links() const;
@@ -35,18 +37,12 @@ namespace softchain::chain
     const JointStiffness    &stiffness() const { return stiffness_; }
     const PressureActuation &actuation() const { return actuation_; }
 
-    // A twist joint is the first of the pair a joint with its own twist axis
-    // becomes (StiffnessFiles): it carries only psi, on a point above the
-    // finger's joint, and is left out where the chain's joints are drawn.
-    void set_twist_joints(std::vector<bool> twist_joints);
-    bool is_twist_joint(int i) const { return !twist_joints_.empty() && twist_joints_[i]; }
 
   private:
     std::string       name_;
     KinematicChain    chain_;
     JointStiffness    stiffness_;
     PressureActuation actuation_;
-    std::vector<bool> twist_joints_; // empty: none
     std::optional<LinkGeometry> link_geometry_;
   };
 } // namespace softchain::chain

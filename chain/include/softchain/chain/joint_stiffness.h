@@ -30,6 +30,8 @@ namespace softchain::chain
 
     // diag(K) = (k_psi,0, k_theta,0, k_phi,0, ...) at pressure p.
     Eigen::VectorXd diagonal(double pressure) const;
+    // The same into k (sized 3n; no allocation).
+    void            diagonal(double pressure, Eigen::VectorXd &k) const;
 
   private:
     std::vector<Eigen::Vector3d> per_joint_;

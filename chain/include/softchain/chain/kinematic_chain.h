@@ -24,7 +24,16 @@
 // tip face's rotation in the last link's frame (identity by default).
 // The world axes of the three angles of joint i are the columns of
 //   A_i = R_{i-1} [ e_x,  Rx(psi) e_y,  Rx(psi) Ry(theta) e_z ]
-// so that dx/dq_{i,alpha} = a_{i,alpha} x (x - c_i) for points distal to i.
+// so that dx/dq_{i,alpha} = a_{i,alpha} x (x - p_{i,alpha}) for points distal
+// to i, the pivot p_{i,alpha} being c_i for theta and phi.
+//
+// Twist axes (with_twist_offsets). Joint i may twist about an axis of its
+// own: psi turns about a_psi through the twist pivot s_i, the point
+// U_i + o_i of the proximal link (o_i the offset of the twist axis point
+// S_i from J_i), while theta and phi turn about c_i:
+//   s_i = c_i^0 + R_{i-1} o_i,   c_i = s_i - R_{i-1} Rx(psi_i) o_i,
+// c_i^0 the centre c_i would have at psi_i = 0 (the recursion above). The
+// pivot of psi is p_{i,psi} = s_i; o_i = 0 is the spherical joint.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <vector>
@@ -35,6 +44,7 @@ namespace softchain::chain
   struct ChainPose
   {
     std::vector<Eigen::Vector3d> joint_positions; // c_i, world
+    std::vector<Eigen::Vector3d> twist_pivots;    // s_i, world (= c_i without twist offsets)
     std::vector<Eigen::Matrix3d> link_rotations;  // R_i
     std::vector<Eigen::Matrix3d> joint_axes;      // A_i (world axes as columns)
     Eigen::Vector3d              tip_position = Eigen::Vector3d::Zero();
@@ -60,8 +70,28 @@ namespace softchain::chain
     KinematicChain with_link_geometry(std::vector<Eigen::Vector3d> joints,
                                       const Eigen::Vector3d       &tip,
                                       const Eigen::Matrix3d       &tip_frame) const;
+    // The same in place, U_i = joint_at(i) (no allocation: the equilibrium
+    // sets the geometry of every load's pressure).
+    template <class JointAt>
+    void assign_link_geometry(const JointAt &joint_at, const Eigen::Vector3d &tip,
+                              const Eigen::Matrix3d &tip_frame)
+    {
+      for (int i = 0; i < n_joints(); ++i)
+        link_joints_[i] = joint_at(i);
+      link_tip_  = tip;
+      tip_frame_ = tip_frame;
+      check_link_order();
+    }
     const Eigen::Vector3d &link_joint(int i) const { return link_joints_[i]; }
     const Eigen::Vector3d &link_tip() const { return link_tip_; }
+
+    // The same chain whose joint i twists about the proximal link's x axis
+    // through its twist axis point J_i + offsets[i] (one finite offset per
+    // joint, else std::invalid_argument; the x part moves the point along
+    // the axis and changes nothing).
+    KinematicChain         with_twist_offsets(std::vector<Eigen::Vector3d> offsets) const;
+    const Eigen::Vector3d &twist_offset(int i) const { return twist_offsets_[i]; }
+    bool                   has_twist_offsets() const { return has_twist_offsets_; }
 
     // Link that carries the material point with reference position X: the
     // last joint i with J_i,x <= X_x, or -1 for the clamped base.
@@ -75,10 +105,14 @@ namespace softchain::chain
                                    const Eigen::Vector3d &X) const;
 
   private:
+    void check_link_order() const;
+
     std::vector<Eigen::Vector3d> joint_centres_;
     Eigen::Vector3d              tip_;
     std::vector<Eigen::Vector3d> link_joints_; // U_i
     Eigen::Vector3d              link_tip_;    // U_T
     Eigen::Matrix3d              tip_frame_ = Eigen::Matrix3d::Identity(); // Q_T
+    std::vector<Eigen::Vector3d> twist_offsets_; // o_i
+    bool                         has_twist_offsets_ = false;
   };
 } // namespace softchain::chain

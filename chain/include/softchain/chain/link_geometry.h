@@ -34,10 +34,8 @@ namespace softchain::chain
     // `reference` with the link geometry at `pressure`; std::invalid_argument
     // if the joint counts differ or the interpolated points are out of order.
     KinematicChain at(double pressure, const KinematicChain &reference) const;
-    // The same geometry for a chain whose joint i became the pair (twist
-    // joint at reference S_i, bending joint at J_i) (JointTables): the twist
-    // joint keeps its offset from its bending joint.
-    LinkGeometry with_twist_joints(const std::vector<Eigen::Vector3d> &offsets) const;
+    // The same into `chain`, a copy of the reference, without allocating.
+    void apply(double pressure, KinematicChain &chain) const;
 
   private:
     std::vector<PointInPressure> joints_;

@@ -5,7 +5,11 @@
 // rotations about their axes in the body's current frame, so the body's
 // rotation is Rx(q1) Ry(q2) Rz(q3) = E(psi, theta, phi), the chain's Euler
 // convention, and the hinge springs -k q give exactly the energy
-// 1/2 q^T K q of the diagonal K. Bodies sit at the joint centres, each link
+// 1/2 q^T K q of the diagonal K. A joint with a twist axis of its own puts
+// its psi hinge's anchor (`pos`) on the twist pivot: MuJoCo turns each hinge
+// about its anchor in the body's current frame, as the chain does
+// (KinematicChain). Bodies sit at the joint centres (of the link geometry
+// at p*), each link
 // is a capsule from its joint to the next joint (the last one to the tip,
 // marked by the site "tip"). Pressure is one actuator: a fixed tendon with
 // the rest J_p as joint coefficients, driven by a motor whose control is the

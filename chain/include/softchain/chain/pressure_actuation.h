@@ -26,6 +26,8 @@ namespace softchain::chain
 
     // J_p(p) p.
     Eigen::VectorXd torque(double pressure) const;
+    // The same into tau (sized 3n; no allocation).
+    void            torque(double pressure, Eigen::VectorXd &tau) const;
 
   private:
     Eigen::VectorXd              rest_;

@@ -49,9 +49,9 @@ namespace softchain::chain
     // pressure tables. A k
     // that is NaN or not positive at some joints holds them rigid
     // (`rigid_where_missing`) or is an InputError.
-    // With `twist_axes`, a joint whose twist axis point S_i (columns Sx, Sy,
-    // Sz) is not J_i becomes a twist joint at S_i and a bending joint at J_i
-    // (see with_twist_joints in the source): 2n joints.
+    // With `twist_axes`, joint i twists about the axis through its twist
+    // axis point S_i (columns Sx, Sy, Sz; J_i without them) and bends about
+    // J_i (KinematicChain::with_twist_offsets).
     ChainModel read_model(const std::string &name, const Eigen::Vector3d &tip,
                           const std::string &column, bool in_pressure,
                           bool rigid_where_missing = true, bool twist_axes = true) const;
