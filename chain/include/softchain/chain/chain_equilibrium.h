@@ -71,8 +71,9 @@ namespace softchain::chain
     // Keeps a reference to `model`, which must outlive the solver.
     explicit ChainEquilibrium(const ChainModel &model, EquilibriumSettings settings = {});
 
-    // Equilibrium from rest, or from `start` (warm start, e.g. the previous
-    // pressure of a sweep).
+    // Equilibrium from the pressure's own equilibrium K q = J_p p (linear:
+    // q = K^-1 J_p p, the answer when there are no forces), or from `start`
+    // (warm start, e.g. the previous pressure of a sweep).
     Equilibrium solve(const ChainLoad &load);
     Equilibrium solve(const ChainLoad &load, const Eigen::VectorXd &start);
 
