@@ -25,6 +25,9 @@ namespace softchain::reduction
       section.declare("Pressure roles", "pressure", "sample roles feeding k_phi");
       section.declare("Lateral roles", "lateral", "sample roles feeding k_theta");
       section.declare("Torsion roles", "torsion", "sample roles feeding k_psi");
+      section.declare("Bending roles", "bending",
+                      "sample roles (in-plane tip forces) feeding k_phi of the joints that the "
+                      "pressure does not load");
       section.declare("Plots", "true", "PNG plots via gnuplot when it is installed");
     }
 
@@ -91,6 +94,7 @@ namespace softchain::reduction
     p.pressure_roles = section.get_list("Pressure roles");
     p.lateral_roles  = section.get_list("Lateral roles");
     p.torsion_roles  = section.get_list("Torsion roles");
+    p.bending_roles  = section.get_list("Bending roles");
     p.plots          = section.get_bool("Plots");
     return p;
   }

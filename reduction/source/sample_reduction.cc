@@ -62,9 +62,8 @@ namespace softchain::reduction
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
         const bool carries_torque = joints_[i].torque.norm() > 1e-6 * largest_torque;
-        joints_[i].angles = carries_torque ?
-                              data::angles_from_rotation(parent.transpose() * frames[i].rotation) :
-                              data::JointAngles{};
+        joints_[i].free_angles = data::angles_from_rotation(parent.transpose() * frames[i].rotation);
+        joints_[i].angles      = carries_torque ? joints_[i].free_angles : data::JointAngles{};
         if (carries_torque)
           parent = frames[i].rotation;
         link_rotations.push_back(parent);

@@ -33,6 +33,8 @@ namespace softchain::reduction
                                            std::size_t                         n_joints)
     : roles_{{parameters.torsion_roles, parameters.lateral_roles, parameters.pressure_roles}}
     , threshold_(parameters.rotation_threshold)
+    , bending_(samples, parameters.bending_roles, parameters.pressure_roles, parameters.rotation_threshold)
+    , phi_from_bending_(n_joints, false)
   {
     for (std::size_t joint = 0; joint < n_joints; ++joint)
       joints_.push_back(extract_joint(samples, joint));
@@ -94,6 +96,13 @@ namespace softchain::reduction
     stiffness.n_used[axis]          = static_cast<int>(usable.size());
     stiffness.at_largest_load(axis) = largest ? single(*largest, joint, axis) : no_value;
     stiffness.fit(axis)             = fit_over(usable, joint, axis);
+    if (axis == 2 && usable.empty() && bending_.n_used(joint) > 0)
+      {
+        phi_from_bending_[joint]        = true;
+        stiffness.n_used[axis]          = bending_.n_used(joint);
+        stiffness.at_largest_load(axis) = bending_.at_largest_load(joint);
+        stiffness.fit(axis)             = bending_.fit(joint);
+      }
   }
 
   double StiffnessExtraction::fit_over(const std::vector<const SampleReduction *> &samples,

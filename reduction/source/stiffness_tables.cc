@@ -67,13 +67,19 @@ namespace softchain::reduction
     return table;
   }
 
+  // The pressure samples' k_phi, then for the joints that no pressure sample
+  // loads the bending samples' per pressure (BendingForceStiffness).
   CsvTable StiffnessTables::kphi_vs_pressure() const
   {
     CsvTable table({"pressure", "joint", "k_phi"});
+    const StiffnessExtraction &extraction = reduction_.stiffness();
     for (const auto *sample : pressure_samples())
       for (std::size_t i = 0; i < sample->joints().size(); ++i)
-        table.add_row(std::vector<double>{sample->pressure(), double(i + 1),
-                                          reduction_.stiffness().single(*sample, i, 2)});
+        table.add_row(std::vector<double>{sample->pressure(), double(i + 1), extraction.single(*sample, i, 2)});
+    for (std::size_t i = 0; i < reduction_.geometry().n_joints(); ++i)
+      if (extraction.phi_from_bending(i))
+        for (const auto &[pressure, k] : extraction.bending().fit_by_pressure(i))
+          table.add_row(std::vector<double>{pressure, double(i + 1), k});
     return table;
   }
 

@@ -20,9 +20,12 @@ namespace softchain::fem
                       "point of its pressure");
       section.declare("Lateral tip forces", "", "N along +z at the force point (role lateral)");
       section.declare("Torsion couples", "", "N, two opposite forces along y (role torsion)");
+      section.declare("Bending tip forces", "",
+                      "N along -y at the force point (role bending): they give k_phi to the "
+                      "joints that the pressure does not load (e.g. in the solid base fill)");
       section.declare("Force sample pressures", "0",
-                      "Pa: the lateral and torsion samples are made at each of these "
-                      "pressures, for k_theta(p) and k_psi(p)");
+                      "Pa: the lateral, torsion and bending samples are made at each of "
+                      "these pressures, for k_theta(p), k_psi(p) and k_phi(p)");
       section.declare("Torsion arm", "0", "m, half the z distance of the couple's points; "
                                           "0: a quarter of the tip face width");
       section.declare("Force point", "", "x,y,z; empty: centre of the tip face");
@@ -140,6 +143,8 @@ namespace softchain::fem
                                 "torsion"},
                                label("torsion", f, "N", p),
                                ""});
+          for (const double f : s.get_double_list("Bending tip forces"))
+            samples.push_back({{p, {{at, {0, -f, 0}}}, "bending"}, label("bending", f, "N", p), ""});
         }
       const auto entries = split(s.get("Validation samples"), ';');
       for (std::size_t k = 0; k < entries.size(); ++k)

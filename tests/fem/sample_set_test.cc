@@ -19,12 +19,21 @@ TEST_CASE("force samples are made at each force sample pressure, one chain per r
                          "  set Pressure sweep = 1e4, 2e4\n"
                          "  set Lateral tip forces = 0.1, 0.3\n"
                          "  set Torsion couples = 0.2\n"
+                         "  set Bending tip forces = 0.25\n"
                          "  set Force sample pressures = 0, 2e4\n"
                          "end\n";
   const SampleSet set = SampleSet::read(data::PrmFile::read(path), {{0.08, 0, 0}, 0.016}, "h");
-  // 2 pressures + (2 lateral + 1 torsion) x 2 pressures.
-  REQUIRE(set.samples.size() == 8);
-  int lateral_at_pressure = 0;
+  // 2 pressures + (2 lateral + 1 torsion + 1 bending) x 2 pressures.
+  REQUIRE(set.samples.size() == 10);
+  int lateral_at_pressure = 0, bending = 0;
+  for (const Sample &s : set.samples)
+    if (s.actuation.role == "bending")
+      {
+        ++bending;
+        REQUIRE(s.actuation.point_forces.size() == 1);
+        CHECK(s.actuation.point_forces[0].force == data::Point3{0, -0.25, 0}); // down, in the bending plane
+      }
+  CHECK(bending == 2);
   for (const Sample &s : set.samples)
     if (s.actuation.role == "lateral" && s.actuation.pressure == 2e4)
       {
@@ -34,8 +43,8 @@ TEST_CASE("force samples are made at each force sample pressure, one chain per r
         CHECK(s.actuation.point_forces[0].force[2] > 0);
       }
   CHECK(lateral_at_pressure == 2);
-  // Chains: pressure; lateral and torsion at p = 0; lateral and torsion at 20 kPa.
-  CHECK(set.chains.size() == 5);
+  // Chains: pressure; lateral, torsion and bending at p = 0 and at 20 kPa.
+  CHECK(set.chains.size() == 7);
   for (const auto &chain : set.chains)
     for (const std::size_t k : chain)
       {

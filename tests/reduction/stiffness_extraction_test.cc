@@ -28,6 +28,7 @@ namespace
     p.pressure_roles     = {"pressure"};
     p.lateral_roles      = {"lateral"};
     p.torsion_roles      = {"torsion"};
+    p.bending_roles      = {"bending"};
     return p;
   }
 
@@ -144,4 +145,52 @@ TEST_CASE("a joint that transmits no torque passes its rotation on to the next j
   CHECK(joints[1].angles.phi == Approx(15 * mm / R).epsilon(1e-10));
   CHECK(joints[2].angles.phi == Approx(10 * mm / R).epsilon(1e-10));
   CHECK(std::isnan(r.stiffness().joints()[0].at_largest_load(2))); // held rigid by the chain
+}
+
+TEST_CASE("a joint no pressure sample loads takes k_phi from the bending samples' increments")
+{
+  // Joint 1 (x = 5 mm) in the solid base fill: no pressure torque. The
+  // pressure sample at 20 kPa bends the finger onto an arc of radius 0.4 m,
+  // a bending sample at the same pressure (a tip force down) onto 0.25 m.
+  // Joint 1's slab (paper placement, b = a/2, symmetric about x_1) turns by
+  // x_1 / R, so its increment is x_1 (1/0.25 - 1/0.4) whatever the pressure
+  // sample passed on to joint 2.
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50), 15);
+  data::SampleRecord    loaded = bent(finger, 2e4, 0.25, "bending");
+  loaded.actuation.point_forces  = {{{50 * mm, 0, 0}, {0, -0.2, 0}}};
+  loaded.force_points_deformed   = {loaded.x.back()};
+  const MethodReduction r        = reduce(finger, {bent(finger, 2e4, 0.4), loaded});
+  const JointResult    &base     = r.samples()[0].joints()[0];
+  const JointResult    &bending  = r.samples()[1].joints()[0];
+  // The pressure sample: no torque at joint 1, its turn passed on.
+  CHECK(base.angles.phi == 0.0);
+  CHECK(base.free_angles.phi == Approx(5 * mm / 0.4).epsilon(1e-12));
+  const double increment = 5 * mm * (1 / 0.25 - 1 / 0.4);
+  CHECK(bending.angles.phi - base.free_angles.phi == Approx(increment).epsilon(1e-12));
+  // k_phi of joint 1 from that increment; every other joint from pressure.
+  const auto &k = r.stiffness();
+  REQUIRE(k.phi_from_bending(0));
+  CHECK(k.joints()[0].n_used[2] == 1);
+  CHECK(k.joints()[0].at_largest_load(2) == Approx((bending.torque(2) - base.torque(2)) / increment).epsilon(1e-10));
+  CHECK(k.joints()[0].fit(2) == Approx(k.joints()[0].at_largest_load(2)).epsilon(1e-14));
+  CHECK(bending.torque(2) != 0.0);
+  for (std::size_t j = 1; j < k.joints().size(); ++j)
+    CHECK_FALSE(k.phi_from_bending(j));
+  // The k_phi(p) table gets joint 1's row at the bending samples' pressure.
+  const data::CsvTable table = StiffnessTables(r).kphi_vs_pressure();
+  int                  rows  = 0;
+  for (std::size_t row = 0; row < table.n_rows(); ++row)
+    if (table.number(row, "joint") == 1 && !std::isnan(table.number(row, "k_phi")))
+      {
+        ++rows;
+        CHECK(table.number(row, "pressure") == 2e4);
+        CHECK(table.number(row, "k_phi") == Approx(k.joints()[0].fit(2)).epsilon(1e-14));
+      }
+  CHECK(rows == 1);
+  // Without a pressure-only state at its pressure a bending sample gives nothing.
+  data::SampleRecord elsewhere = loaded;
+  elsewhere.actuation.pressure = 3e4;
+  const MethodReduction alone  = reduce(finger, {bent(finger, 2e4, 0.4), elsewhere});
+  CHECK_FALSE(alone.stiffness().phi_from_bending(0));
+  CHECK(alone.stiffness().bending().n_without_base() == 1);
 }

@@ -105,7 +105,8 @@ namespace softchain::data
     double                  pressure = 0.0; // Pa
     std::vector<PointForce> point_forces;
     // What the sample is for: "pressure" (k_phi), "lateral" (k_theta),
-    // "torsion" (k_psi), "validation" (never used for extraction),
+    // "torsion" (k_psi), "bending" (k_phi of the joints the pressure does not
+    // load), "validation" (never used for extraction),
     // "protocol inflation" and "protocol" (the prescribed-motion protocol:
     // its inflated state and its tip motions), or a user's name.
     std::string role;

@@ -40,6 +40,7 @@ namespace softchain::reduction
     std::vector<std::string>    pressure_roles;           // feed k_phi
     std::vector<std::string>    lateral_roles;            // feed k_theta
     std::vector<std::string>    torsion_roles;            // feed k_psi
+    std::vector<std::string>    bending_roles;            // feed k_phi where no pressure does
     bool                        plots = true;
 
     // Parses and checks "subsection Reduction" of `file`; throws

@@ -18,6 +18,9 @@ namespace softchain::reduction
   struct JointResult
   {
     data::JointAngles angles;
+    // The angles from the last torque-carrying frame even where this joint
+    // carries none (`angles` are then 0, passed on to the next joint).
+    data::JointAngles free_angles;
     Eigen::Vector3d   torque;           // N m, joint frame (x: psi, y: theta, z: phi)
     Eigen::Vector3d   pressure_torque;  // J_p,i: N m per Pa, joint frame
     Eigen::Vector3d   stretches;        // principal stretches (M2), NaN for M1

@@ -11,6 +11,9 @@
 //                        then by force_norm;
 //   fit:                 least squares over the usable samples,
 //                        k = sum(tau angle) / sum(angle^2).
+// A joint that no pressure sample loads (no usable k_phi) takes its k_phi
+// from the in-plane tip force samples (BendingForceStiffness), if any.
+#include <softchain/reduction/bending_force_stiffness.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
 
@@ -38,6 +41,11 @@ namespace softchain::reduction
                         const ReductionParameters &parameters, std::size_t n_joints);
 
     const std::vector<JointStiffness> &joints() const { return joints_; }
+    // k_phi from the in-plane tip force samples, for the joints that no
+    // pressure sample loads.
+    const BendingForceStiffness &bending() const { return bending_; }
+    // Does joint i take its k_phi from the bending samples?
+    bool phi_from_bending(std::size_t joint) const { return phi_from_bending_[joint]; }
     // Number of (sample, joint, axis) rotations below the threshold.
     int n_below_threshold() const { return n_below_threshold_; }
     // tau / angle of one sample, NaN below the threshold.
@@ -56,6 +64,8 @@ namespace softchain::reduction
 
     std::array<std::vector<std::string>, 3> roles_;
     double                                  threshold_;
+    BendingForceStiffness                   bending_;
+    std::vector<bool>                       phi_from_bending_;
     std::vector<JointStiffness>             joints_;
     int                                     n_below_threshold_ = 0;
   };
