@@ -18,6 +18,7 @@ sed -e "s/^\( *set Name *=\).*/\1 my_finger/" \
     -e "s/^\( *set Pressure sweep *=\).*/\1 5e3, 10e3/" \
     -e "s/^\( *set Lateral tip forces *=\).*/\1 0.1/" \
     -e "s/^\( *set Torsion couples *=\).*/\1 0.1/" \
+    -e "s/^\( *set Bending tip forces *=\).*/\1 0.1/" \
     -e "s/^\( *set Force sample pressures *=\).*/\1 0/" \
     -e "s/^\( *set Validation samples *=\).*/\1 7.5e3/" \
     -e "s/^\( *set Tip angle *=\).*/\1 0/" \
