@@ -19,4 +19,19 @@ namespace softchain::chain::testing
       }
     return difference;
   }
+
+  // Central differences of the energy: the reference the residual (its
+  // gradient) is checked against, one derivative lower.
+  inline Eigen::VectorXd energy_gradient(ChainEquilibrium &solver, const Eigen::VectorXd &q, const double h)
+  {
+    Eigen::VectorXd gradient(q.size());
+    for (Eigen::Index j = 0; j < q.size(); ++j)
+      {
+        Eigen::VectorXd plus = q, minus = q;
+        plus[j] += h;
+        minus[j] -= h;
+        gradient[j] = (solver.energy(plus) - solver.energy(minus)) / (2 * h);
+      }
+    return gradient;
+  }
 } // namespace softchain::chain::testing

@@ -193,15 +193,8 @@ TEST_CASE("the residual is the gradient of the energy")
   for (int j = 0; j < q.size(); ++j)
     q[j] = 0.5 * std::cos(1.3 * j);
   const Eigen::VectorXd residual = solver.residual(q);
-  const double          h        = 1e-5;
-  for (int j = 0; j < q.size(); ++j)
-    {
-      Eigen::VectorXd plus = q, minus = q;
-      plus[j] += h;
-      minus[j] -= h;
-      const double derivative = (solver.energy(plus) - solver.energy(minus)) / (2 * h);
-      CHECK(std::abs(derivative - residual[j]) < 1e-8 * residual.cwiseAbs().maxCoeff());
-    }
+  CHECK((testing::energy_gradient(solver, q, 1e-5) - residual).cwiseAbs().maxCoeff() <
+        1e-8 * residual.cwiseAbs().maxCoeff());
 }
 
 TEST_CASE("a load the chain cannot equilibrate is a failure with its reason, not a pose")
