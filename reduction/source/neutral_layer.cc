@@ -146,10 +146,10 @@ namespace softchain::reduction
     text.precision(3);
     if (measured_)
       text << "joints on the layer at y = " << 1e3 * height_ << " mm that rigid links follow best, "
-           << "measured on " << n_samples_ << " bending sample(s) (rms joint position error there "
+           << "measured on " << n_samples_ << " pressure sample(s) (rms joint position error there "
            << 1e3 * residual_ << " mm)";
     else
-      text << "no bending sample: joints at the body's centroid height y = " << 1e3 * height_
+      text << "no pressure sample: joints at the body's centroid height y = " << 1e3 * height_
            << " mm";
     return text.str();
   }

@@ -14,7 +14,7 @@ namespace softchain::reduction
       section.declare("Joint placement", "strain-limiting layer",
                       "strain-limiting layer | paper (bounding-box centres, Sec. III-C)");
       section.declare("Joint height", "auto",
-                      "y of the strain-limiting layer [m]; auto: fitted to the bending samples");
+                      "y of the strain-limiting layer [m]; auto: fitted to the pressure samples");
       section.declare("Twist axis offset", "auto",
                       "height [m] of the joints' twist axis above them; auto: fitted to the "
                       "torsion samples");

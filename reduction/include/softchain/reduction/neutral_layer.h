@@ -13,12 +13,12 @@
 // by e_k(y) = sum_{i<k} (R_i D_i - d_i(y)), and the tip face's centroid T,
 // which its last link carries from T_0, by
 //   e_T(y) = e_n(y) + R_n (T_0 - J_n,0) - (T - x(J_n,0));
-// over the bending samples s
+// over the pressure samples s (p != 0)
 //   E(y) = sum_s (sum_k |e_k,s(y)|^2 + |e_T,s(y)|^2)
 // is evaluated at 64 heights over the body's height, from the bottom up
 // while every joint at that height lies in the body (the bottom layer below
 // the cavity); y_n is its smallest value, refined by the parabola through it
-// and its neighbours. Without a bending sample, or when E does not change
+// and its neighbours. Without a pressure sample, or when E does not change
 // with y (no bending), y_n is the height of the body's centroid (the neutral
 // axis of a homogeneous beam).
 #include <softchain/data/actuation_database.h>
