@@ -226,9 +226,8 @@ namespace softchain::chain
   // bend the finger from.
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load)
   {
-    model_.stiffness().diagonal(load.pressure, stiffness_);
-    model_.actuation().torque(load.pressure, pressure_torque_);
-    return solve(load, pressure_torque_.cwiseQuotient(stiffness_));
+    set_load(load);
+    return iterate(pressure_torque_.cwiseQuotient(stiffness_));
   }
 
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load, const Eigen::VectorXd &start)
@@ -236,6 +235,12 @@ namespace softchain::chain
     if (start.size() != model_.chain().n_angles() || !start.allFinite())
       throw std::invalid_argument("ChainEquilibrium: start needs 3 finite angles per joint");
     set_load(load);
+    return iterate(start);
+  }
+
+  // Newton from `start` under the load of the last set_load.
+  Equilibrium ChainEquilibrium::iterate(const Eigen::VectorXd &start)
+  {
     Equilibrium result;
     result.angles = start;
     evaluate(result.angles);

@@ -98,6 +98,7 @@ namespace softchain::chain
       Eigen::Vector3d force;
     };
 
+    Equilibrium iterate(const Eigen::VectorXd &start);
     void   evaluate(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
     Eigen::Vector3d twist_moment(int m) const;
