@@ -28,6 +28,11 @@ namespace softchain::reduction
       section.declare("Bending roles", "bending",
                       "sample roles (in-plane tip forces) feeding k_phi of the joints that the "
                       "pressure does not load");
+      section.declare("Force samples per fit", "2",
+                      "k_psi(p), k_theta(p) and the bending samples' k_phi(p) are fitted to the "
+                      "lightest this many force samples per pressure that turn the joint "
+                      "measurably (the chain's springs are linear about the pressure-only "
+                      "state); 0: all");
       section.declare("Plots", "true", "PNG plots via gnuplot when it is installed");
     }
 
@@ -95,6 +100,8 @@ namespace softchain::reduction
     p.lateral_roles  = section.get_list("Lateral roles");
     p.torsion_roles  = section.get_list("Torsion roles");
     p.bending_roles  = section.get_list("Bending roles");
+    p.force_samples_per_fit = section.get_integer("Force samples per fit");
+    section.require(p.force_samples_per_fit >= 0, "Force samples per fit", "must be >= 0");
     p.plots          = section.get_bool("Plots");
     return p;
   }

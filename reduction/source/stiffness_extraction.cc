@@ -33,9 +33,14 @@ namespace softchain::reduction
                                            std::size_t                         n_joints)
     : roles_{{parameters.torsion_roles, parameters.lateral_roles, parameters.pressure_roles}}
     , threshold_(parameters.rotation_threshold)
-    , bending_(samples, parameters.bending_roles, parameters.pressure_roles, parameters.rotation_threshold)
     , phi_from_bending_(n_joints, false)
   {
+    const std::array<const std::vector<std::string> *, 3> force_roles{
+      {&parameters.torsion_roles, &parameters.lateral_roles, &parameters.bending_roles}};
+    for (int axis = 0; axis < 3; ++axis)
+      force_increments_.emplace_back(samples, *force_roles[axis], parameters.pressure_roles, axis,
+                                     parameters.rotation_threshold,
+                                     parameters.force_samples_per_fit);
     for (std::size_t joint = 0; joint < n_joints; ++joint)
       joints_.push_back(extract_joint(samples, joint));
   }
@@ -96,12 +101,13 @@ namespace softchain::reduction
     stiffness.n_used[axis]          = static_cast<int>(usable.size());
     stiffness.at_largest_load(axis) = largest ? single(*largest, joint, axis) : no_value;
     stiffness.fit(axis)             = fit_over(usable, joint, axis);
-    if (axis == 2 && usable.empty() && bending_.n_used(joint) > 0)
+    const ForceIncrementStiffness &bending = force_increments_[2];
+    if (axis == 2 && usable.empty() && bending.n_used(joint) > 0)
       {
         phi_from_bending_[joint]        = true;
-        stiffness.n_used[axis]          = bending_.n_used(joint);
-        stiffness.at_largest_load(axis) = bending_.at_largest_load(joint);
-        stiffness.fit(axis)             = bending_.fit(joint);
+        stiffness.n_used[axis]          = bending.n_used(joint);
+        stiffness.at_largest_load(axis) = bending.at_largest_load(joint);
+        stiffness.fit(axis)             = bending.fit(joint);
       }
   }
 

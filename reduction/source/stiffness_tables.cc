@@ -2,6 +2,7 @@
 #include <softchain/reduction/stiffness_tables.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace softchain::reduction
@@ -68,7 +69,7 @@ namespace softchain::reduction
   }
 
   // The pressure samples' k_phi, then for the joints that no pressure sample
-  // loads the bending samples' per pressure (BendingForceStiffness).
+  // loads the bending samples' per pressure (ForceIncrementStiffness).
   CsvTable StiffnessTables::kphi_vs_pressure() const
   {
     CsvTable table({"pressure", "joint", "k_phi"});
@@ -78,22 +79,26 @@ namespace softchain::reduction
         table.add_row(std::vector<double>{sample->pressure(), double(i + 1), extraction.single(*sample, i, 2)});
     for (std::size_t i = 0; i < reduction_.geometry().n_joints(); ++i)
       if (extraction.phi_from_bending(i))
-        for (const auto &[pressure, k] : extraction.bending().fit_by_pressure(i))
-          table.add_row(std::vector<double>{pressure, double(i + 1), k});
+        for (const auto &[pressure, k] : extraction.force_increments(2).fit_by_pressure(i))
+          if (!std::isnan(k))
+            table.add_row(std::vector<double>{pressure, double(i + 1), k});
     return table;
   }
 
+  // k_psi(p) or k_theta(p): per pressure of the force samples, the fit to
+  // their increments over the pressure-only state (ForceIncrementStiffness).
   CsvTable StiffnessTables::k_vs_pressure(int axis) const
   {
-    const StiffnessExtraction &extraction = reduction_.stiffness();
-    std::map<double, std::vector<const SampleReduction *>> by_pressure;
-    for (const auto &sample : reduction_.samples())
-      if (extraction.feeds(sample, axis))
-        by_pressure[sample.pressure()].push_back(&sample);
+    const ForceIncrementStiffness &increments = reduction_.stiffness().force_increments(axis);
+    const std::size_t              n_joints   = reduction_.geometry().n_joints();
+    std::vector<std::map<double, double>> k_of_joint;
+    for (std::size_t i = 0; i < n_joints; ++i)
+      k_of_joint.push_back(increments.fit_by_pressure(i));
     CsvTable table({"pressure", "joint", axis == 0 ? "k_psi" : "k_theta"});
-    for (const auto &[pressure, group] : by_pressure)
-      for (std::size_t i = 0; i < reduction_.geometry().n_joints(); ++i)
-        table.add_row(std::vector<double>{pressure, double(i + 1), extraction.fit_over(group, i, axis)});
+    if (n_joints > 0)
+      for (const auto &row : k_of_joint[0])
+        for (std::size_t i = 0; i < n_joints; ++i)
+          table.add_row(std::vector<double>{row.first, double(i + 1), k_of_joint[i].at(row.first)});
     return table;
   }
 

@@ -29,7 +29,9 @@ namespace softchain::fem
       section.declare("Torsion arm", "0", "m, half the z distance of the couple's points; "
                                           "0: a quarter of the tip face width");
       section.declare("Force point", "", "x,y,z; empty: centre of the tip face");
-      section.declare("Validation samples", "", "p : point : force [: point : force] ; ...");
+      section.declare("Validation samples", "",
+                      "p : point : force [: point : force] ; ...; a point is x,y,z, tip (the "
+                      "force point) or tip+arm, tip-arm (the torsion couple's points)");
       section.declare("Sample groups", "1", "MPI sample groups solving samples in parallel");
       section.declare("Continuation", "true", "start each sample from its converged neighbour");
     }
@@ -83,9 +85,22 @@ namespace softchain::fem
       return text.str();
     }
 
+    // A validation sample's point: "tip" (the force point), "tip+arm" and
+    // "tip-arm" (the torsion couple's points, the force point moved by the
+    // torsion arm along +z and -z) or x,y,z.
+    data::Point3 validation_point(const std::string &text, const data::Point3 &tip,
+                                  const double arm, const std::string &where)
+    {
+      if (text == "tip")
+        return tip;
+      if (text == "tip+arm" || text == "tip-arm")
+        return {tip[0], tip[1], tip[2] + (text == "tip+arm" ? arm : -arm)};
+      return triple(text, where);
+    }
+
     // One validation entry "p : point : force [: point : force ...]".
     data::Actuation validation(const std::string &entry, const data::Point3 &tip,
-                               const std::string &where)
+                               const double arm, const std::string &where)
     {
       const auto fields = split(entry, ':');
       if (fields.size() % 2 == 0)
@@ -95,7 +110,7 @@ namespace softchain::fem
       a.role     = "validation";
       a.pressure = number(fields[0], where);
       for (std::size_t k = 1; k < fields.size(); k += 2)
-        a.point_forces.push_back({fields[k] == "tip" ? tip : triple(fields[k], where),
+        a.point_forces.push_back({validation_point(fields[k], tip, arm, where),
                                   triple(fields[k + 1], where)});
       return a;
     }
@@ -152,7 +167,7 @@ namespace softchain::fem
           {
             const std::string name = "validation " + std::to_string(k + 1);
             samples.push_back(
-              {validation(entries[k], at, s.describe("Validation samples") + ", sample '" + name + "'"),
+              {validation(entries[k], at, arm, s.describe("Validation samples") + ", sample '" + name + "'"),
                name, ""});
           }
       return samples;

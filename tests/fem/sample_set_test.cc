@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <fstream>
 
 using namespace softchain;
@@ -51,4 +52,29 @@ TEST_CASE("force samples are made at each force sample pressure, one chain per r
         const data::Actuation &a = set.samples[k].actuation;
         CHECK((a.role == "pressure" || a.pressure == set.samples[chain.back()].actuation.pressure));
       }
+}
+
+TEST_CASE("a validation sample can load the torsion couple's points by name")
+{
+  const testing::ScratchDirectory scratch("sample_set_test");
+  const std::string               path = scratch.file("validation.prm");
+  std::ofstream(path) << "subsection Samples\n"
+                         "  set Torsion couples = 0.2\n"
+                         "  set Validation samples = 2e4 : tip+arm : 0,0.3,0 : tip-arm : 0,-0.3,0\n"
+                         "end\n";
+  // Tip face centred at x = 0.08, 16 mm wide: the default arm is 4 mm.
+  const SampleSet set = SampleSet::read(data::PrmFile::read(path), {{0.08, 0, 0}, 0.016}, "h");
+  const auto validation = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
+    return s.actuation.role == "validation";
+  });
+  const auto torsion = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
+    return s.actuation.role == "torsion";
+  });
+  REQUIRE(validation != set.samples.end());
+  REQUIRE(torsion != set.samples.end());
+  REQUIRE(validation->actuation.point_forces.size() == 2);
+  for (int k = 0; k < 2; ++k)
+    CHECK(validation->actuation.point_forces[k].point == torsion->actuation.point_forces[k].point);
+  CHECK(validation->actuation.point_forces[0].point == data::Point3{0.08, 0, 0.004});
+  CHECK(validation->actuation.point_forces[1].force == data::Point3{0, -0.3, 0});
 }

@@ -44,10 +44,11 @@ namespace
     return s;
   }
 
-  MethodReduction reduce(const SyntheticFinger &finger, const std::vector<data::SampleRecord> &s)
+  MethodReduction reduce(const SyntheticFinger &finger, const std::vector<data::SampleRecord> &s,
+                         const ReductionParameters &p = parameters())
   {
     const JointLayout layout(finger.mesh.X, a, 0, "synthetic");
-    return MethodReduction(RotationMethod::affine_fit, 0.5, parameters(),
+    return MethodReduction(RotationMethod::affine_fit, 0.5, p,
                            JointGeometry(layout, finger.mesh, 0.5 * a), finger.mesh, s);
   }
 } // namespace
@@ -192,5 +193,65 @@ TEST_CASE("a joint no pressure sample loads takes k_phi from the bending samples
   elsewhere.actuation.pressure = 3e4;
   const MethodReduction alone  = reduce(finger, {bent(finger, 2e4, 0.4), elsewhere});
   CHECK_FALSE(alone.stiffness().phi_from_bending(0));
-  CHECK(alone.stiffness().bending().n_without_base() == 1);
+  CHECK(alone.stiffness().force_increments(2).n_without_base() == 1);
+}
+
+TEST_CASE("k_theta(p) is fitted to the lightest lateral increments over the pressure-only state")
+{
+  // At 20 kPa the pressure-only sample bends the finger sideways onto an arc
+  // about y of radius 1 m (as P10's helical threads turn its joints a little
+  // about theta); lateral tip forces of 0.1, 0.2, 0.4 N onto 0.5, 0.25 and
+  // 0.125 m. A joint past the first turns by a / R relative to its
+  // neighbour, so the increments are a (1/R - 1/1) = a, 3 a, 7 a while the
+  // forces double: each sample has another secant, and the fits differ.
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50), 15);
+  data::SampleRecord base;
+  base.id = "pressure";
+  base.actuation.pressure = 2e4;
+  base.actuation.role     = "pressure";
+  base.x = deform(finger.mesh.X, arc_about_y(1.0));
+  std::vector<data::SampleRecord> samples = {base};
+  const double forces[] = {0.1, 0.2, 0.4}, radii[] = {0.5, 0.25, 0.125};
+  for (int k = 0; k < 3; ++k)
+    {
+      data::SampleRecord s = base;
+      s.id = "lateral" + std::to_string(k);
+      s.actuation.role         = "lateral";
+      s.actuation.point_forces = {{{50 * mm, 0, 0}, {0, 0, forces[k]}}};
+      s.x = deform(finger.mesh.X, arc_about_y(radii[k]));
+      s.force_points_deformed = {s.x.back()};
+      samples.push_back(s);
+    }
+  ReductionParameters all = parameters();
+  all.force_samples_per_fit = 0;
+  const MethodReduction lightest = reduce(finger, samples);
+  const MethodReduction every    = reduce(finger, samples, all);
+  const std::size_t     joint    = 2;
+  const JointResult    &b        = lightest.samples()[0].joints()[joint];
+  // The least-squares fit sum(d tau d theta) / sum(d theta^2) over samples 1..n.
+  const auto fit_of_first = [&](int n) {
+    double sum_tau_angle = 0, sum_angle_squared = 0;
+    for (int k = 1; k <= n; ++k)
+      {
+        const JointResult &r = lightest.samples()[k].joints()[joint];
+        const double d_angle = r.angles.theta - b.free_angles.theta;
+        sum_tau_angle += (r.torque(1) - b.torque(1)) * d_angle;
+        sum_angle_squared += d_angle * d_angle;
+      }
+    return sum_tau_angle / sum_angle_squared;
+  };
+  // The increments are the arcs' (exact for the affine fit), not the totals.
+  CHECK(lightest.samples()[1].joints()[joint].angles.theta - b.angles.theta ==
+        Approx(a * (1 / 0.5 - 1 / 1.0)).epsilon(1e-10));
+  CHECK(b.angles.theta == Approx(a / 1.0).epsilon(1e-10)); // the pressure's share, not charged to the force
+  const auto k_at = [&](const MethodReduction &r) -> double {
+    const data::CsvTable table = StiffnessTables(r).k_vs_pressure(1);
+    for (std::size_t row = 0; row < table.n_rows(); ++row)
+      if (table.number(row, "joint") == joint + 1 && table.number(row, "pressure") == 2e4)
+        return table.number(row, "k_theta");
+    return NAN;
+  };
+  CHECK(k_at(lightest) == Approx(fit_of_first(2)).epsilon(1e-12));
+  CHECK(k_at(every) == Approx(fit_of_first(3)).epsilon(1e-12));
+  CHECK(std::abs(fit_of_first(2) / fit_of_first(3) - 1) > 0.1); // the choice matters here
 }

@@ -12,8 +12,11 @@
 //   fit:                 least squares over the usable samples,
 //                        k = sum(tau angle) / sum(angle^2).
 // A joint that no pressure sample loads (no usable k_phi) takes its k_phi
-// from the in-plane tip force samples (BendingForceStiffness), if any.
-#include <softchain/reduction/bending_force_stiffness.h>
+// from the in-plane tip force samples (ForceIncrementStiffness), if any.
+// Per pressure, k_psi(p), k_theta(p) and the bending samples' k_phi(p) are
+// fitted to force increments over the pressure-only state
+// (force_increments()).
+#include <softchain/reduction/force_increment_stiffness.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
 
@@ -41,9 +44,13 @@ namespace softchain::reduction
                         const ReductionParameters &parameters, std::size_t n_joints);
 
     const std::vector<JointStiffness> &joints() const { return joints_; }
-    // k_phi from the in-plane tip force samples, for the joints that no
-    // pressure sample loads.
-    const BendingForceStiffness &bending() const { return bending_; }
+    // Stiffness about `axis` from the force samples' increments over the
+    // pressure-only state: torsion samples for psi, lateral for theta, the
+    // in-plane (bending) tip force samples for phi.
+    const ForceIncrementStiffness &force_increments(int axis) const
+    {
+      return force_increments_[axis];
+    }
     // Does joint i take its k_phi from the bending samples?
     bool phi_from_bending(std::size_t joint) const { return phi_from_bending_[joint]; }
     // Number of (sample, joint, axis) rotations below the threshold.
@@ -64,7 +71,7 @@ namespace softchain::reduction
 
     std::array<std::vector<std::string>, 3> roles_;
     double                                  threshold_;
-    BendingForceStiffness                   bending_;
+    std::vector<ForceIncrementStiffness>    force_increments_; // psi, theta, phi
     std::vector<bool>                       phi_from_bending_;
     std::vector<JointStiffness>             joints_;
     int                                     n_below_threshold_ = 0;

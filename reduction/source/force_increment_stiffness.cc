@@ -1,6 +1,7 @@
-// BendingForceStiffness: k_phi from in-plane tip force increments over the
-// pressure-only state.
-#include <softchain/reduction/bending_force_stiffness.h>
+// ForceIncrementStiffness: k about one axis from force increments over the
+// pressure-only state at the same pressure.
+#include <softchain/reduction/force_increment_stiffness.h>
+#include <softchain/reduction/stiffness_extraction.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,15 +37,17 @@ namespace softchain::reduction
     }
   } // namespace
 
-  BendingForceStiffness::BendingForceStiffness(const std::vector<SampleReduction> &samples,
-                                               const std::vector<std::string>     &bending_roles,
-                                               const std::vector<std::string>     &pressure_roles,
-                                               const double                        threshold)
+  ForceIncrementStiffness::ForceIncrementStiffness(const std::vector<SampleReduction> &samples,
+                                                   const std::vector<std::string> &force_roles,
+                                                   const std::vector<std::string> &pressure_roles,
+                                                   const int axis, const double threshold,
+                                                   const int smallest_loads)
     : threshold_(threshold)
+    , smallest_loads_(smallest_loads)
   {
     for (const auto &sample : samples)
       {
-        if (!has_role(sample, bending_roles))
+        if (!has_role(sample, force_roles))
           continue;
         bool                   found = false;
         const SampleReduction *base  = base_state(samples, pressure_roles, sample.pressure(), found);
@@ -57,8 +60,10 @@ namespace softchain::reduction
         for (std::size_t j = 0; j < sample.joints().size(); ++j)
           {
             const JointResult &loaded = sample.joints()[j];
-            increment.angle.push_back(loaded.angles.phi - (base ? base->joints()[j].free_angles.phi : 0.0));
-            increment.torque.push_back(loaded.torque.z() - (base ? base->joints()[j].torque.z() : 0.0));
+            const double base_angle  = base ? angle_about(base->joints()[j].free_angles, axis) : 0.0;
+            const double base_torque = base ? base->joints()[j].torque(axis) : 0.0;
+            increment.angle.push_back(angle_about(loaded.angles, axis) - base_angle);
+            increment.torque.push_back(loaded.torque(axis) - base_torque);
           }
         increments_.push_back(increment);
       }
@@ -67,12 +72,12 @@ namespace softchain::reduction
     });
   }
 
-  bool BendingForceStiffness::usable(const Increment &increment, const std::size_t joint) const
+  bool ForceIncrementStiffness::usable(const Increment &increment, const std::size_t joint) const
   {
     return std::abs(increment.angle[joint]) >= threshold_ && increment.angle[joint] != 0.0;
   }
 
-  double BendingForceStiffness::at_largest_load(const std::size_t joint) const
+  double ForceIncrementStiffness::at_largest_load(const std::size_t joint) const
   {
     for (auto it = increments_.rbegin(); it != increments_.rend(); ++it)
       if (usable(*it, joint))
@@ -80,7 +85,7 @@ namespace softchain::reduction
     return no_value;
   }
 
-  double BendingForceStiffness::fit_over(const std::vector<const Increment *> &increments,
+  double ForceIncrementStiffness::fit_over(const std::vector<const Increment *> &increments,
                                          const std::size_t                    joint) const
   {
     double sum_tau_angle = 0, sum_angle_squared = 0;
@@ -93,7 +98,7 @@ namespace softchain::reduction
     return sum_angle_squared > 0 ? sum_tau_angle / sum_angle_squared : no_value;
   }
 
-  double BendingForceStiffness::fit(const std::size_t joint) const
+  double ForceIncrementStiffness::fit(const std::size_t joint) const
   {
     std::vector<const Increment *> all;
     for (const Increment &increment : increments_)
@@ -101,21 +106,27 @@ namespace softchain::reduction
     return fit_over(all, joint);
   }
 
-  int BendingForceStiffness::n_used(const std::size_t joint) const
+  int ForceIncrementStiffness::n_used(const std::size_t joint) const
   {
     return static_cast<int>(std::count_if(increments_.begin(), increments_.end(),
                                           [&](const Increment &i) { return usable(i, joint); }));
   }
 
-  std::map<double, double> BendingForceStiffness::fit_by_pressure(const std::size_t joint) const
+  std::map<double, double> ForceIncrementStiffness::fit_by_pressure(const std::size_t joint) const
   {
+    // increments_ is sorted by force within a pressure: the first usable
+    // ones are the lightest.
     std::map<double, std::vector<const Increment *>> by_pressure;
     for (const Increment &increment : increments_)
-      by_pressure[increment.pressure].push_back(&increment);
+      {
+        auto &group = by_pressure[increment.pressure];
+        if (usable(increment, joint) &&
+            (smallest_loads_ == 0 || static_cast<int>(group.size()) < smallest_loads_))
+          group.push_back(&increment);
+      }
     std::map<double, double> k;
     for (const auto &[pressure, group] : by_pressure)
-      if (const double value = fit_over(group, joint); !std::isnan(value))
-        k[pressure] = value;
+      k[pressure] = fit_over(group, joint);
     return k;
   }
 } // namespace softchain::reduction

@@ -1,0 +1,70 @@
+#pragma once
+// ForceIncrementStiffness: a joint's stiffness about one axis from force
+// samples made at pressure (Samples/Force sample pressures). Per force sample
+// s and joint i, the increment over the pressure-only state b at the same
+// pressure (the rest at p = 0),
+//   d q = q_i(s) - q_i(b),   d tau = tau_i(s) - tau_i(b)   (the axis' angle
+// and torque), with q_i(b) the joint's free angle in b (SampleReduction: the
+// rotation a torque-free joint passes on there), and k = d tau / d q.
+// Increments, not totals: the pressure alone turns the joints a little about
+// psi and theta too (the helical threads), which would otherwise be charged
+// to the force.
+//
+// The chain's springs are linear about the pressure-only state, so per
+// pressure the fit uses the smallest loads that turn the joint measurably:
+// the `smallest_loads` lightest usable increments (0: all). A finger's
+// response to a tip force is not linear in it: inflated, P10 resists a small
+// lateral force by twisting and bends sideways only as the force grows
+// (theta grows like f^2 at 20 kPa), and past about 0.7 N it buckles. A fit
+// over all forces would give the chain the slope of the large ones.
+//
+// Uses: k_phi of the joints that no pressure sample loads (the in-plane tip
+// force samples: a closed cavity's pressure has no net moment about a
+// section distal to which the whole cavity lies, P10's joint 1 in the solid
+// base fill), and k_theta(p), k_psi(p) (lateral and torsion samples).
+// |d q| below the threshold gives no value; a force sample without a
+// pressure-only state at its pressure gives nothing (counted).
+#include <softchain/reduction/sample_reduction.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace softchain::reduction
+{
+  class ForceIncrementStiffness
+  {
+  public:
+    // axis: 0 = psi, 1 = theta, 2 = phi.
+    ForceIncrementStiffness(const std::vector<SampleReduction> &samples,
+                            const std::vector<std::string>     &force_roles,
+                            const std::vector<std::string>     &pressure_roles,
+                            int axis, double threshold, int smallest_loads);
+
+    // Over all pressures and loads; NaN where no increment gives a value.
+    double at_largest_load(std::size_t joint) const;
+    double fit(std::size_t joint) const;
+    int    n_used(std::size_t joint) const;
+    // Least-squares k per pressure of the force samples over the
+    // `smallest_loads` lightest usable increments; NaN where none is usable.
+    std::map<double, double> fit_by_pressure(std::size_t joint) const;
+    // Force samples that had no pressure-only state at their pressure.
+    int n_without_base() const { return n_without_base_; }
+
+  private:
+    struct Increment
+    {
+      double              pressure;
+      double              force;
+      std::vector<double> angle;  // d q per joint
+      std::vector<double> torque; // d tau per joint
+    };
+    bool   usable(const Increment &increment, std::size_t joint) const;
+    double fit_over(const std::vector<const Increment *> &increments, std::size_t joint) const;
+
+    std::vector<Increment> increments_; // by increasing load: pressure, then force
+    double                 threshold_;
+    int                    smallest_loads_;
+    int                    n_without_base_ = 0;
+  };
+} // namespace softchain::reduction
