@@ -48,10 +48,11 @@ namespace softchain::chain
         by_kind[rows.text(r, "motion")][rows.number(r, "amount")] =
           TracePoint{rows.text(r, "motion"), rows.number(r, "amount"), s.id,
                      data::vector_of(m.translation), data::vector_of(m.rotation), m.point_contact,
-                     data::vector_of(s.base_moment)};
+                     data::vector_of(s.base_moment), data::vector_of(s.base_force)};
       }
     const TracePoint rest{"", 0.0, inflated.id, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                          false, data::vector_of(inflated.base_moment)};
+                          false, data::vector_of(inflated.base_moment),
+                          data::vector_of(inflated.base_force)};
     // 0 -> +a -> 0 -> -a -> 0 per kind, in the paper's order.
     for (const std::string kind : {"lateral", "bending", "twist"})
       {
@@ -88,6 +89,7 @@ namespace softchain::chain
       {
         failures_.push_back(model.name() + " at the inflation pressure: " + inflated.failure);
         trace.torque.assign(points_.size(), Eigen::Vector3d::Constant(NAN));
+        trace.force.assign(points_.size(), Eigen::Vector3d::Constant(NAN));
         traces_.push_back(trace);
         return;
       }
@@ -97,13 +99,13 @@ namespace softchain::chain
     // Each state is solved once, from the angles of the trace's previous
     // state (the motion is continuous along the trace).
     TipConstrainedEquilibrium              held(model, settings);
-    std::map<std::string, Eigen::Vector3d> torque_of;
+    std::map<std::string, Wrench>          wrench_of;
     std::map<std::string, Eigen::VectorXd> angles_of{{points_.front().sample, inflated.angles}};
-    torque_of[points_.front().sample] = Eigen::Vector3d::Zero(); // pressure alone: no wrench
+    wrench_of[points_.front().sample] = Wrench{}; // pressure alone: no wrench
     Eigen::VectorXd start = inflated.angles;
     for (const TracePoint &p : points_)
       {
-        if (torque_of.count(p.sample) == 0)
+        if (wrench_of.count(p.sample) == 0)
           {
             const Eigen::Vector3d axis = p.rotation.norm() > 0 ? p.rotation.normalized() : Eigen::Vector3d::UnitX();
             TipTarget target{tip0 + p.translation,
@@ -114,20 +116,22 @@ namespace softchain::chain
             if (result.converged)
               {
                 angles_of[p.sample] = result.angles;
-                torque_of[p.sample] =
-                  base_wrench(held.chain(), held.pose(), held.with_contact(load, result.contact_force),
-                              base_centroid_).moment + result.contact_moment;
+                Wrench wrench = base_wrench(held.chain(), held.pose(),
+                                            held.with_contact(load, result.contact_force), base_centroid_);
+                wrench.moment += result.contact_moment;
+                wrench_of[p.sample] = wrench;
               }
             else
               {
-                torque_of[p.sample] = Eigen::Vector3d::Constant(NAN);
+                wrench_of[p.sample] = Wrench{Eigen::Vector3d::Constant(NAN), Eigen::Vector3d::Constant(NAN)};
                 failures_.push_back(model.name() + " on sample " + p.sample + " (" + p.motion + " " +
                                     data::CsvTable::cell(p.amount) + "): " + result.failure);
               }
           }
         if (angles_of.count(p.sample) > 0)
           start = angles_of[p.sample];
-        trace.torque.push_back(torque_of[p.sample]);
+        trace.torque.push_back(wrench_of[p.sample].moment);
+        trace.force.push_back(wrench_of[p.sample].force);
       }
     traces_.push_back(trace);
   }
@@ -147,6 +151,11 @@ namespace softchain::chain
     for (const auto &t : traces_)
       for (const char *c : {"_Tx", "_Ty", "_Tz"})
         columns.push_back(t.name + c);
+    for (const char *c : {"fem_Fx", "fem_Fy", "fem_Fz"})
+      columns.push_back(c);
+    for (const auto &t : traces_)
+      for (const char *c : {"_Fx", "_Fy", "_Fz"})
+        columns.push_back(t.name + c);
     data::CsvTable table(columns);
     for (std::size_t k = 0; k < points_.size(); ++k)
       {
@@ -158,6 +167,11 @@ namespace softchain::chain
         for (const auto &t : traces_)
           for (int c = 0; c < 3; ++c)
             row.push_back(data::CsvTable::cell(t.torque[k][c]));
+        for (int c = 0; c < 3; ++c)
+          row.push_back(data::CsvTable::cell(p.fem_force[c]));
+        for (const auto &t : traces_)
+          for (int c = 0; c < 3; ++c)
+            row.push_back(data::CsvTable::cell(t.force[k][c]));
         table.add_row(row);
       }
     return table;

@@ -12,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Core>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -110,6 +112,23 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
       CHECK(std::isfinite(summary.number(r, "rms_error_Nm")));
     }
   CHECK(baseline);
+  // A point contact (the lateral and bending motions) loads the chain's tip
+  // with one force and no couple: the base moment about any point is then
+  // r x F, perpendicular to the base force F.
+  int point_contacts = 0;
+  for (std::size_t r = 0; r < trace.n_rows(); ++r)
+    if (trace.text(r, "motion") != "twist" && trace.number(r, "amount") != 0)
+      for (const std::string model : {"M2", "baseline"})
+        {
+          const Eigen::Vector3d F(trace.number(r, model + "_Fx"), trace.number(r, model + "_Fy"),
+                                  trace.number(r, model + "_Fz"));
+          const Eigen::Vector3d M(trace.number(r, model + "_Tx"), trace.number(r, model + "_Ty"),
+                                  trace.number(r, model + "_Tz"));
+          CHECK(F.norm() > 0);
+          CHECK(std::abs(M.dot(F)) <= 1e-9 * M.norm() * F.norm());
+          ++point_contacts;
+        }
+  CHECK(point_contacts == 2 * 12); // 6 moved states per motion kind, 2 models
   CHECK(run.output.find("tip-motion protocol at") != std::string::npos);
   const auto listing = data::CsvTable::read(design.output() + "/protocol_samples.csv");
   REQUIRE(listing.n_rows() == 13);

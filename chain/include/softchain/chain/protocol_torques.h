@@ -48,7 +48,8 @@ namespace softchain::chain
     void compare(const ChainModel &model, const EquilibriumSettings &settings);
 
     // step, motion, amount (mm or deg), sample, fem_Tx..Tz, then per model
-    // <model>_Tx..Tz [N m] (NaN where its equilibrium failed).
+    // <model>_Tx..Tz [N m], then the base forces fem_Fx..Fz and per model
+    // <model>_Fx..Fz [N] (NaN where its equilibrium failed).
     data::CsvTable trace_table() const;
     // model, torque, fem_range_Nm, rms_error_Nm, rms_error_percent_range,
     // max_error_percent_range, n_failed_points (trace points without an
@@ -70,11 +71,13 @@ namespace softchain::chain
       Eigen::Vector3d rotation    = Eigen::Vector3d::Zero(); // world, rad
       bool            point_contact = false;                  // the tip point held, its frame free
       Eigen::Vector3d fem_torque  = Eigen::Vector3d::Zero(); // N m
+      Eigen::Vector3d fem_force   = Eigen::Vector3d::Zero(); // N
     };
     struct ModelTrace
     {
       std::string                  name;
       std::vector<Eigen::Vector3d> torque; // per trace point (NaN: failed)
+      std::vector<Eigen::Vector3d> force;  // per trace point (NaN: failed)
     };
 
     double                   pressure_ = 0.0;
