@@ -28,7 +28,7 @@ namespace softchain::reduction
       section.declare("Bending roles", "bending",
                       "sample roles (in-plane tip forces) feeding k_phi of the joints that the "
                       "pressure does not load");
-      section.declare("Force samples per fit", "2",
+      section.declare("Force samples per fit", "1",
                       "k_psi(p), k_theta(p) and the bending samples' k_phi(p) are fitted to the "
                       "lightest this many force samples per pressure that turn the joint "
                       "measurably (the chain's springs are linear about the pressure-only "

@@ -127,7 +127,10 @@ namespace
 
   // The paper's placement: its closed forms below are the bounding-box
   // centres' (the synthetic finger is a node cloud without cells).
+  // Every force sample in the per-pressure fits, so that at p = 0 they equal
+  // the main table's least squares (the _fit columns).
   const std::string good_prm = "  set Joint placement = paper\n"
+                               "  set Force samples per fit = 0\n"
                                "  set Joint spacing = 0.01\n"
                                "  set Slab half-widths = 1, 0.5\n"
                                "  set Methods = M1, M2\n"
@@ -259,7 +262,8 @@ TEST_CASE("run_reduction end to end on a synthetic database")
                          closed_form_kphi(s, int(kp.number(r, "joint")), b, kp.number(r, "pressure")));
 
         // The lateral and torsion samples all lie at p = 0: one row per
-        // joint, their least-squares k (the fit columns above).
+        // joint, their least-squares k over all of them (Force samples per
+        // fit = 0), the fit columns above.
         for (const auto &[file, column] : {std::pair{"_ktheta_vs_pressure.csv", "k_theta"},
                                            std::pair{"_kpsi_vs_pressure.csv", "k_psi"}})
           {

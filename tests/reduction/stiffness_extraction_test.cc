@@ -222,9 +222,11 @@ TEST_CASE("k_theta(p) is fitted to the lightest lateral increments over the pres
       s.force_points_deformed = {s.x.back()};
       samples.push_back(s);
     }
-  ReductionParameters all = parameters();
+  ReductionParameters two = parameters(), all = parameters();
+  two.force_samples_per_fit = 2;
   all.force_samples_per_fit = 0;
-  const MethodReduction lightest = reduce(finger, samples);
+  const MethodReduction lightest = reduce(finger, samples); // the default: the lightest one
+  const MethodReduction pair     = reduce(finger, samples, two);
   const MethodReduction every    = reduce(finger, samples, all);
   const std::size_t     joint    = 2;
   const JointResult    &b        = lightest.samples()[0].joints()[joint];
@@ -251,7 +253,10 @@ TEST_CASE("k_theta(p) is fitted to the lightest lateral increments over the pres
         return table.number(row, "k_theta");
     return NAN;
   };
-  CHECK(k_at(lightest) == Approx(fit_of_first(2)).epsilon(1e-12));
+  CHECK(k_at(lightest) == Approx(fit_of_first(1)).epsilon(1e-12));
+  CHECK(k_at(pair) == Approx(fit_of_first(2)).epsilon(1e-12));
   CHECK(k_at(every) == Approx(fit_of_first(3)).epsilon(1e-12));
-  CHECK(std::abs(fit_of_first(2) / fit_of_first(3) - 1) > 0.1); // the choice matters here
+  // The choice matters here: each fit differs from the next by over 10 %.
+  CHECK(std::abs(fit_of_first(1) / fit_of_first(2) - 1) > 0.1);
+  CHECK(std::abs(fit_of_first(2) / fit_of_first(3) - 1) > 0.1);
 }

@@ -41,7 +41,7 @@ namespace softchain::reduction
     std::vector<std::string>    lateral_roles;            // feed k_theta
     std::vector<std::string>    torsion_roles;            // feed k_psi
     std::vector<std::string>    bending_roles;            // feed k_phi where no pressure does
-    int                         force_samples_per_fit = 2; // lightest per pressure; 0: all
+    int                         force_samples_per_fit = 1; // lightest per pressure; 0: all
     bool                        plots = true;
 
     // Parses and checks "subsection Reduction" of `file`; throws
