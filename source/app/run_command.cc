@@ -85,7 +85,10 @@ namespace softchain::app
         return ext == ".png" ? "stiffness plot" :
                name.find("_samples.csv") != std::string::npos ? "joint angles and torques per sample" :
                name.find("_kphi_vs_pressure") != std::string::npos ? "k_phi per pressure and joint" :
+               name.find("_ktheta_vs_pressure") != std::string::npos ? "k_theta per pressure and joint" :
+               name.find("_kpsi_vs_pressure") != std::string::npos ? "k_psi per pressure and joint" :
                name.find("_pressure_torque") != std::string::npos ? "pressure torque J_p per joint" :
+               name.find("_link_geometry") != std::string::npos ? "the chain's joints and tip per pressure" :
                ext == ".csv" ? "joint stiffness table k_psi, k_theta, k_phi" : "reduction output";
       if (dir == "chain")
         return name == "validation.csv" ? "chain vs FEM tip pose per sample and model" :
