@@ -88,8 +88,17 @@ namespace softchain::chain
         const auto        start = std::chrono::steady_clock::now();
         const Equilibrium e     = solver.solve(s.load);
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-        ValidationRecord  r{s.id, s.role, model.name(), s.load.pressure, force_norm(s.load),
-                            NAN, NAN, e.iterations, e.converged, e.failure};
+        ValidationRecord  r;
+        r.sample     = s.id;
+        r.role       = s.role;
+        r.model      = model.name();
+        r.pressure   = s.load.pressure;
+        r.force_norm = force_norm(s.load);
+        r.position_error    = NAN;
+        r.orientation_error = NAN;
+        r.iterations = e.iterations;
+        r.converged  = e.converged;
+        r.failure    = e.failure;
         r.solve_time = elapsed.count();
         if (e.converged)
           {

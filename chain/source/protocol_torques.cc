@@ -81,7 +81,7 @@ namespace softchain::chain
 
   void ProtocolTorques::compare(const ChainModel &model, const EquilibriumSettings &settings)
   {
-    ModelTrace       trace{model.name(), {}};
+    ModelTrace       trace{model.name(), {}, {}};
     const ChainLoad  load{pressure_, {}};
     ChainEquilibrium free(model, settings);
     const auto       inflated = free.solve(load);

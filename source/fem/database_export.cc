@@ -176,7 +176,7 @@ namespace softchain::fem
     std::vector<std::size_t> order(all_coords.size() / 3);
     std::iota(order.begin(), order.end(), 0);
     const auto point = [&](std::size_t n) {
-      return data::Point3{all_coords[3 * n], all_coords[3 * n + 1], all_coords[3 * n + 2]};
+      return data::Point3{{all_coords[3 * n], all_coords[3 * n + 1], all_coords[3 * n + 2]}};
     };
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return point(a) < point(b); });
@@ -220,7 +220,7 @@ namespace softchain::fem
           }
       }
     for (const auto &t : gathered_rows(triangles, 3, space.communicator))
-      record.cavity_triangles.push_back({t[0], t[1], t[2]});
+      record.cavity_triangles.push_back({{t[0], t[1], t[2]}});
     for (const auto &n : gathered_rows(tip, 1, space.communicator))
       record.tip_nodes.push_back(n[0]);
     for (const auto &n : gathered_rows(clamped, 1, space.communicator))
@@ -235,7 +235,7 @@ namespace softchain::fem
   {
     for (const auto &t : sub_triangles(quad, space.degree))
       {
-        const auto o = oriented({nodes.at(t[0]), nodes.at(t[1]), nodes.at(t[2])}, record.X, outward);
+        const auto o = oriented({{nodes.at(t[0]), nodes.at(t[1]), nodes.at(t[2])}}, record.X, outward);
         triangles.insert(triangles.end(), o.begin(), o.end());
       }
   }
@@ -252,7 +252,7 @@ namespace softchain::fem
                   space.communicator);
     std::vector<data::Point3> x(record.X.size());
     for (std::size_t n = 0; n < x.size(); ++n)
-      x[n] = {flat[3 * n], flat[3 * n + 1], flat[3 * n + 2]};
+      x[n] = {{flat[3 * n], flat[3 * n + 1], flat[3 * n + 2]}};
     return x;
   }
 

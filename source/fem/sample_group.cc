@@ -157,10 +157,10 @@ namespace softchain::fem
     record.x                   = nodes.deformed_nodes(solver.displacement());
     if (!sample.actuation.point_forces.empty())
       for (const auto &p : solver.deformed_points(points_of(sample.actuation)))
-        record.force_points_deformed.push_back({p[0], p[1], p[2]});
+        record.force_points_deformed.push_back({{p[0], p[1], p[2]}});
     const auto wrench  = base.wrench(solver.support_forces());
-    record.base_force  = {wrench.force[0], wrench.force[1], wrench.force[2]};
-    record.base_moment = {wrench.moment[0], wrench.moment[1], wrench.moment[2]};
+    record.base_force  = {{wrench.force[0], wrench.force[1], wrench.force[2]}};
+    record.base_moment = {{wrench.moment[0], wrench.moment[1], wrench.moment[2]}};
     if (prm.output.write_vtu)
       SolutionOutput(prm.design.output_directory + "/vtu", prm.output.subdivisions)
         .write(solver, "sample_" + sample.id, index);

@@ -72,7 +72,7 @@ namespace softchain::fem
       const auto items = split(text, ',');
       if (items.size() != 3)
         throw data::InputError(where + ": '" + text + "' needs three components x,y,z");
-      return {number(items[0], where), number(items[1], where), number(items[2], where)};
+      return {{number(items[0], where), number(items[1], where), number(items[2], where)}};
     }
 
     std::string label(const std::string &role, const double value, const char *unit,
@@ -94,7 +94,7 @@ namespace softchain::fem
       if (text == "tip")
         return tip;
       if (text == "tip+arm" || text == "tip-arm")
-        return {tip[0], tip[1], tip[2] + (text == "tip+arm" ? arm : -arm)};
+        return {{tip[0], tip[1], tip[2] + (text == "tip+arm" ? arm : -arm)}};
       return triple(text, where);
     }
 
@@ -128,6 +128,18 @@ namespace softchain::fem
       return key;
     }
 
+    // A sample of `role` at `pressure` with `forces` (no tip motion, pressure control).
+    Sample sample_of(const std::string &role, const double pressure,
+                     std::vector<data::PointForce> forces, const std::string &label)
+    {
+      Sample sample;
+      sample.actuation.role         = role;
+      sample.actuation.pressure     = pressure;
+      sample.actuation.point_forces = std::move(forces);
+      sample.label                  = label;
+      return sample;
+    }
+
     std::vector<Sample> listed_samples(const data::PrmSection &s, const SampleSet::TipFace &tip)
     {
       const data::Point3 at =
@@ -135,7 +147,7 @@ namespace softchain::fem
       const double arm = s.get_double("Torsion arm") > 0 ? s.get_double("Torsion arm") : tip.width / 4;
       std::vector<Sample> samples;
       for (const double p : s.get_double_list("Pressure sweep"))
-        samples.push_back({{p, {}, "pressure"}, label("pressure", p, "Pa"), ""});
+        samples.push_back(sample_of("pressure", p, {}, label("pressure", p, "Pa")));
       for (const double ratio : s.get_double_list("Volume sweep"))
         {
           std::ostringstream value;
@@ -143,23 +155,23 @@ namespace softchain::fem
           if (!(ratio > 1 && ratio <= 100))
             throw data::InputError(s.describe("Volume sweep") + ": " + value.str() +
                                    " is not a volume ratio in (1, 100]");
-          Sample sample{{0, {}, "volume"}, "volume ratio " + value.str(), ""};
+          Sample sample = sample_of("volume", 0, {}, "volume ratio " + value.str());
           sample.actuation.cavity_volume_ratio = ratio;
           samples.push_back(sample);
         }
       for (const double p : s.get_double_list("Force sample pressures"))
         {
           for (const double f : s.get_double_list("Lateral tip forces"))
-            samples.push_back({{p, {{at, {0, 0, f}}}, "lateral"}, label("lateral", f, "N", p), ""});
+            samples.push_back(
+              sample_of("lateral", p, {{at, {{0, 0, f}}}}, label("lateral", f, "N", p)));
           for (const double f : s.get_double_list("Torsion couples"))
-            samples.push_back({{p,
-                                {{{at[0], at[1], at[2] + arm}, {0, f, 0}},
-                                 {{at[0], at[1], at[2] - arm}, {0, -f, 0}}},
-                                "torsion"},
-                               label("torsion", f, "N", p),
-                               ""});
+            samples.push_back(sample_of("torsion", p,
+                                        {{{{at[0], at[1], at[2] + arm}}, {{0, f, 0}}},
+                                         {{{at[0], at[1], at[2] - arm}}, {{0, -f, 0}}}},
+                                        label("torsion", f, "N", p)));
           for (const double f : s.get_double_list("Bending tip forces"))
-            samples.push_back({{p, {{at, {0, -f, 0}}}, "bending"}, label("bending", f, "N", p), ""});
+            samples.push_back(
+              sample_of("bending", p, {{at, {{0, -f, 0}}}}, label("bending", f, "N", p)));
         }
       const auto entries = split(s.get("Validation samples"), ';');
       for (std::size_t k = 0; k < entries.size(); ++k)

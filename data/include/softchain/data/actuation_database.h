@@ -148,8 +148,8 @@ namespace softchain::data
     // The force [N] and moment [N m] the finger exerts on its clamped base,
     // about the base face's centroid, world axes (NaN in databases written
     // before it was stored).
-    Point3 base_force  = {NAN, NAN, NAN};
-    Point3 base_moment = {NAN, NAN, NAN};
+    Point3 base_force  = {{NAN, NAN, NAN}};
+    Point3 base_moment = {{NAN, NAN, NAN}};
 
     bool converged() const { return status == SampleStatus::converged; }
   };
