@@ -12,18 +12,26 @@
 using namespace softchain;
 using namespace softchain::fem;
 
+namespace
+{
+  // The sample set of a .prm whose Samples subsection holds `entries`, for
+  // a tip face centred at x = 0.08 m and 16 mm wide (default torsion arm 4 mm).
+  SampleSet read_samples(const std::string &name, const std::string &entries)
+  {
+    const testing::ScratchDirectory scratch("sample_set_test");
+    const std::string               path = scratch.file(name + ".prm");
+    std::ofstream(path) << "subsection Samples\n" << entries << "end\n";
+    return SampleSet::read(data::PrmFile::read(path), {{{0.08, 0, 0}}, 0.016}, "h");
+  }
+} // namespace
+
 TEST_CASE("force samples are made at each force sample pressure, one chain per role and pressure")
 {
-  const testing::ScratchDirectory scratch("sample_set_test");
-  const std::string               path = scratch.file("samples.prm");
-  std::ofstream(path) << "subsection Samples\n"
-                         "  set Pressure sweep = 1e4, 2e4\n"
-                         "  set Lateral tip forces = 0.1, 0.3\n"
-                         "  set Torsion couples = 0.2\n"
-                         "  set Bending tip forces = 0.25\n"
-                         "  set Force sample pressures = 0, 2e4\n"
-                         "end\n";
-  const SampleSet set = SampleSet::read(data::PrmFile::read(path), {{0.08, 0, 0}, 0.016}, "h");
+  const SampleSet set = read_samples("samples", "  set Pressure sweep = 1e4, 2e4\n"
+                                                "  set Lateral tip forces = 0.1, 0.3\n"
+                                                "  set Torsion couples = 0.2\n"
+                                                "  set Bending tip forces = 0.25\n"
+                                                "  set Force sample pressures = 0, 2e4\n");
   // 2 pressures + (2 lateral + 1 torsion + 1 bending) x 2 pressures.
   REQUIRE(set.samples.size() == 10);
   int lateral_at_pressure = 0, bending = 0;
@@ -32,7 +40,7 @@ TEST_CASE("force samples are made at each force sample pressure, one chain per r
       {
         ++bending;
         REQUIRE(s.actuation.point_forces.size() == 1);
-        CHECK(s.actuation.point_forces[0].force == data::Point3{0, -0.25, 0}); // down, in the bending plane
+        CHECK(s.actuation.point_forces[0].force == data::Point3{{0, -0.25, 0}}); // down, in the bending plane
       }
   CHECK(bending == 2);
   for (const Sample &s : set.samples)
@@ -56,14 +64,9 @@ TEST_CASE("force samples are made at each force sample pressure, one chain per r
 
 TEST_CASE("a validation sample can load the torsion couple's points by name")
 {
-  const testing::ScratchDirectory scratch("sample_set_test");
-  const std::string               path = scratch.file("validation.prm");
-  std::ofstream(path) << "subsection Samples\n"
-                         "  set Torsion couples = 0.2\n"
-                         "  set Validation samples = 2e4 : tip+arm : 0,0.3,0 : tip-arm : 0,-0.3,0\n"
-                         "end\n";
-  // Tip face centred at x = 0.08, 16 mm wide: the default arm is 4 mm.
-  const SampleSet set = SampleSet::read(data::PrmFile::read(path), {{0.08, 0, 0}, 0.016}, "h");
+  const SampleSet set =
+    read_samples("validation", "  set Torsion couples = 0.2\n"
+                               "  set Validation samples = 2e4 : tip+arm : 0,0.3,0 : tip-arm : 0,-0.3,0\n");
   const auto validation = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
     return s.actuation.role == "validation";
   });
@@ -75,6 +78,6 @@ TEST_CASE("a validation sample can load the torsion couple's points by name")
   REQUIRE(validation->actuation.point_forces.size() == 2);
   for (int k = 0; k < 2; ++k)
     CHECK(validation->actuation.point_forces[k].point == torsion->actuation.point_forces[k].point);
-  CHECK(validation->actuation.point_forces[0].point == data::Point3{0.08, 0, 0.004});
-  CHECK(validation->actuation.point_forces[1].force == data::Point3{0, -0.3, 0});
+  CHECK(validation->actuation.point_forces[0].point == data::Point3{{0.08, 0, 0.004}});
+  CHECK(validation->actuation.point_forces[1].force == data::Point3{{0, -0.3, 0}});
 }
