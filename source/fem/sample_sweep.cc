@@ -77,7 +77,7 @@ namespace softchain::fem
         throw data::InputError(file + ": the mesh has no face in the physical group 'tip' "
                                       "(needed for the samples' default force point)");
       const Point<3> centre = 0.5 * (low + high);
-      return {{centre[0], centre[1], centre[2]}, high[2] - low[2]};
+      return {{{centre[0], centre[1], centre[2]}}, high[2] - low[2]};
     }
 
     data::DesignRecord design_record(const Parameters &prm, const data::PrmFile &file,

@@ -6,6 +6,7 @@
 #include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <string>
 
@@ -54,6 +55,40 @@ namespace softchain::fem
       }
     value.resize(column.size());
     umfpack_dl_defaults(control.data());
+    find_mirrors();
+  }
+
+  // mirror[k] for entry k = (i, j): the index of (j, i), by a binary search
+  // in row j's sorted columns; none found leaves `mirror` empty.
+  void SerialDirectSolver::find_mirrors()
+  {
+    mirror.resize(column.size());
+    for (std::size_t i = 0; i + 1 < row_start.size(); ++i)
+      for (SuiteSparse_long k = row_start[i]; k < row_start[i + 1]; ++k)
+        {
+          const auto first = column.begin() + row_start[column[k]];
+          const auto last  = column.begin() + row_start[column[k] + 1];
+          const auto at    = std::lower_bound(first, last, static_cast<SuiteSparse_long>(i));
+          if (at == last || *at != static_cast<SuiteSparse_long>(i))
+            {
+              mirror.clear();
+              return;
+            }
+          mirror[k] = at - column.begin();
+        }
+  }
+
+  bool SerialDirectSolver::symmetric() const
+  {
+    if (mirror.empty())
+      return false;
+    double largest = 0.0, asymmetry = 0.0;
+    for (std::size_t k = 0; k < value.size(); ++k)
+      {
+        largest   = std::max(largest, std::abs(value[k]));
+        asymmetry = std::max(asymmetry, std::abs(value[k] - value[mirror[k]]));
+      }
+    return asymmetry <= 1e-12 * largest;
   }
 
   SerialDirectSolver::~SerialDirectSolver()
@@ -78,7 +113,7 @@ namespace softchain::fem
   }
 
   // The symbolic analysis once, the numeric factorisation every call.
-  void SerialDirectSolver::factorise()
+  void SerialDirectSolver::factorise_lu()
   {
     const SuiteSparse_long n = row_start.size() - 1;
     if (!symbolic)
@@ -97,12 +132,24 @@ namespace softchain::fem
                                  const TrilinosWrappers::MPI::Vector  &rhs)
   {
     copy_values(matrix);
-    factorise();
     const Vector<double> b(rhs);
     Vector<double>       x(b.size());
-    check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(), x.data(),
-                           b.data(), numeric, control.data(), nullptr),
-          "solve");
+    last_was_cholesky = symmetric();
+    if (last_was_cholesky)
+      {
+        if (!cholesky)
+          cholesky = std::make_unique<SupernodalCholesky>(row_start, column);
+        last_was_cholesky = cholesky->factorise(value);
+      }
+    if (last_was_cholesky)
+      cholesky->solve(b.data(), x.data());
+    else
+      {
+        factorise_lu();
+        check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(),
+                               x.data(), b.data(), numeric, control.data(), nullptr),
+              "solve");
+      }
     for (types::global_dof_index i = 0; i < x.size(); ++i)
       solution[i] = x[i];
     solution.compress(VectorOperation::insert);

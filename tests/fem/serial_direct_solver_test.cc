@@ -1,7 +1,8 @@
-// SerialDirectSolver (UMFPACK on a copy of the Trilinos matrix) solves the
-// same system as Trilinos' KLU: the demo finger's tangent with springs and
-// pressure, at two deformed states, the second with the symbolic analysis of
-// the first.
+// SerialDirectSolver (CHOLMOD's Cholesky or UMFPACK's LU on a copy of the
+// Trilinos matrix) solves the same system as Trilinos' KLU: the demo
+// finger's tangent with springs and pressure, at two deformed states, the
+// second with the symbolic analysis of the first; an unsymmetric and an
+// indefinite matrix go to LU.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/serial_direct_solver.h>
@@ -11,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 using namespace dealii;
 using namespace softchain;
 using namespace softchain::fem;
@@ -18,14 +21,20 @@ using namespace softchain::fem;
 namespace
 {
   // K du = r by Trilinos' KLU, which shares no code with SerialDirectSolver.
-  TrilinosWrappers::MPI::Vector klu_solution(const QuasiStaticSolver &solver)
+  TrilinosWrappers::MPI::Vector klu_solution(const TrilinosWrappers::SparseMatrix &K,
+                                             const TrilinosWrappers::MPI::Vector  &r)
   {
-    TrilinosWrappers::MPI::Vector klu(solver.negative_residual());
+    TrilinosWrappers::MPI::Vector klu(r);
     SolverControl                 control(1, 0);
     TrilinosWrappers::SolverDirect(control, TrilinosWrappers::SolverDirect::AdditionalData(
                                               false, "Amesos_Klu"))
-      .solve(solver.tangent(), klu, solver.negative_residual());
+      .solve(K, klu, r);
     return klu;
+  }
+
+  TrilinosWrappers::MPI::Vector klu_solution(const QuasiStaticSolver &solver)
+  {
+    return klu_solution(solver.tangent(), solver.negative_residual());
   }
 
   double relative_difference(TrilinosWrappers::MPI::Vector a, const TrilinosWrappers::MPI::Vector &b)
@@ -35,7 +44,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("UMFPACK and KLU give the same Newton update", "[fem][solver]")
+TEST_CASE("the one-rank direct solver and KLU give the same Newton update", "[fem][solver]")
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     return; // SerialDirectSolver is the one-rank path
@@ -46,21 +55,83 @@ TEST_CASE("UMFPACK and KLU give the same Newton update", "[fem][solver]")
   load.pressure = 2e4;
   REQUIRE(solver.assemble(load, true));
 
-  TrilinosWrappers::MPI::Vector umfpack(solver.negative_residual());
+  TrilinosWrappers::MPI::Vector update(solver.negative_residual());
   SerialDirectSolver            direct(solver.tangent());
-  direct.solve(solver.tangent(), umfpack, solver.negative_residual());
+  direct.solve(solver.tangent(), update, solver.negative_residual());
   // Both are backward stable: the difference is bounded by cond(K) * eps,
   // measured 8e-12 relative here; 1e-9 leaves room for other BLAS builds.
-  CHECK(relative_difference(umfpack, klu_solution(solver)) < 1e-9);
+  CHECK(relative_difference(update, klu_solution(solver)) < 1e-9);
 
   // A second state: new values in the same pattern. The solver keeps its
-  // symbolic analysis and must still solve the new system, not the old one
+  // symbolic analyses and must still solve the new system, not the old one
   // (the two solutions differ by far more than the tolerance).
-  const TrilinosWrappers::MPI::Vector first = umfpack;
+  const TrilinosWrappers::MPI::Vector first = update;
   solver.set_displacement(test::smooth_displacement(solver, 6e-3, 0.05, 2));
   load.pressure = 4e4;
   REQUIRE(solver.assemble(load, true));
-  direct.solve(solver.tangent(), umfpack, solver.negative_residual());
-  CHECK(relative_difference(umfpack, klu_solution(solver)) < 1e-9);
-  CHECK(relative_difference(first, umfpack) > 1e-3);
+  direct.solve(solver.tangent(), update, solver.negative_residual());
+  CHECK(relative_difference(update, klu_solution(solver)) < 1e-9);
+  CHECK(relative_difference(first, update) > 1e-3);
+}
+
+TEST_CASE("a stable state's tangent is factorised by Cholesky, others by LU", "[fem][solver]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return;
+  test::SolverFixture f(test::parameters_from_text("cholesky", test::bender_prm("Q2", 4)));
+  QuasiStaticSolver &solver = *f.solver;
+  LoadState          load;
+  load.pressure = 2e4;
+  REQUIRE(solver.solve(load).converged);
+  REQUIRE(solver.assemble(load, true)); // K and the (small) residual at the equilibrium
+  const TrilinosWrappers::SparseMatrix &K = solver.tangent();
+  const TrilinosWrappers::MPI::Vector  &r = solver.negative_residual();
+
+  // At a stable equilibrium the closed cavity's follower pressure has a
+  // potential (-p V): K is symmetric and positive definite.
+  double asymmetry = 0, largest = 0;
+  for (types::global_dof_index i = 0; i < K.m(); ++i)
+    for (auto entry = K.begin(i); entry != K.end(i); ++entry)
+      {
+        largest   = std::max(largest, std::abs(entry->value()));
+        asymmetry = std::max(asymmetry, std::abs(entry->value() - K.el(entry->column(), i)));
+      }
+  INFO("max |K_ij - K_ji| / max |K| = " << asymmetry / largest);
+  TrilinosWrappers::MPI::Vector cholesky(r);
+  SerialDirectSolver            direct(K);
+  direct.solve(K, cholesky, r);
+  CHECK(direct.used_cholesky());
+  CHECK(relative_difference(cholesky, klu_solution(K, r)) < 1e-9); // as above
+
+  // -K is symmetric but negative definite: Cholesky refuses it and LU
+  // solves it, -K^-1 r.
+  TrilinosWrappers::SparseMatrix negative;
+  negative.copy_from(K);
+  negative *= -1.0;
+  TrilinosWrappers::MPI::Vector lu(r);
+  direct.solve(negative, lu, r);
+  CHECK_FALSE(direct.used_cholesky());
+  lu *= -1.0;
+  CHECK(relative_difference(lu, cholesky) < 1e-9);
+
+  // An unsymmetric K (one off-diagonal entry K_ij changed by a tenth of K_ii,
+  // K_ji not) goes to LU, which solves it as KLU does.
+  types::global_dof_index row = 0, col = 0;
+  for (types::global_dof_index i = 0; i < K.m() && row == col; ++i)
+    for (auto entry = K.begin(i); entry != K.end(i); ++entry)
+      if (entry->column() != i && entry->value() != 0.0)
+        {
+          row = i;
+          col = entry->column();
+          break;
+        }
+  REQUIRE(row != col);
+  TrilinosWrappers::SparseMatrix unsymmetric;
+  unsymmetric.copy_from(K);
+  unsymmetric.add(row, col, 0.1 * std::abs(K.el(row, row)));
+  unsymmetric.compress(VectorOperation::add);
+  REQUIRE(unsymmetric.el(row, col) != unsymmetric.el(col, row));
+  direct.solve(unsymmetric, lu, r);
+  CHECK_FALSE(direct.used_cholesky());
+  CHECK(relative_difference(lu, klu_solution(unsymmetric, r)) < 1e-9);
 }

@@ -1,24 +1,38 @@
 #pragma once
-// SerialDirectSolver: K du = r by UMFPACK's multifrontal LU (BLAS-3 on dense
-// frontal matrices) for a run on one MPI rank. Trilinos' KLU is a
-// left-looking LU without supernodes: on the fill of a 3D Q2 mesh it is
-// several times slower (docs/toolchain.md, "Linear solvers").
+// SerialDirectSolver: K du = r on one MPI rank, by a supernodal Cholesky
+// factorisation where K is symmetric positive definite (SupernodalCholesky,
+// CHOLMOD), otherwise by UMFPACK's multifrontal LU (BLAS-3 on dense frontal
+// matrices). Trilinos' KLU is a left-looking LU without supernodes: on the
+// fill of a 3D Q2 mesh it is several times slower (docs/toolchain.md,
+// "Linear solvers").
+//
+// K is symmetric when every load has a potential (a follower pressure on a
+// closed cavity, dead loads, springs); a cavity cut open by a symmetry plane
+// makes it unsymmetric. Each solve checks the values against their mirror
+// entries, |K_ij - K_ji| <= 1e-12 max|K| (round-off of the assembly: 1e-16
+// relative on P10), and tries Cholesky; an unsymmetric or indefinite K goes
+// to LU.
 //
 // The tangent's sparsity pattern never changes during a solve, so the work
 // that depends on the pattern alone is done once (docs/results.md, "What a solve skips"):
 //   - the compressed-row copy of K and, per Trilinos entry, its place in it,
 //     so that refreshing the values is one pass without searches;
-//   - UMFPACK's symbolic analysis (fill-reducing column ordering, frontal
-//     matrix sizes), which the UMFPACK user guide (Davis, Sec. 5) allows to be
-//     reused for every matrix with the same pattern.
-// Each Newton iteration then repeats only the numeric factorisation (with its
-// own threshold partial pivoting) and the triangular solves.
+//   - each entry's mirror K_ji, for the symmetry check;
+//   - CHOLMOD's and UMFPACK's symbolic analyses (fill-reducing orderings,
+//     supernode and frontal matrix sizes), which their user guides (Davis)
+//     allow to be reused for every matrix with the same pattern; each is made
+//     when first needed.
+// Each Newton iteration then repeats only a numeric factorisation and the
+// triangular solves.
+#include <softchain/fem/supernodal_cholesky.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <umfpack.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace softchain::fem
@@ -37,9 +51,14 @@ namespace softchain::fem
                dealii::TrilinosWrappers::MPI::Vector        &solution,
                const dealii::TrilinosWrappers::MPI::Vector  &rhs);
 
+    // Did the last solve use the Cholesky factorisation (else LU)?
+    bool used_cholesky() const { return last_was_cholesky; }
+
   private:
     void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix);
-    void factorise();
+    void find_mirrors();
+    bool symmetric() const;
+    void factorise_lu();
 
     // K in compressed rows with sorted columns. UMFPACK reads compressed
     // columns, so it sees K^T and solves with UMFPACK_At.
@@ -48,6 +67,12 @@ namespace softchain::fem
     // Entry k of the Trilinos matrix's local storage (rows in order) sits at
     // value[place[k]].
     std::vector<SuiteSparse_long> place;
+    // value[mirror[k]] is K_ji for value[k] = K_ij; empty if the pattern is
+    // not symmetric.
+    std::vector<SuiteSparse_long> mirror;
+
+    std::unique_ptr<SupernodalCholesky> cholesky;
+    bool                                last_was_cholesky = false;
 
     std::array<double, UMFPACK_CONTROL> control;
     void                               *symbolic = nullptr;
