@@ -16,6 +16,12 @@ namespace softchain::fem
     common.supernodal = CHOLMOD_SUPERNODAL;
     common.print      = 0;       // an indefinite K is an expected outcome, not a message
     common.error_handler = nullptr;
+    // AMD alone: CHOLMOD's default also tries METIS and keeps the better
+    // ordering, which doubled the analysis and, on the bender's Q1 tangent
+    // (4740 DoFs), the factorisation time (0.055 against 0.030 s).
+    common.nmethods           = 1;
+    common.method[0].ordering = CHOLMOD_AMD;
+    common.postorder          = true;
     const std::size_t n = row_start.size() - 1;
     // Row r of K read as column r of K^T = K; stype 1 reads the entries with
     // row index <= column index of that, i.e. column <= row of K.

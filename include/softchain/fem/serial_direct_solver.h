@@ -73,6 +73,7 @@ namespace softchain::fem
 
     std::unique_ptr<SupernodalCholesky> cholesky;
     bool                                last_was_cholesky = false;
+    bool                                cholesky_refused  = false; // by the last K
 
     std::array<double, UMFPACK_CONTROL> control;
     void                               *symbolic = nullptr;
