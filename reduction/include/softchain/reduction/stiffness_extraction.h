@@ -59,12 +59,11 @@ namespace softchain::reduction
     double single(const SampleReduction &sample, std::size_t joint, int axis) const;
     // Does this sample's role feed the axis?
     bool feeds(const SampleReduction &sample, int axis) const;
+  private:
     // Least squares k = sum(tau angle) / sum(angle^2) over those of
     // `samples` that give a single() value; NaN when none does.
     double fit_over(const std::vector<const SampleReduction *> &samples, std::size_t joint,
                     int axis) const;
-
-  private:
     JointStiffness extract_joint(const std::vector<SampleReduction> &samples, std::size_t joint);
     void           extract_axis(const std::vector<SampleReduction> &samples, std::size_t joint,
                                 int axis, JointStiffness &stiffness);
