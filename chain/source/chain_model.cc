@@ -27,7 +27,30 @@ namespace softchain::chain
   {
     ChainModel rigid = *this;
     rigid.link_geometry_.reset();
+    rigid.link_compliance_.reset();
     return rigid;
+  }
+
+  void ChainModel::set_link_compliance(LinkCompliance compliance)
+  {
+    link_compliance_ = std::move(compliance);
+  }
+
+  ChainModel ChainModel::without_link_compliance() const
+  {
+    ChainModel rigid = *this;
+    rigid.link_compliance_.reset();
+    return rigid;
+  }
+
+  double ChainModel::link_compliance(const double pressure) const
+  {
+    return link_compliance_ ? link_compliance_->at(pressure) : 0.0;
+  }
+
+  Eigen::Vector3d ChainModel::link_deflection(const ChainLoad &load) const
+  {
+    return link_compliance_ ? link_compliance_->tip_deflection(load, chain_) : Eigen::Vector3d::Zero();
   }
 
   KinematicChain ChainModel::chain_at(const double pressure) const

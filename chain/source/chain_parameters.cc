@@ -18,6 +18,11 @@ namespace softchain::chain
                       "reduction measured them (<label>_link_geometry.csv), so that the chain "
                       "lands on the FEM finger's joints; rigid: rigid links between the "
                       "reference joint centres (the paper's chain)");
+      section.declare("Link compliance", "measured",
+                      "measured: the links give under forces, in series with the joints, with "
+                      "the compliance c(p) the reduction fitted to the chord samples "
+                      "(<label>_link_compliance.csv; links rigid without it); none: links rigid "
+                      "under forces (the paper's chain). Ignored with Link geometry = rigid");
       section.declare("Missing stiffness", "rigid",
                       "a joint axis whose k is NaN or not positive in the CSV (no usable sample, "
                       "e.g. a joint in the solid base fill, or a torque opposite to the "
@@ -50,6 +55,10 @@ namespace softchain::chain
     section.require(links == "pressure" || links == "rigid", "Link geometry",
                     "'" + links + "' is neither pressure nor rigid");
     p.pressure_link_geometry = links == "pressure";
+    const std::string compliance = section.get("Link compliance");
+    section.require(compliance == "measured" || compliance == "none", "Link compliance",
+                    "'" + compliance + "' is neither measured nor none");
+    p.link_compliance = compliance == "measured";
     const std::string missing = section.get("Missing stiffness");
     section.require(missing == "rigid" || missing == "error", "Missing stiffness",
                     "'" + missing + "' is neither rigid nor error");

@@ -40,7 +40,9 @@ namespace softchain::chain
       const auto read = [&](const StiffnessFiles &files, const std::string &method) {
         const ChainModel model =
           files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing);
-        return p.pressure_link_geometry ? model : model.with_rigid_links();
+        if (!p.pressure_link_geometry)
+          return model.with_rigid_links();
+        return p.link_compliance ? model : model.without_link_compliance();
       };
       for (const std::string method : {"M1", "M2"})
         {

@@ -103,10 +103,11 @@ namespace softchain::chain
         if (e.converged)
           {
             const ChainPose &pose = solver.pose();
-            r.position_error      = (pose.tip_position - s.tip.position).norm();
+            const Eigen::Vector3d tip = pose.tip_position + model.link_deflection(s.load);
+            r.position_error      = (tip - s.tip.position).norm();
             r.orientation_error =
               data::rotation_angle_between(pose.tip_rotation, s.tip.rotation);
-            r.tip_position       = pose.tip_position;
+            r.tip_position       = tip;
             r.joint_positions = pose.joint_positions;
             r.tip_rotation_angle =
               data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.tip_rotation);

@@ -366,6 +366,24 @@ namespace softchain::chain
                            in_pressure(tip_frame[1], path, "ry of the tip"),
                            in_pressure(tip_frame[2], path, "rz of the tip")});
     }
+
+    // The links' compliance c(p) (LinkCompliance): one row per pressure, c
+    // finite and not negative.
+    PiecewiseLinear read_link_compliance(const std::string &path)
+    {
+      const CsvTable           table = read_table(path, {"pressure", "compliance"});
+      std::map<double, double> compliance;
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          const double c = finite_number(table, path, row, "compliance");
+          if (c < 0)
+            throw InputError(where(path, row) + "compliance = " + table.text(row, "compliance") +
+                             " is negative");
+          if (!compliance.emplace(finite_number(table, path, row, "pressure"), c).second)
+            throw InputError(where(path, row) + "pressure " + table.text(row, "pressure") + " listed twice");
+        }
+      return in_pressure(compliance, path, "compliance");
+    }
   } // namespace
 
   StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
@@ -378,6 +396,7 @@ namespace softchain::chain
     force_in_pressure_paths_  = {base + "_kpsi_vs_pressure.csv", base + "_ktheta_vs_pressure.csv"};
     pressure_torque_path_     = base + "_pressure_torque.csv";
     link_geometry_path_       = base + "_link_geometry.csv";
+    link_compliance_path_     = base + "_link_compliance.csv";
   }
 
   std::string StiffnessFiles::label(const std::string &method, double half_width_fraction)
@@ -421,6 +440,9 @@ namespace softchain::chain
       }
     if (in_pressure && std::filesystem::exists(link_geometry_path_))
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
+    if (in_pressure && std::filesystem::exists(link_compliance_path_) &&
+        CsvTable::read(link_compliance_path_).n_rows() > 0)
+      joints.link_compliance = read_link_compliance(link_compliance_path_);
     if (twist_axes)
       joints.twist_points = table.twist_points;
     return joints.model(name, tip, in_pressure);

@@ -81,6 +81,10 @@ namespace softchain::chain
         "TipConstrainedEquilibrium: start needs 3 finite angles per joint, the target finite "
         "coordinates");
     const double length = (model_.chain().tip() - model_.chain().joint_centre(0)).norm();
+    // The links in series: compliance c to the contact force, the other
+    // loads' deflection d (LinkCompliance).
+    const double          compliance = model_.link_compliance(load.pressure);
+    const Eigen::Vector3d deflection = model_.link_deflection(load);
     ConstrainedEquilibrium result;
     result.angles = start;
     for (;; ++result.iterations)
@@ -89,7 +93,7 @@ namespace softchain::chain
         Eigen::VectorXd       r = equilibrium_.residual(result.angles);
         Eigen::VectorXd       c(m);
         Eigen::MatrixXd       C(m, n); // the constraints' Jacobian [J; W]
-        c.head<3>()      = pose().tip_position - target.position;
+        c.head<3>() = pose().tip_position + compliance * result.contact_force + deflection - target.position;
         C.topRows(3)     = tip_jacobian();
         Eigen::VectorXd contact_torque = C.topRows(3).transpose() * result.contact_force;
         if (target.rotation)
@@ -118,6 +122,7 @@ namespace softchain::chain
           kkt.topLeftCorner(n, n) -= dead_couple_stiffness(pose(), result.contact_moment);
         kkt.topRightCorner(n, m)   = -C.transpose();
         kkt.bottomLeftCorner(m, n) = C;
+        kkt.block(n, n, 3, 3)      = compliance * Eigen::Matrix3d::Identity();
         Eigen::VectorXd right(n + m);
         right << -r, -c;
         Eigen::VectorXd step = kkt.completeOrthogonalDecomposition().solve(right);

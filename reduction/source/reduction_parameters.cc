@@ -28,6 +28,9 @@ namespace softchain::reduction
       section.declare("Bending roles", "bending",
                       "sample roles (in-plane tip forces) feeding k_phi of the joints that the "
                       "pressure does not load");
+      section.declare("Chord roles", "chord",
+                      "sample roles (tip forces along the base-tip chord) feeding the links' "
+                      "compliance c(p)");
       section.declare("Force samples per fit", "1",
                       "k_psi(p), k_theta(p) and the bending samples' k_phi(p) are fitted to the "
                       "lightest this many force samples per pressure that turn the joint "
@@ -100,6 +103,7 @@ namespace softchain::reduction
     p.lateral_roles  = section.get_list("Lateral roles");
     p.torsion_roles  = section.get_list("Torsion roles");
     p.bending_roles  = section.get_list("Bending roles");
+    p.chord_roles    = section.get_list("Chord roles");
     p.force_samples_per_fit = section.get_integer("Force samples per fit");
     section.require(p.force_samples_per_fit >= 0, "Force samples per fit", "must be >= 0");
     p.plots          = section.get_bool("Plots");

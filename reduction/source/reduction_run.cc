@@ -130,7 +130,8 @@ namespace softchain::reduction
           {
             const MethodReduction reduction(method, fraction, parameters,
                                             geometry(fraction * spacing), mesh, samples);
-            StiffnessTables(reduction).write(directory);
+            for (const std::string &warning : StiffnessTables(reduction, parameters).write(directory))
+              std::cerr << "softchain reduce: warning: " << reduction.label() << ": " << warning << '\n';
             labels.push_back(reduction.label());
             n_below_threshold += reduction.stiffness().n_below_threshold();
           }

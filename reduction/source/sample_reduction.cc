@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace softchain::reduction
 {
@@ -18,6 +19,7 @@ namespace softchain::reduction
     , role_(sample.actuation.role)
     , pressure_(sample.actuation.pressure)
     , force_norm_(0.0)
+    , point_forces_(sample.actuation.point_forces)
   {
     for (const auto &f : sample.actuation.point_forces)
       force_norm_ += data::vector_of(f.force).norm();
@@ -89,9 +91,30 @@ namespace softchain::reduction
   void SampleReduction::set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
                                           const std::vector<Eigen::Matrix3d> &link_rotations)
   {
-    link_geometry_ = {deformed.front()};
+    link_rotations_ = link_rotations;
+    link_geometry_  = {deformed.front()};
     for (std::size_t i = 0; i + 1 < deformed.size(); ++i)
       link_geometry_.push_back(link_geometry_.back() +
                                link_rotations[i].transpose() * (deformed[i + 1] - deformed[i]));
+  }
+
+  Eigen::Vector3d SampleReduction::link_deflection_from(const SampleReduction &pressure_state) const
+  {
+    const auto &U = link_geometry_, &U_p = pressure_state.link_geometry_;
+    if (U.empty() || U.size() != U_p.size())
+      throw std::invalid_argument("SampleReduction: samples " + id_ + " and " + pressure_state.id_ +
+                                  " have no link geometry of the same joints");
+    Eigen::Vector3d r = U.front() - U_p.front();
+    for (std::size_t i = 0; i + 1 < U.size(); ++i)
+      r += link_rotations_[i] * ((U[i + 1] - U[i]) - (U_p[i + 1] - U_p[i]));
+    return r;
+  }
+
+  Eigen::Vector3d SampleReduction::chord() const
+  {
+    Eigen::Vector3d chord = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i + 1 < link_geometry_.size(); ++i)
+      chord += link_rotations_[i] * (link_geometry_[i + 1] - link_geometry_[i]);
+    return chord;
   }
 } // namespace softchain::reduction

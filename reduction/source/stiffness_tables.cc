@@ -1,4 +1,5 @@
 // StiffnessTables: the CSV files of one (method, b) reduction.
+#include <softchain/reduction/link_compliance_fit.h>
 #include <softchain/reduction/stiffness_tables.h>
 
 #include <algorithm>
@@ -9,8 +10,9 @@ namespace softchain::reduction
 {
   using data::CsvTable;
 
-  StiffnessTables::StiffnessTables(const MethodReduction &reduction)
+  StiffnessTables::StiffnessTables(const MethodReduction &reduction, const ReductionParameters &parameters)
     : reduction_(reduction)
+    , parameters_(parameters)
   {}
 
   std::vector<const SampleReduction *> StiffnessTables::pressure_samples() const
@@ -139,7 +141,7 @@ namespace softchain::reduction
     return table;
   }
 
-  void StiffnessTables::write(const std::string &directory) const
+  std::vector<std::string> StiffnessTables::write(const std::string &directory) const
   {
     const std::string stem = directory + "/" + reduction_.label();
     stiffness().write(stem + ".csv");
@@ -150,5 +152,8 @@ namespace softchain::reduction
     pressure_torque().write(stem + "_pressure_torque.csv");
     if (!reduction_.rest().link_geometry().empty())
       link_geometry().write(stem + "_link_geometry.csv");
+    const LinkComplianceFit compliance(reduction_, parameters_);
+    compliance.table().write(stem + "_link_compliance.csv");
+    return compliance.warnings();
   }
 } // namespace softchain::reduction

@@ -29,6 +29,10 @@ namespace softchain::fem
       section.declare("Torsion arm", "0", "m, half the z distance of the couple's points; "
                                           "0: a quarter of the tip face width");
       section.declare("Force point", "", "x,y,z; empty: centre of the tip face");
+      section.declare("Chord samples", "",
+                      "p : point : force ; ... (role chord): a small tip force pulling along the "
+                      "base-tip chord of the pressure-only state at p; the reduction fits the "
+                      "links' compliance to them (reduction/README.md)");
       section.declare("Validation samples", "",
                       "p : point : force [: point : force] ; ...; a point is x,y,z, tip (the "
                       "force point) or tip+arm, tip-arm (the torsion couple's points)");
@@ -85,11 +89,11 @@ namespace softchain::fem
       return text.str();
     }
 
-    // A validation sample's point: "tip" (the force point), "tip+arm" and
-    // "tip-arm" (the torsion couple's points, the force point moved by the
+    // A chord or validation sample's point: "tip" (the force point), "tip+arm"
+    // and "tip-arm" (the torsion couple's points, the force point moved by the
     // torsion arm along +z and -z) or x,y,z.
-    data::Point3 validation_point(const std::string &text, const data::Point3 &tip,
-                                  const double arm, const std::string &where)
+    data::Point3 listed_point(const std::string &text, const data::Point3 &tip,
+                              const double arm, const std::string &where)
     {
       if (text == "tip")
         return tip;
@@ -98,19 +102,21 @@ namespace softchain::fem
       return triple(text, where);
     }
 
-    // One validation entry "p : point : force [: point : force ...]".
-    data::Actuation validation(const std::string &entry, const data::Point3 &tip,
-                               const double arm, const std::string &where)
+    // One chord or validation entry "p : point : force [: point : force ...]",
+    // a sample of `role`.
+    data::Actuation listed_actuation(const std::string &role, const std::string &entry,
+                                     const data::Point3 &tip, const double arm,
+                                     const std::string &where)
     {
       const auto fields = split(entry, ':');
       if (fields.size() % 2 == 0)
         throw data::InputError(where + ": '" + entry + "' needs 'p' followed by "
                                        "'point : force' pairs");
       data::Actuation a;
-      a.role     = "validation";
+      a.role     = role;
       a.pressure = number(fields[0], where);
       for (std::size_t k = 1; k < fields.size(); k += 2)
-        a.point_forces.push_back({validation_point(fields[k], tip, arm, where),
+        a.point_forces.push_back({listed_point(fields[k], tip, arm, where),
                                   triple(fields[k + 1], where)});
       return a;
     }
@@ -173,15 +179,21 @@ namespace softchain::fem
             samples.push_back(
               sample_of("bending", p, {{at, {{0, -f, 0}}}}, label("bending", f, "N", p)));
         }
-      const auto entries = split(s.get("Validation samples"), ';');
-      for (std::size_t k = 0; k < entries.size(); ++k)
-        if (!entries[k].empty())
-          {
-            const std::string name = "validation " + std::to_string(k + 1);
-            samples.push_back(
-              {validation(entries[k], at, arm, s.describe("Validation samples") + ", sample '" + name + "'"),
-               name, ""});
-          }
+      // Chord samples (the reduction's, for the links' compliance), then the
+      // validation samples (held out): the same syntax, each of its role.
+      const std::pair<std::string, std::string> listed[] = {{"chord", "Chord samples"},
+                                                            {"validation", "Validation samples"}};
+      for (const auto &[role, parameter] : listed)
+        {
+          const auto entries = split(s.get(parameter), ';');
+          for (std::size_t k = 0; k < entries.size(); ++k)
+            if (!entries[k].empty())
+              {
+                const std::string name = role + ' ' + std::to_string(k + 1);
+                const std::string where = s.describe(parameter) + ", sample '" + name + "'";
+                samples.push_back({listed_actuation(role, entries[k], at, arm, where), name, ""});
+              }
+        }
       return samples;
     }
   } // namespace

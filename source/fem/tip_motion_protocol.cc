@@ -179,7 +179,7 @@ namespace softchain::fem
               const double          amount = sign * d.amplitude * k / steps;
               const Eigen::Vector3d world  = tip.rotation * (amount * d.axis);
               data::TipMotion       motion;
-              (d.turn ? motion.rotation : motion.translation) = {world.x(), world.y(), world.z()};
+              (d.turn ? motion.rotation : motion.translation) = {{world.x(), world.y(), world.z()}};
               motion.point_contact = point_contact && !d.turn; // a twist needs the face held
               Sample sample;
               sample.actuation            = inflated;

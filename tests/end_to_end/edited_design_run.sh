@@ -20,6 +20,7 @@ sed -e "s/^\( *set Name *=\).*/\1 my_finger/" \
     -e "s/^\( *set Torsion couples *=\).*/\1 0.1/" \
     -e "s/^\( *set Bending tip forces *=\).*/\1 0.1/" \
     -e "s/^\( *set Force sample pressures *=\).*/\1 0/" \
+    -e "s/^\( *set Chord samples *=\).*/\1 0 : tip : 0.5,0,0/" \
     -e "s/^\( *set Validation samples *=\).*/\1 7.5e3/" \
     -e "s/^\( *set Tip angle *=\).*/\1 0/" \
     "$parameters/p10.prm" > my_finger.prm

@@ -81,3 +81,32 @@ TEST_CASE("a validation sample can load the torsion couple's points by name")
   CHECK(validation->actuation.point_forces[0].point == data::Point3{{0.08, 0, 0.004}});
   CHECK(validation->actuation.point_forces[1].force == data::Point3{{0, -0.3, 0}});
 }
+
+TEST_CASE("a chord sample is a tip force of role chord, listed before the validation samples")
+{
+  const SampleSet set =
+    read_samples("chord", "  set Pressure sweep = 2e4\n"
+                          "  set Chord samples = 2e4 : tip : 0.477,-0.1505,0\n"
+                          "  set Validation samples = 2e4 : tip : 0,0,0.2\n");
+  REQUIRE(set.samples.size() == 3);
+  const auto chord = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
+    return s.actuation.role == "chord";
+  });
+  const auto validation = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
+    return s.actuation.role == "validation";
+  });
+  REQUIRE(chord != set.samples.end());
+  REQUIRE(validation != set.samples.end());
+  CHECK(chord < validation);
+  CHECK(chord->label == "chord 1");
+  CHECK(chord->actuation.pressure == 2e4);
+  REQUIRE(chord->actuation.point_forces.size() == 1);
+  CHECK(chord->actuation.point_forces[0].point == data::Point3{{0.08, 0, 0}}); // the force point
+  CHECK(chord->actuation.point_forces[0].force == data::Point3{{0.477, -0.1505, 0}});
+  // A chain of its own (role chord at 20 kPa), like a validation sample.
+  CHECK(set.chains.size() == 3);
+
+  CHECK_THROWS_WITH(read_samples("bad_chord", "  set Chord samples = 4e4 : tip\n"),
+                    Catch::Contains("parameter 'Chord samples'") &&
+                      Catch::Contains("sample 'chord 1': '4e4 : tip' needs 'p'"));
+}

@@ -119,7 +119,7 @@ TEST_CASE("pressure tables: one row per joint and distinct nonzero pressure, res
   // reads (pressure, joint) as a key.
   const MethodReduction r = reduce(finger, {bent(finger, 2e4, -0.3), bent(finger, 0, INFINITY),
                                             bent(finger, 1e4, -0.6)});
-  const StiffnessTables tables(r);
+  const StiffnessTables tables(r, parameters());
   const auto            jp = tables.pressure_torque();
   REQUIRE(jp.n_rows() == 3 * 5);
   for (std::size_t row = 0; row < jp.n_rows(); ++row)
@@ -178,7 +178,7 @@ TEST_CASE("a joint no pressure sample loads takes k_phi from the bending samples
   for (std::size_t j = 1; j < k.joints().size(); ++j)
     CHECK_FALSE(k.phi_from_bending(j));
   // The k_phi(p) table gets joint 1's row at the bending samples' pressure.
-  const data::CsvTable table = StiffnessTables(r).kphi_vs_pressure();
+  const data::CsvTable table = StiffnessTables(r, parameters()).kphi_vs_pressure();
   int                  rows  = 0;
   for (std::size_t row = 0; row < table.n_rows(); ++row)
     if (table.number(row, "joint") == 1 && !std::isnan(table.number(row, "k_phi")))
@@ -247,7 +247,7 @@ TEST_CASE("k_theta(p) is fitted to the lightest lateral increments over the pres
         Approx(a * (1 / 0.5 - 1 / 1.0)).epsilon(1e-10));
   CHECK(b.angles.theta == Approx(a / 1.0).epsilon(1e-10)); // the pressure's share, not charged to the force
   const auto k_at = [&](const MethodReduction &r) -> double {
-    const data::CsvTable table = StiffnessTables(r).k_vs_pressure(1);
+    const data::CsvTable table = StiffnessTables(r, parameters()).k_vs_pressure(1);
     for (std::size_t row = 0; row < table.n_rows(); ++row)
       if (table.number(row, "joint") == joint + 1 && table.number(row, "pressure") == 2e4)
         return table.number(row, "k_theta");

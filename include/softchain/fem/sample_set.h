@@ -17,6 +17,11 @@
 //                                                 # tip face's extent along z
 //     set Force point        =                    # x,y,z; empty: the centre of
 //                                                 # the tip face
+//     set Chord samples      = 20e3 : tip : 0.477,-0.1505,0
+//                            # syntax of Validation samples (below); role
+//                            # chord: a small tip force along the base-tip
+//                            # chord of the pressure-only state at p, for the
+//                            # links' compliance (not held out)
 //     set Validation samples = 40e3 : tip : 0,0,0.2 ; 20e3 : 0.07,0.006,0.009 : 0,-0.1,0
 //                            # p : point : force [: point : force ...] ; ...
 //                            # role validation; 'tip' is the force point

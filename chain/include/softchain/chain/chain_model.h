@@ -1,10 +1,12 @@
 #pragma once
 // ChainModel: one finger of the chain tier, i.e. the geometry (KinematicChain,
 // optionally with links shaped by the pressure: LinkGeometry), the joint
-// stiffness K and the pressure actuation J_p; everything the equilibrium
+// stiffness K, the pressure actuation J_p and, optionally, the links' series
+// compliance (LinkCompliance); everything the equilibrium
 // K q = J_p p + J(q)^T f needs besides the load.
 #include <softchain/chain/joint_stiffness.h>
 #include <softchain/chain/kinematic_chain.h>
+#include <softchain/chain/link_compliance.h>
 #include <softchain/chain/link_geometry.h>
 #include <softchain/chain/pressure_actuation.h>
 
@@ -31,8 +33,18 @@ namespace softchain::chain
     // The same into `chain`, which must be a copy of chain() (no allocation).
     void                     chain_at(double pressure, KinematicChain &chain) const;
     void                     set_link_geometry(LinkGeometry geometry);
-    // The same model with rigid links between the reference centres.
+    // The same model with rigid links between the reference centres (no
+    // link geometry, no link compliance).
     ChainModel               with_rigid_links() const;
+    void                     set_link_compliance(LinkCompliance compliance);
+    // The same model with links rigid under forces (no link compliance).
+    ChainModel               without_link_compliance() const;
+    bool                     has_link_compliance() const { return link_compliance_.has_value(); }
+    // c(p) of the links in series with the joints, m/N (0: rigid links).
+    double                   link_compliance(double pressure) const;
+    // The tip's deflection by the links under `load` (LinkCompliance; zero
+    // without link compliance), m, world.
+    Eigen::Vector3d          link_deflection(const ChainLoad &load) const;
     bool                     has_link_geometry() const { return link_geometry_.has_value(); }
     const JointStiffness    &stiffness() const { return stiffness_; }
     const PressureActuation &actuation() const { return actuation_; }
@@ -44,5 +56,6 @@ namespace softchain::chain
     JointStiffness    stiffness_;
     PressureActuation actuation_;
     std::optional<LinkGeometry> link_geometry_;
+    std::optional<LinkCompliance> link_compliance_;
   };
 } // namespace softchain::chain

@@ -2,7 +2,8 @@
 // JointTables: a chain's joints as the reduction's files give them, before
 // they become a ChainModel: centres J_i, the twist axis points S_i, k per
 // joint and axis, optionally k(p) per axis, J_p(p) per joint and axis, and
-// the links' geometry in pressure (LinkGeometry).
+// the links' geometry in pressure (LinkGeometry) and their series compliance
+// c(p) (LinkCompliance).
 //
 // Twist axes: joint i twists (psi) about the proximal link's x axis through
 // S_i and bends (theta, phi) about J_i (KinematicChain::with_twist_offsets);
@@ -29,10 +30,11 @@ namespace softchain::chain
     std::array<std::vector<PiecewiseLinear>, 3> k_in_pressure; // per axis, one per joint; empty: constant
     std::vector<PiecewiseLinear>                pressure_torque; // J_p(p), 3 per joint
     std::optional<LinkGeometry>                 link_geometry;   // none: rigid reference links
+    std::optional<PiecewiseLinear>              link_compliance; // c(p), m/N; none: links rigid under forces
 
-    // The chain to the tip point `tip`; J_p(p) and the link geometry from
-    // the tables when `pressure_tables`, else the rest J_p (p = 0) and rigid
-    // links between the reference centres.
+    // The chain to the tip point `tip`; J_p(p), the link geometry and the
+    // link compliance from the tables when `pressure_tables`, else the rest
+    // J_p (p = 0) and rigid links between the reference centres.
     ChainModel model(const std::string &name, const Eigen::Vector3d &tip, bool pressure_tables) const;
   };
 } // namespace softchain::chain

@@ -13,6 +13,9 @@
 //   <label>_link_geometry.csv     pressure,point,x,y,z,rx,ry,rz (LinkGeometry; optional,
 //                                 without it the links are rigid between the
 //                                 reference centres)
+//   <label>_link_compliance.csv   pressure,compliance,samples (LinkCompliance, c in m/N;
+//                                 optional, without it or without rows the links
+//                                 are rigid under forces)
 // Joints are numbered 1..n (docs/conventions.md, "Joints") and listed in that order in the
 // stiffness file. Bad content (missing column, missing or misnumbered joint,
 // NaN, zero or negative stiffness, NaN J_p) is an InputError naming the file
@@ -39,14 +42,15 @@ namespace softchain::chain
     const std::string &bending_in_pressure_path() const { return bending_in_pressure_path_; }
     const std::string &pressure_torque_path() const { return pressure_torque_path_; }
     const std::string &link_geometry_path() const { return link_geometry_path_; }
+    const std::string &link_compliance_path() const { return link_compliance_path_; }
     // k_psi(p) (axis 0) or k_theta(p) (axis 1).
     const std::string &force_in_pressure_path(int axis) const { return force_in_pressure_paths_[axis]; }
     bool               exist() const;
 
     // The chain of these files with the given tip point. `column` is "value"
     // (k at the largest load) or "fit" (least-squares over the load set);
-    // `in_pressure` makes k_phi, J_p and the link geometry follow their
-    // pressure tables. A k
+    // `in_pressure` makes k_phi, J_p, the link geometry and the link
+    // compliance follow their pressure tables. A k
     // that is NaN or not positive at some joints holds them rigid
     // (`rigid_where_missing`) or is an InputError.
     // With `twist_axes`, joint i twists about the axis through its twist
@@ -62,5 +66,6 @@ namespace softchain::chain
     std::array<std::string, 2> force_in_pressure_paths_; // k_psi(p), k_theta(p)
     std::string pressure_torque_path_;
     std::string link_geometry_path_;
+    std::string link_compliance_path_;
   };
 } // namespace softchain::chain

@@ -6,13 +6,17 @@
 // PrescribedTip holds the whole tip face. Unknowns: the joint angles q, the
 // contact force f_c on the tip and, with a rotation, the contact couple m_c
 // (the Lagrange multipliers of the constraints):
-//   r(q) - J(q)^T f_c - W(q)^T m_c = 0,   x_tip(q) - x* = 0,   log(R_tip(q) R*^T) = 0,
+//   r(q) - J(q)^T f_c - W(q)^T m_c = 0,   x_tip(q) + c f_c + d - x* = 0,
+//   log(R_tip(q) R*^T) = 0,
 // r the residual of ChainEquilibrium under the other loads (pressure, point
-// loads), J = dx_tip/dq with column (i, alpha) a_{i,alpha} x (x_tip - c_i),
+// loads), c the links' compliance and d the other loads' deflection of the
+// tip (LinkCompliance; both 0 with links rigid under forces: the links then
+// give c f_c in series with the joints),
+// J = dx_tip/dq with column (i, alpha) a_{i,alpha} x (x_tip - c_i),
 // W = [a_{i,alpha}] the tip's angular velocity Jacobian (kinematic_chain.h)
 // and log the rotation vector. Newton's method on (q, f_c, m_c):
 //   [ H(q; f_c) - G(q; m_c)  -J^T  -W^T ] [ dq  ]     [ r - J^T f_c - W^T m_c ]
-//   [ J                        0     0  ] [ df_c] = - [ x_tip - x*           ]
+//   [ J                        c I   0  ] [ df_c] = - [ x_tip + c f_c + d - x* ]
 //   [ W                        0     0  ] [ dm_c]     [ log(R_tip R*^T)      ]
 // H(q; f_c) is ChainEquilibrium's tangent with f_c added as a dead point load
 // at the tip (its geometric stiffness), G the derivative of W^T m_c for a
@@ -21,14 +25,15 @@
 // a_{l,beta} x a_{j,alpha}. W is the exact derivative of the rotation
 // constraint at the solution (log(R) = 0) and a first-order one elsewhere,
 // so Newton still converges quadratically. Where the Jacobian is rank
-// deficient -- a straight chain cannot move its tip along its axis to first
-// order, a single rigid link never -- the system is solved in the
+// deficient and the links are rigid -- a straight chain cannot move its tip
+// along its axis to first order, a single rigid link never -- the system is
+// solved in the
 // least-squares, minimum-norm sense, so that the force component the
 // kinematics cannot resist (along a straight chain) stays undetermined at
 // zero increment instead of blowing up. Converged when
 // |r - J^T f_c - W^T m_c|_inf <= tolerance * (|K q|_inf + |J_p p|_inf +
-// |J^T f_c|_inf + |W^T m_c|_inf), |x_tip - x*|_inf <= tolerance * (chain
-// length) and |log(R_tip R*^T)|_inf <= tolerance.
+// |J^T f_c|_inf + |W^T m_c|_inf), |x_tip + c f_c + d - x*|_inf <= tolerance
+// * (chain length) and |log(R_tip R*^T)|_inf <= tolerance.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/chain_model.h>

@@ -41,6 +41,7 @@ namespace softchain::reduction
     std::vector<std::string>    lateral_roles;            // feed k_theta
     std::vector<std::string>    torsion_roles;            // feed k_psi
     std::vector<std::string>    bending_roles;            // feed k_phi where no pressure does
+    std::vector<std::string>    chord_roles;              // feed the links' compliance
     int                         force_samples_per_fit = 1; // lightest per pressure; 0: all
     bool                        plots = true;
 

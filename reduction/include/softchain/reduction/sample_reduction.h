@@ -44,6 +44,17 @@ namespace softchain::reduction
     const std::vector<Eigen::Vector3d> &link_geometry() const { return link_geometry_; }
     // The tip face's frame in the last link's frame, as a rotation vector (rad).
     const Eigen::Vector3d &tip_frame() const { return tip_frame_; }
+    // The sample's point forces (reference point, force).
+    const std::vector<data::PointForce> &point_forces() const { return point_forces_; }
+    // The tip's displacement that the links' own deformation adds from
+    // `pressure_state` to this sample: the deformed tip minus where the
+    // chain of pressure_state's links lands it when turned by this sample's
+    // link rotations R_i,
+    //   r = U_1 - U_1(p) + sum_i R_i [(U_i+1 - U_i) - (U_i+1(p) - U_i(p))],
+    // 0 if the links are rigid between the two states (LinkComplianceFit).
+    Eigen::Vector3d link_deflection_from(const SampleReduction &pressure_state) const;
+    // The deformed chord from joint 1's centre to the tip, sum_i R_i (U_i+1 - U_i).
+    Eigen::Vector3d chord() const;
 
   private:
     void set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
@@ -55,6 +66,8 @@ namespace softchain::reduction
     double                   force_norm_;
     std::vector<JointResult> joints_;
     std::vector<Eigen::Vector3d> link_geometry_;
+    std::vector<Eigen::Matrix3d> link_rotations_; // R_i of link i (the last torque-carrying frame)
     Eigen::Vector3d              tip_frame_ = Eigen::Vector3d::Zero();
+    std::vector<data::PointForce> point_forces_;
   };
 } // namespace softchain::reduction

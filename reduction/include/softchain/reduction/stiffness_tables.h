@@ -16,6 +16,9 @@
 //                                 the last link's) at rest and at each
 //                                 pressure sample; not written for a mesh
 //                                 without a tip face
+//   <label>_link_compliance.csv   the links' compliance c per pressure of the
+//                                 chord samples (LinkComplianceFit); no rows
+//                                 without chord samples
 #include <softchain/data/csv_table.h>
 #include <softchain/reduction/method_reduction.h>
 
@@ -26,7 +29,7 @@ namespace softchain::reduction
   class StiffnessTables
   {
   public:
-    explicit StiffnessTables(const MethodReduction &reduction);
+    StiffnessTables(const MethodReduction &reduction, const ReductionParameters &parameters);
 
     data::CsvTable stiffness() const;
     data::CsvTable samples() const;
@@ -37,8 +40,9 @@ namespace softchain::reduction
     data::CsvTable pressure_torque() const;
     data::CsvTable link_geometry() const;
 
-    // Writes the seven files into `directory` (created if missing).
-    void write(const std::string &directory) const;
+    // Writes the files into `directory` (created if missing); returns the
+    // link compliance fit's warnings.
+    std::vector<std::string> write(const std::string &directory) const;
 
   private:
     // The samples fed to k_phi, one per distinct nonzero pressure (the first
@@ -46,6 +50,7 @@ namespace softchain::reduction
     // one row per (pressure, joint), the rest configuration being p = 0.
     std::vector<const SampleReduction *> pressure_samples() const;
 
-    const MethodReduction &reduction_;
+    const MethodReduction     &reduction_;
+    ReductionParameters        parameters_;
   };
 } // namespace softchain::reduction

@@ -1,0 +1,97 @@
+#include <softchain/data/vector_of_point.h>
+#include <softchain/reduction/link_compliance_fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace softchain::reduction
+{
+  namespace
+  {
+    // The pressure state of each pressure: the first pressure sample at it,
+    // the rest configuration at 0.
+    bool has_role(const SampleReduction &s, const std::vector<std::string> &roles)
+    {
+      return std::find(roles.begin(), roles.end(), s.role()) != roles.end();
+    }
+
+    std::map<double, const SampleReduction *> pressure_states(const MethodReduction &reduction,
+                                                              const std::vector<std::string> &roles)
+    {
+      std::map<double, const SampleReduction *> states{{0.0, &reduction.rest()}};
+      for (const SampleReduction &s : reduction.samples())
+        if (has_role(s, roles) && s.point_forces().empty())
+          states.emplace(s.pressure(), &s);
+      return states;
+    }
+
+    // F_s = sum_k s_k f_k, s_k the fraction of [x_1, x_T] proximal to force k.
+    Eigen::Vector3d effective_force(const SampleReduction &sample, const SampleReduction &rest)
+    {
+      const double    x_1    = rest.link_geometry().front().x();
+      const double    length = rest.link_geometry().back().x() - x_1;
+      Eigen::Vector3d F      = Eigen::Vector3d::Zero();
+      for (const data::PointForce &f : sample.point_forces())
+        F += std::clamp((f.point[0] - x_1) / length, 0.0, 1.0) * data::vector_of(f.force);
+      return F;
+    }
+
+    double angle_deg(const Eigen::Vector3d &a, const Eigen::Vector3d &b)
+    {
+      return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
+    }
+  } // namespace
+
+  LinkComplianceFit::LinkComplianceFit(const MethodReduction     &reduction,
+                                       const ReductionParameters &parameters)
+  {
+    if (reduction.rest().link_geometry().empty())
+      return; // no tip face, no links to measure
+    const auto states = pressure_states(reduction, parameters.pressure_roles);
+    struct Sums
+    {
+      double rF = 0, FF = 0, angle = 0;
+      int    n  = 0;
+    };
+    std::map<double, Sums> sums;
+    for (const SampleReduction &s : reduction.samples())
+      {
+        if (!has_role(s, parameters.chord_roles))
+          continue;
+        const auto state = states.find(s.pressure());
+        if (state == states.end())
+          {
+            warnings_.push_back("chord sample '" + s.id() + "' at " + data::CsvTable::cell(s.pressure()) +
+                                " Pa skipped: no pressure sample at that pressure");
+            continue;
+          }
+        const Eigen::Vector3d F = effective_force(s, reduction.rest());
+        Sums                 &sum = sums[s.pressure()];
+        sum.rF += s.link_deflection_from(*state->second).dot(F);
+        sum.FF += F.squaredNorm();
+        sum.angle = std::max(sum.angle, angle_deg(F, state->second->chord()));
+        ++sum.n;
+      }
+    for (const auto &[pressure, sum] : sums)
+      {
+        const double c = sum.FF > 0 ? sum.rF / sum.FF : NAN;
+        if (!(c >= 0))
+          {
+            warnings_.push_back("no link compliance at " + data::CsvTable::cell(pressure) +
+                                " Pa: the chord samples give c = " + data::CsvTable::cell(c) +
+                                " m/N (their forces do not pull along the chord?)");
+            continue;
+          }
+        values_.push_back({pressure, c, sum.n, sum.angle});
+      }
+  }
+
+  data::CsvTable LinkComplianceFit::table() const
+  {
+    data::CsvTable table({"pressure", "compliance", "samples", "chord_angle_deg"});
+    for (const LinkComplianceAtPressure &v : values_)
+      table.add_row(std::vector<double>{v.pressure, v.compliance, double(v.samples), v.chord_angle});
+    return table;
+  }
+} // namespace softchain::reduction
