@@ -75,15 +75,18 @@ namespace softchain::reduction
       }
     for (const auto &[pressure, sum] : sums)
       {
-        const double c = sum.FF > 0 ? sum.rF / sum.FF : NAN;
-        if (!(c >= 0))
+        if (!(sum.FF > 0))
           {
             warnings_.push_back("no link compliance at " + data::CsvTable::cell(pressure) +
-                                " Pa: the chord samples give c = " + data::CsvTable::cell(c) +
-                                " m/N (their forces do not pull along the chord?)");
+                                " Pa: its chord samples carry no force");
             continue;
           }
-        values_.push_back({pressure, c, sum.n, sum.angle});
+        const double c = sum.rF / sum.FF;
+        if (c < 0)
+          warnings_.push_back("link compliance at " + data::CsvTable::cell(pressure) +
+                              " Pa set to 0: the links' deflection opposes the chord samples' "
+                              "force (least squares c = " + data::CsvTable::cell(c) + " m/N)");
+        values_.push_back({pressure, std::max(c, 0.0), sum.n, sum.angle});
       }
   }
 

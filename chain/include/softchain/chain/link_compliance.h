@@ -1,13 +1,13 @@
 #pragma once
 // LinkCompliance: the links' own elasticity, in series with the joints.
 // Rigid links cannot stretch or shear, the silicone between two joints can:
-// pushed along the base-tip chord of the curled finger (the direction in
-// which the joints alone are stiffest), P10 gives as much at its links as at
-// its joints (docs/results.md, "Link compliance"). The model is the simplest
-// that expresses this: every link is an isotropic linear spring in series
-// with its joints, its compliance uniform per unit length along the chain, so
-// that a point force f at the fraction s of the chain's length from joint 1
-// to the tip moves the tip by
+// when P10's curled tip is moved 5 mm along its base-tip chord (the
+// direction in which the joints alone are stiffest), about 2 mm of it is
+// its links' (docs/results.md, "The paper's validation experiment on P10").
+// The model is the simplest that expresses this: every link is an isotropic
+// linear spring in series with its joints, its compliance uniform per unit
+// length along the chain, so that a point force f at the fraction s of the
+// chain's length from joint 1 to the tip moves the tip by
 //   delta = c(p) s f,
 // c(p) [m/N] the compliance of all links together, fitted by the reduction
 // to the chord samples (reduction/README.md) and interpolated in pressure
