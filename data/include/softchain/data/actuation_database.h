@@ -106,7 +106,8 @@ namespace softchain::data
     std::vector<PointForce> point_forces;
     // What the sample is for: "pressure" (k_phi), "lateral" (k_theta),
     // "torsion" (k_psi), "bending" (k_phi of the joints the pressure does not
-    // load), "validation" (never used for extraction),
+    // load), "chord" (the links' compliance), "validation" (never used for
+    // extraction),
     // "protocol inflation" and "protocol" (the prescribed-motion protocol:
     // its inflated state and its tip motions), or a user's name.
     std::string role;
