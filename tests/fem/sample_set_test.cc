@@ -23,6 +23,13 @@ namespace
     std::ofstream(path) << "subsection Samples\n" << entries << "end\n";
     return SampleSet::read(data::PrmFile::read(path), {{{0.08, 0, 0}}, 0.016}, "h");
   }
+
+  // The first sample of `role` in `set` (end() if none).
+  std::vector<Sample>::const_iterator first_of_role(const SampleSet &set, const std::string &role)
+  {
+    return std::find_if(set.samples.begin(), set.samples.end(),
+                        [&](const Sample &s) { return s.actuation.role == role; });
+  }
 } // namespace
 
 TEST_CASE("force samples are made at each force sample pressure, one chain per role and pressure")
@@ -67,12 +74,8 @@ TEST_CASE("a validation sample can load the torsion couple's points by name")
   const SampleSet set =
     read_samples("validation", "  set Torsion couples = 0.2\n"
                                "  set Validation samples = 2e4 : tip+arm : 0,0.3,0 : tip-arm : 0,-0.3,0\n");
-  const auto validation = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
-    return s.actuation.role == "validation";
-  });
-  const auto torsion = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
-    return s.actuation.role == "torsion";
-  });
+  const auto validation = first_of_role(set, "validation");
+  const auto torsion    = first_of_role(set, "torsion");
   REQUIRE(validation != set.samples.end());
   REQUIRE(torsion != set.samples.end());
   REQUIRE(validation->actuation.point_forces.size() == 2);
@@ -89,12 +92,8 @@ TEST_CASE("a chord sample is a tip force of role chord, listed before the valida
                           "  set Chord samples = 2e4 : tip : 0.477,-0.1505,0\n"
                           "  set Validation samples = 2e4 : tip : 0,0,0.2\n");
   REQUIRE(set.samples.size() == 3);
-  const auto chord = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
-    return s.actuation.role == "chord";
-  });
-  const auto validation = std::find_if(set.samples.begin(), set.samples.end(), [](const Sample &s) {
-    return s.actuation.role == "validation";
-  });
+  const auto chord      = first_of_role(set, "chord");
+  const auto validation = first_of_role(set, "validation");
   REQUIRE(chord != set.samples.end());
   REQUIRE(validation != set.samples.end());
   CHECK(chord < validation);
