@@ -180,9 +180,9 @@ namespace softchain::data
   } // namespace
 
   void PrmSection::declare(const std::string &name, const std::string &default_value,
-                           const std::string &documentation)
+                           const std::string &documentation, const bool part_of_design)
   {
-    entries[name] = Entry{default_value, documentation, 0};
+    entries[name] = Entry{default_value, documentation, 0, part_of_design};
   }
 
   std::string PrmSection::get(const std::string &name) const
@@ -274,7 +274,8 @@ namespace softchain::data
   {
     std::string text;
     for (const auto &[name, entry] : entries)
-      text += title + "/" + name + " = " + canonical_value(entry.value) + "\n";
+      if (entry.part_of_design)
+        text += title + "/" + name + " = " + canonical_value(entry.value) + "\n";
     return text;
   }
 

@@ -5,6 +5,7 @@
 
 #include <softchain/data/content_hash.h>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -264,6 +265,11 @@ namespace softchain::fem
     section.declare("Residual tolerance", "1e-6",
                     "Newton stops when |R| <= tol * |external load| ...");
     section.declare("Displacement tolerance", "1e-6", "... and |du| <= tol * |u|.");
+    section.declare("Intermediate tolerance", "1e-2",
+                    "both tolerances of the load steps before a load path's last, whose states "
+                    "are only stepping stones (the last step converges to the two above); not "
+                    "part of the design hash: the answer does not depend on it",
+                    false);
     section.declare("Maximum Newton iterations", "12");
     section.declare("Initial load step", "0.125");
     section.declare("Minimum load step", "1e-4");
@@ -289,6 +295,8 @@ namespace softchain::fem
   {
     residual_tolerance     = bounded_double(section, "Residual tolerance", 0, unbounded);
     displacement_tolerance = bounded_double(section, "Displacement tolerance", 0, unbounded);
+    intermediate_tolerance = std::max({bounded_double(section, "Intermediate tolerance", 0, unbounded),
+                                       residual_tolerance, displacement_tolerance});
     max_newton_iterations  = bounded_integer(section, "Maximum Newton iterations", 1, 100000);
     initial_load_step      = bounded_double(section, "Initial load step", 0, 1);
     min_load_step          = bounded_double(section, "Minimum load step", 0, 1);

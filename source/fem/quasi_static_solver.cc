@@ -306,12 +306,13 @@ namespace softchain::fem
     return std::isfinite(du.l2_norm());
   }
 
-  bool QuasiStaticSolver::converged(const double residual, const double update) const
+  bool QuasiStaticSolver::converged(const double residual, const double update, const bool final_state) const
   {
     const double u_norm = u_owned.l2_norm();
     const double scale  = std::max({f_ext_norm, motion_residual_scale, 1e-300});
-    return residual <= prm.solver.residual_tolerance * scale &&
-           update <= prm.solver.displacement_tolerance * std::max(u_norm, 1e-300);
+    const double loose  = prm.solver.intermediate_tolerance;
+    return residual <= (final_state ? prm.solver.residual_tolerance : loose) * scale &&
+           update <= (final_state ? prm.solver.displacement_tolerance : loose) * std::max(u_norm, 1e-300);
   }
 
   // Line search on the energy along the Newton direction (Crisfield, Non-
@@ -381,7 +382,8 @@ namespace softchain::fem
   }
 
   QuasiStaticSolver::NewtonOutcome QuasiStaticSolver::newton(const LoadState &state,
-                                                             Result          &result)
+                                                             Result          &result,
+                                                             const bool       final_state)
   {
     double       s0             = 0.0; // du . R before the step
     unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
@@ -405,7 +407,7 @@ namespace softchain::fem
         result.residual_history.push_back(residual);
         if (!std::isfinite(residual))
           return {false, false, it};
-        if (residual == 0.0 || (it > 0 && converged(residual, du.l2_norm())))
+        if (residual == 0.0 || (it > 0 && converged(residual, du.l2_norm(), final_state)))
           return {true, false, it};
         if (it == prm.solver.max_newton_iterations)
           break;
@@ -446,7 +448,7 @@ namespace softchain::fem
     if (!springs || band >= continuation_band || !at_rest())
       return solve_path(target, first_step);
     springs->set_band(continuation_band);
-    Result result = solve_path(target, first_step);
+    Result result = solve_path(target, first_step, false); // the narrowing continues it
     const bool narrowed = result.converged && narrow_band(continuation_band, result);
     springs->set_band(band);
     if (narrowed)
@@ -475,7 +477,7 @@ namespace softchain::fem
     while (!path.finished())
       {
         springs->set_band(from * std::pow(to / from, path.next()));
-        const auto outcome = newton(load, result);
+        const auto outcome = newton(load, result, path.next() >= 1.0);
         result.newton_iterations += outcome.iterations;
         if (outcome.converged)
           {
@@ -498,7 +500,8 @@ namespace softchain::fem
   // of the last two converged states (a first-order continuation
   // predictor), which leaves Newton only the correction; a failed step is
   // retried from the last converged state.
-  QuasiStaticSolver::Result QuasiStaticSolver::solve_path(const LoadState &target, const double first_step)
+  QuasiStaticSolver::Result QuasiStaticSolver::solve_path(const LoadState &target, const double first_step,
+                                                          const bool last_is_final)
   {
     const auto start_time = std::chrono::steady_clock::now();
     Result     result;
@@ -525,7 +528,7 @@ namespace softchain::fem
             prescribed_tip->apply(*state.tip_motion, u_owned);
             u_ghosted = u_owned;
           }
-        const auto outcome = newton(state, result);
+        const auto outcome = newton(state, result, last_is_final && s_try >= 1.0);
         result.newton_iterations += outcome.iterations;
         if (outcome.converged)
           {

@@ -146,6 +146,7 @@ TEST_CASE("prm: canonical values do not depend on how a number is written")
     section.declare("E", "2.6e5");
     section.declare("Rigidity", "fabric: 2000, thread: 500");
     section.declare("Name", "p10");
+    section.declare("Stepping", "1e-2", "not part of the design", false);
     PrmFile::read(write(dir, "subsection Materials\n" + set_lines + "end\n"))
       .parse_section("Materials", section);
     return section.canonical_values();
@@ -158,6 +159,9 @@ TEST_CASE("prm: canonical values do not depend on how a number is written")
   CHECK(values("  set E = 2.7e5\n") != defaults);
   CHECK(values("  set Rigidity = fabric: 2000, thread: 501\n") != defaults);
   CHECK(values("  set Name = p13\n") != defaults);
+  // An entry declared as not part of the design is left out, whatever its value.
+  CHECK(values("  set Stepping = 0.5\n") == defaults);
+  CHECK(defaults.find("Stepping") == std::string::npos);
 }
 
 TEST_CASE("prm: typed getters reject malformed values")

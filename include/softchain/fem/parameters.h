@@ -118,6 +118,9 @@ namespace softchain::fem
     };
     double       residual_tolerance;     // relative to the external load norm
     double       displacement_tolerance; // relative Newton update
+    // Both tolerances of the load steps before a path's last (whose state is
+    // only a stepping stone); at least the final ones.
+    double       intermediate_tolerance;
     unsigned int max_newton_iterations;
     double       initial_load_step;
     double       min_load_step;

@@ -143,7 +143,9 @@ namespace softchain::fem
                               const dealii::AffineConstraints<double> &constraints);
     bool solve_linear(); // false if the linear solver failed
     // Along the straight load path from the current state to `target`.
-    Result solve_path(const LoadState &target, double first_step);
+    // `last_is_final`: the target state converges to the final tolerances
+    // (else to the intermediate one: a stage that another stage continues).
+    Result solve_path(const LoadState &target, double first_step, bool last_is_final = true);
     // From an equilibrium under spring band `from` to one under the .prm's
     // band at the same load, by a path in log d; false if it fails.
     bool   narrow_band(double from, Result &result);
@@ -155,9 +157,11 @@ namespace softchain::fem
       bool         inverted;
       unsigned int iterations;
     };
-    NewtonOutcome newton(const LoadState &state, Result &result);
+    // Newton at `state`, to the final tolerances or (an intermediate load
+    // step) to Solver/Intermediate tolerance.
+    NewtonOutcome newton(const LoadState &state, Result &result, bool final_state = true);
     void          prepare_tip_motion(const LoadState &target);
-    bool          converged(double residual, double update) const;
+    bool          converged(double residual, double update, bool final_state) const;
     bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,

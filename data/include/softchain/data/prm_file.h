@@ -20,9 +20,11 @@ namespace softchain::data
   {
   public:
     // Declares an entry with its default; PrmFile::parse_section() rejects
-    // undeclared ones.
+    // undeclared ones. An entry that does not change the answer (e.g. how
+    // tightly the intermediate load steps converge) is declared with
+    // `part_of_design` false and left out of canonical_values().
     void declare(const std::string &name, const std::string &default_value,
-                 const std::string &documentation = "");
+                 const std::string &documentation = "", bool part_of_design = true);
 
     std::string         get(const std::string &name) const;
     double              get_double(const std::string &name) const;
@@ -47,7 +49,8 @@ namespace softchain::data
     // Throws InputError "describe(name): what" unless ok.
     void require(bool ok, const std::string &name, const std::string &what) const;
 
-    // Every entry as "TITLE/NAME = VALUE", one per line in name order, with
+    // Every entry that is part of the design as "TITLE/NAME = VALUE", one per
+    // line in name order, with
     // each number of VALUE rewritten canonically (2.6e5 and 260000 agree):
     // what a design hash needs, independent of how the file is formatted.
     std::string canonical_values() const;
@@ -59,6 +62,7 @@ namespace softchain::data
       std::string value;
       std::string documentation;
       int         line = 0; // 0: default
+      bool        part_of_design = true;
     };
     std::map<std::string, Entry> entries;
   };
