@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -368,10 +369,17 @@ namespace softchain::chain
     }
 
     // The links' compliance c(p) (LinkCompliance): one row per pressure, c
-    // finite and not negative.
-    PiecewiseLinear read_link_compliance(const std::string &path)
+    // finite and not negative; none if the file is missing or has no rows.
+    std::optional<PiecewiseLinear> read_link_compliance(const std::string &path)
     {
-      const CsvTable           table = read_table(path, {"pressure", "compliance"});
+      if (!std::filesystem::exists(path))
+        return std::nullopt;
+      const CsvTable table = CsvTable::read(path);
+      if (table.n_rows() == 0)
+        return std::nullopt;
+      for (const std::string column : {"pressure", "compliance"})
+        if (!table.has_column(column))
+          throw InputError(path + ": missing column '" + column + "'");
       std::map<double, double> compliance;
       for (std::size_t row = 0; row < table.n_rows(); ++row)
         {
@@ -440,8 +448,7 @@ namespace softchain::chain
       }
     if (in_pressure && std::filesystem::exists(link_geometry_path_))
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
-    if (in_pressure && std::filesystem::exists(link_compliance_path_) &&
-        CsvTable::read(link_compliance_path_).n_rows() > 0)
+    if (in_pressure)
       joints.link_compliance = read_link_compliance(link_compliance_path_);
     if (twist_axes)
       joints.twist_points = table.twist_points;

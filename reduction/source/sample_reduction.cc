@@ -18,11 +18,8 @@ namespace softchain::reduction
     : id_(sample.id)
     , role_(sample.actuation.role)
     , pressure_(sample.actuation.pressure)
-    , force_norm_(0.0)
     , point_forces_(sample.actuation.point_forces)
   {
-    for (const auto &f : sample.actuation.point_forces)
-      force_norm_ += data::vector_of(f.force).norm();
     const JointFrames frames(method, geometry.slabs(), geometry.reference_points(),
                              geometry.points(sample.x), sample.id);
     const PressureTorque      pressure_torque(mesh.cavity_triangles, sample.x);
@@ -96,6 +93,14 @@ namespace softchain::reduction
     for (std::size_t i = 0; i + 1 < deformed.size(); ++i)
       link_geometry_.push_back(link_geometry_.back() +
                                link_rotations[i].transpose() * (deformed[i + 1] - deformed[i]));
+  }
+
+  double SampleReduction::force_norm() const
+  {
+    double sum = 0.0;
+    for (const auto &f : point_forces_)
+      sum += data::vector_of(f.force).norm();
+    return sum;
   }
 
   Eigen::Vector3d SampleReduction::link_deflection_from(const SampleReduction &pressure_state) const
