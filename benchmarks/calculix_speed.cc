@@ -12,6 +12,8 @@
 // in both codes, and the ratio of the times.
 //
 // Run: calculix_speed [CELLS along the length = 16] [PRESSURE Pa = 5000] [RUNS = 3]
+// Both codes write their files (.prm, the ccx deck and its output) into a
+// scratch directory, $TMPDIR/softchain_calculix_speed.
 #include <calculix_deck.h>
 #include <fem_test_tools.h>
 
@@ -24,6 +26,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -156,6 +159,9 @@ int main(int argc, char **argv)
       std::fprintf(stderr, "ccx not found (scripts/setup installs calculix-ccx)\n");
       return 2;
     }
+  const auto scratch = std::filesystem::temp_directory_path() / "softchain_calculix_speed";
+  std::filesystem::create_directories(scratch);
+  std::filesystem::current_path(scratch);
   std::printf("hollow bender, %u cells along the length, %.0f Pa in one step, %u runs each, 1 thread\n",
               cells, pressure, runs);
   std::printf("%-16s %7s %10s %10s %8s %8s %14s %14s %9s\n", "pair", "DoFs", "softchain", "ccx",

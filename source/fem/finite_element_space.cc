@@ -109,4 +109,18 @@ namespace softchain::fem
     const auto &unit = fe->base_element(0).get_unit_support_points()[base_index];
     return mapping->transform_unit_to_real_cell(cell, unit);
   }
+
+  std::vector<std::array<unsigned int, 3>> node_dof_table(const FiniteElement<3> &fe)
+  {
+    AssertThrow(fe.n_components() == 3 && fe.n_base_elements() == 1 &&
+                  fe.element_multiplicity(0) == 3 && fe.is_primitive(),
+                ExcMessage("node_dof_table needs three copies of one scalar element"));
+    std::vector<std::array<unsigned int, 3>> table(fe.n_dofs_per_cell() / 3);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      {
+        const auto [component, node] = fe.system_to_component_index(i);
+        table[node][component]       = i;
+      }
+    return table;
+  }
 } // namespace softchain::fem

@@ -12,6 +12,7 @@ namespace softchain::fem
 
   FollowerPressure::FollowerPressure(const FiniteElementSpace &space)
     : space(space)
+    , node_dofs(node_dof_table(*space.fe))
   {
     unsigned long local = 0;
     for (const auto &cell : space.dof_handler.active_cell_iterators())
@@ -58,9 +59,8 @@ namespace softchain::fem
     FullMatrix<double>                   cell_matrix(n, n);
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
+    std::vector<Tensor<1, 3>>            g(node_dofs.size()); // F^-T Grad phi_b
     typename DoFHandler<3>::active_cell_iterator current;
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<Tensor<1, 3>>            dcofF_N(n);
 
     auto flush = [&]() {
       if (current.state() != IteratorState::valid)
@@ -78,28 +78,31 @@ namespace softchain::fem
       if (cell != current)
         {
           flush();
-          current = cell;
+          current     = cell;
           cell_matrix = 0;
           cell_rhs    = 0;
         }
-      const double       JxW    = fe_face.JxW(q);
-      const Tensor<2, 3> F_invT = transpose(invert(F));
-      const Tensor<1, 3> FiTN   = F_invT * fe_face.normal_vector(q);
-      const double       J      = determinant(F);
       if (matrix)
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            // d cof(F)[G] N = J ((F^-T : G) F^-T N - F^-T G^T F^-T N)
-            const Tensor<2, 3> G = fe_face[displacement].gradient(j, q);
-            dcofF_N[j] = J * (scalar_product(F_invT, G) * FiTN - F_invT * (transpose(G) * FiTN));
-          }
-      for (unsigned int i = 0; i < n; ++i)
         {
-          const Tensor<1, 3> N_i = fe_face[displacement].value(i, q);
-          cell_rhs(i) -= p * (N_i * cofF_N) * JxW;
+          const Tensor<2, 3> F_invT = transpose(invert(F));
+          for (unsigned int b = 0; b < node_dofs.size(); ++b)
+            g[b] = F_invT * fe_face.shape_grad(node_dofs[b][0], q);
+        }
+      // cof(F) N = J n: the rows of node a are p phi_a dA0 times
+      // -J n_c (load) and J (n_c g_b,d - g_b,c n_d) (stiffness).
+      for (unsigned int a = 0; a < node_dofs.size(); ++a)
+        {
+          const double w = p * fe_face.shape_value(node_dofs[a][0], q) * fe_face.JxW(q);
+          if (w == 0.0) // a node off this face
+            continue;
+          for (unsigned int c = 0; c < 3; ++c)
+            cell_rhs(node_dofs[a][c]) -= w * cofF_N[c];
           if (matrix)
-            for (unsigned int j = 0; j < n; ++j)
-              cell_matrix(i, j) += p * (N_i * dcofF_N[j]) * JxW;
+            for (unsigned int b = 0; b < node_dofs.size(); ++b)
+              for (unsigned int c = 0; c < 3; ++c)
+                for (unsigned int d = 0; d < 3; ++d)
+                  cell_matrix(node_dofs[a][c], node_dofs[b][d]) +=
+                    w * (cofF_N[c] * g[b][d] - g[b][c] * cofF_N[d]);
         }
     });
     flush();

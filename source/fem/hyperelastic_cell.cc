@@ -1,6 +1,5 @@
+#include <softchain/fem/finite_element_space.h>
 #include <softchain/fem/hyperelastic_cell.h>
-
-#include <deal.II/base/exceptions.h>
 
 #include <algorithm>
 
@@ -10,21 +9,12 @@ namespace softchain::fem
 
   HyperelasticCell::HyperelasticCell(const FiniteElement<3> &fe)
     : n_nodes(fe.n_dofs_per_cell() / 3)
-    , dof(n_nodes)
+    , dof(node_dof_table(fe))
     , g(n_nodes)
     , tau_g(n_nodes)
     , A(n_nodes)
     , block(9 * n_nodes * n_nodes)
-  {
-    AssertThrow(fe.n_components() == 3 && fe.n_base_elements() == 1 &&
-                  fe.element_multiplicity(0) == 3 && fe.is_primitive(),
-                ExcMessage("HyperelasticCell needs three copies of one scalar element"));
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto [component, node] = fe.system_to_component_index(i);
-        dof[node][component]         = i;
-      }
-  }
+  {}
 
   bool HyperelasticCell::assemble(const FEValues<3>               &fe_values,
                                   const std::vector<Tensor<2, 3>> &grad_u,

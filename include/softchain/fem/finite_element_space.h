@@ -14,7 +14,9 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <array>
 #include <memory>
+#include <vector>
 
 namespace softchain::fem
 {
@@ -49,4 +51,11 @@ namespace softchain::fem
   private:
     void setup_dofs();
   };
+
+  // The vector elements here are three copies of one scalar element, so each
+  // cell shape function is e_c phi_a: one scalar function phi_a (node a) times
+  // one unit vector e_c. Returns table[a][c], the cell DoF of e_c phi_a; throws
+  // if `fe` is not of that kind. The node-by-node kernels (HyperelasticCell,
+  // FollowerPressure) work on it.
+  std::vector<std::array<unsigned int, 3>> node_dof_table(const dealii::FiniteElement<3> &fe);
 } // namespace softchain::fem

@@ -8,6 +8,12 @@
 //     d cof(F)[G] = J ((F^-T : G) F^-T - F^-T G^T F^-T),   G = Grad du,
 // (Wriggers, Nonlinear Finite Element Methods, Sec. 4.2.5). This is the
 // continuum form of the paper's per-face force p A_f n_f / 3 (Skouras et al.).
+// For the shape function e_d phi_b (node b), G = e_d (x) Grad phi_b, so with
+// n = F^-T N and g_b = F^-T Grad phi_b the load stiffness of the node pair
+// (a, b) is the 3x3 block
+//     K[c,a ; d,b] = p int phi_a J (n_c g_b,d - g_b,c n_d) dA0,
+// assembled node by node, only for the nodes a of the cavity face
+// (phi_a = 0 on it for the others).
 #include <softchain/fem/finite_element_space.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -36,6 +42,8 @@ namespace softchain::fem
   private:
     const FiniteElementSpace &space;
     unsigned long             n_faces; // cavity faces on all ranks
+    // node_dofs[a][c]: the cell DoF of e_c phi_a (node_dof_table).
+    std::vector<std::array<unsigned int, 3>> node_dofs;
 
     // Calls f(fe_face_values, q, F, cof(F) N) at each cavity quadrature point
     // of the locally owned cells.
