@@ -279,10 +279,10 @@ namespace softchain::fem
                     "below 'Direct solver maximum DoFs'.");
     section.declare("Direct solver maximum DoFs", "200000");
     section.declare("Direct solver package", "UMFPACK",
-                    "UMFPACK (one MPI rank: CHOLMOD's Cholesky where the tangent is "
-                    "symmetric positive definite, else UMFPACK's LU; on several ranks "
-                    "Amesos_Mumps is used) or a Trilinos Amesos solver. Measured on P10 "
-                    "(8K DoFs, P2): UMFPACK 0.19 s, KLU 0.42 s per factorisation.");
+                    "UMFPACK (one MPI rank: MUMPS's LDL^T where the tangent is "
+                    "symmetric, else UMFPACK's LU; on several ranks Amesos_Mumps is "
+                    "used) or a Trilinos Amesos solver. Measured on P10 (8K DoFs, P2): "
+                    "UMFPACK 0.19 s, KLU 0.42 s per factorisation.");
     section.declare("Krylov tolerance", "1e-10");
     section.declare("Line search", "true");
     section.declare("Secant predictor", "true",

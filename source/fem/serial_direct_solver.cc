@@ -134,20 +134,14 @@ namespace softchain::fem
     copy_values(matrix);
     const Vector<double> b(rhs);
     Vector<double>       x(b.size());
-    // A refused Cholesky costs part of a factorisation; indefinite tangents
-    // come in runs (the first iterations of a large load step), so the one
-    // after a refusal goes straight to LU.
-    last_was_cholesky = !cholesky_refused && symmetric();
-    cholesky_refused  = false;
-    if (last_was_cholesky)
+    last_was_ldlt = symmetric();
+    if (last_was_ldlt)
       {
-        if (!cholesky)
-          cholesky = std::make_unique<SupernodalCholesky>(row_start, column);
-        last_was_cholesky = cholesky->factorise(value);
-        cholesky_refused  = !last_was_cholesky;
+        if (!ldlt)
+          ldlt = std::make_unique<MultifrontalLDLT>(row_start, column);
+        ldlt->factorise(value);
+        ldlt->solve(b.data(), x.data());
       }
-    if (last_was_cholesky)
-      cholesky->solve(b.data(), x.data());
     else
       {
         factorise_lu();

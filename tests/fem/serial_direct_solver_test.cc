@@ -1,8 +1,9 @@
-// SerialDirectSolver (CHOLMOD's Cholesky or UMFPACK's LU on a copy of the
+// SerialDirectSolver (MUMPS's LDL^T or UMFPACK's LU on a copy of the
 // Trilinos matrix) solves the same system as Trilinos' KLU: the demo
 // finger's tangent with springs and pressure, at two deformed states, the
-// second with the symbolic analysis of the first; an unsymmetric and an
-// indefinite matrix go to LU.
+// second with the symbolic analyses of the first; symmetric matrices,
+// definite or indefinite, go to LDL^T, whose inertia is checked, and an
+// unsymmetric one goes to LU.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/serial_direct_solver.h>
@@ -74,11 +75,12 @@ TEST_CASE("the one-rank direct solver and KLU give the same Newton update", "[fe
   CHECK(relative_difference(first, update) > 1e-3);
 }
 
-TEST_CASE("a stable state's tangent is factorised by Cholesky, others by LU", "[fem][solver]")
+TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others by LU",
+          "[fem][solver]")
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     return;
-  test::SolverFixture f(test::parameters_from_text("cholesky", test::bender_prm("Q2", 4)));
+  test::SolverFixture f(test::parameters_from_text("ldlt", test::bender_prm("Q2", 4)));
   QuasiStaticSolver &solver = *f.solver;
   LoadState          load;
   load.pressure = 2e4;
@@ -97,22 +99,38 @@ TEST_CASE("a stable state's tangent is factorised by Cholesky, others by LU", "[
         asymmetry = std::max(asymmetry, std::abs(entry->value() - K.el(entry->column(), i)));
       }
   INFO("max |K_ij - K_ji| / max |K| = " << asymmetry / largest);
-  TrilinosWrappers::MPI::Vector cholesky(r);
+  TrilinosWrappers::MPI::Vector stable(r);
   SerialDirectSolver            direct(K);
-  direct.solve(K, cholesky, r);
-  CHECK(direct.used_cholesky());
-  CHECK(relative_difference(cholesky, klu_solution(K, r)) < 1e-9); // as above
+  direct.solve(K, stable, r);
+  CHECK(direct.used_ldlt());
+  CHECK(direct.negative_eigenvalues() == 0);
+  CHECK(relative_difference(stable, klu_solution(K, r)) < 1e-9); // as above
 
-  // -K is symmetric but negative definite: Cholesky refuses it and LU
-  // solves it, -K^-1 r.
+  // -K: every eigenvalue negative, -K^-1 r.
   TrilinosWrappers::SparseMatrix negative;
   negative.copy_from(K);
   negative *= -1.0;
-  TrilinosWrappers::MPI::Vector lu(r);
-  direct.solve(negative, lu, r);
-  CHECK_FALSE(direct.used_cholesky());
-  lu *= -1.0;
-  CHECK(relative_difference(lu, cholesky) < 1e-9);
+  TrilinosWrappers::MPI::Vector x(r);
+  direct.solve(negative, x, r);
+  CHECK(direct.used_ldlt());
+  CHECK(direct.negative_eigenvalues() == static_cast<int>(K.m()));
+  x *= -1.0;
+  CHECK(relative_difference(x, stable) < 1e-9);
+
+  // K - 11 K_ii e_i e_i^T for a free DoF i: a rank-one decrease of a positive
+  // definite K whose new K_ii < 0 has exactly one negative eigenvalue
+  // (interlacing), the kind of tangent a Cholesky factorisation refuses.
+  types::global_dof_index free_dof = 0;
+  while (solver.space().fixed_dofs.is_constrained(free_dof))
+    ++free_dof;
+  TrilinosWrappers::SparseMatrix indefinite;
+  indefinite.copy_from(K);
+  indefinite.add(free_dof, free_dof, -11.0 * K.el(free_dof, free_dof));
+  indefinite.compress(VectorOperation::add);
+  direct.solve(indefinite, x, r);
+  CHECK(direct.used_ldlt());
+  CHECK(direct.negative_eigenvalues() == 1);
+  CHECK(relative_difference(x, klu_solution(indefinite, r)) < 1e-9);
 
   // An unsymmetric K (one off-diagonal entry K_ij changed by a tenth of K_ii,
   // K_ji not) goes to LU, which solves it as KLU does.
@@ -131,7 +149,7 @@ TEST_CASE("a stable state's tangent is factorised by Cholesky, others by LU", "[
   unsymmetric.add(row, col, 0.1 * std::abs(K.el(row, row)));
   unsymmetric.compress(VectorOperation::add);
   REQUIRE(unsymmetric.el(row, col) != unsymmetric.el(col, row));
-  direct.solve(unsymmetric, lu, r);
-  CHECK_FALSE(direct.used_cholesky());
-  CHECK(relative_difference(lu, klu_solution(unsymmetric, r)) < 1e-9);
+  direct.solve(unsymmetric, x, r);
+  CHECK_FALSE(direct.used_ldlt());
+  CHECK(relative_difference(x, klu_solution(unsymmetric, r)) < 1e-9);
 }

@@ -1,30 +1,30 @@
 #pragma once
-// SerialDirectSolver: K du = r on one MPI rank, by a supernodal Cholesky
-// factorisation where K is symmetric positive definite (SupernodalCholesky,
-// CHOLMOD), otherwise by UMFPACK's multifrontal LU (BLAS-3 on dense frontal
-// matrices). Trilinos' KLU is a left-looking LU without supernodes: on the
-// fill of a 3D Q2 mesh it is several times slower (docs/toolchain.md,
-// "Linear solvers").
+// SerialDirectSolver: K du = r on one MPI rank, by MUMPS's multifrontal
+// LDL^T factorisation where K is symmetric (MultifrontalLDLT, positive
+// definite or indefinite), otherwise by UMFPACK's multifrontal LU (BLAS-3 on
+// dense frontal matrices). Trilinos' KLU is a left-looking LU without
+// supernodes: on the fill of a 3D Q2 mesh it is several times slower
+// (docs/toolchain.md, "Linear solvers").
 //
 // K is symmetric when every load has a potential (a follower pressure on a
 // closed cavity, dead loads, springs); a cavity cut open by a symmetry plane
 // makes it unsymmetric. Each solve checks the values against their mirror
 // entries, |K_ij - K_ji| <= 1e-12 max|K| (round-off of the assembly: 1e-16
-// relative on P10), and tries Cholesky; an unsymmetric or indefinite K goes
-// to LU.
+// relative on P10), and factorises a symmetric K by LDL^T, an unsymmetric
+// one by LU.
 //
 // The tangent's sparsity pattern never changes during a solve, so the work
 // that depends on the pattern alone is done once (docs/results.md, "What a solve skips"):
 //   - the compressed-row copy of K and, per Trilinos entry, its place in it,
 //     so that refreshing the values is one pass without searches;
 //   - each entry's mirror K_ji, for the symmetry check;
-//   - CHOLMOD's and UMFPACK's symbolic analyses (fill-reducing orderings,
-//     supernode and frontal matrix sizes), which their user guides (Davis)
+//   - MUMPS's and UMFPACK's symbolic analyses (fill-reducing orderings,
+//     elimination trees and frontal matrix sizes), which their user guides
 //     allow to be reused for every matrix with the same pattern; each is made
 //     when first needed.
 // Each Newton iteration then repeats only a numeric factorisation and the
 // triangular solves.
-#include <softchain/fem/supernodal_cholesky.h>
+#include <softchain/fem/multifrontal_ldlt.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -51,8 +51,10 @@ namespace softchain::fem
                dealii::TrilinosWrappers::MPI::Vector        &solution,
                const dealii::TrilinosWrappers::MPI::Vector  &rhs);
 
-    // Did the last solve use the Cholesky factorisation (else LU)?
-    bool used_cholesky() const { return last_was_cholesky; }
+    // Did the last solve use the LDL^T factorisation (else LU)?
+    bool used_ldlt() const { return last_was_ldlt; }
+    // Negative eigenvalues of the last K factorised by LDL^T.
+    int negative_eigenvalues() const { return ldlt ? ldlt->negative_pivots() : 0; }
 
   private:
     void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix);
@@ -71,9 +73,8 @@ namespace softchain::fem
     // not symmetric.
     std::vector<SuiteSparse_long> mirror;
 
-    std::unique_ptr<SupernodalCholesky> cholesky;
-    bool                                last_was_cholesky = false;
-    bool                                cholesky_refused  = false; // by the last K
+    std::unique_ptr<MultifrontalLDLT> ldlt;
+    bool                              last_was_ldlt = false;
 
     std::array<double, UMFPACK_CONTROL> control;
     void                               *symbolic = nullptr;

@@ -1,0 +1,57 @@
+#pragma once
+// MultifrontalLDLT: K = L D L^T for a symmetric K, positive definite or not,
+// by MUMPS's multifrontal factorisation (Amestoy et al., SIAM J. Matrix
+// Anal. Appl. 23, 2001) on one MPI rank, with threshold pivoting over 1x1
+// and 2x2 pivots (Duff and Reid's symmetric indefinite scheme): BLAS-3 on
+// dense frontal matrices, half the flops of an LU factorisation.
+//
+// The tangent of a hyperelastic body under a follower pressure on a closed
+// cavity, with springs and dead loads, is symmetric: the pressure's load
+// p V(u) has a potential (the cavity's volume), and the FE assembly keeps that
+// symmetry to round-off (1e-16 relative on P10). It is positive definite at a
+// stable state but indefinite in the first Newton iterations of a large load
+// step, past a limit point or while the finger buckles; LDL^T factorises
+// both alike, where a Cholesky factorisation would have to give up and hand
+// the tangent to an LU factorisation (docs/results.md).
+//
+// The fill-reducing ordering (approximate minimum fill, MUMPS's AMF: the
+// fewest flops of MUMPS's orderings on P10's tangent) and the elimination
+// tree depend on the pattern alone: they are computed once, and each
+// factorise() repeats only the numeric factorisation. The number of negative
+// pivots is K's count of negative eigenvalues (Sylvester's law of inertia).
+#include <dmumps_c.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace softchain::fem
+{
+  class MultifrontalLDLT
+  {
+  public:
+    // The pattern of a symmetric K in compressed rows (sorted columns, both
+    // triangles stored); only the entries with column <= row are read.
+    MultifrontalLDLT(const std::vector<int64_t> &row_start, const std::vector<int64_t> &column);
+    ~MultifrontalLDLT();
+    MultifrontalLDLT(const MultifrontalLDLT &)            = delete;
+    MultifrontalLDLT &operator=(const MultifrontalLDLT &) = delete;
+
+    // Factorises K with these values (in the pattern's order). Throws if K is
+    // numerically singular.
+    void factorise(const std::vector<double> &value);
+    // x = K^-1 b with the last factorisation.
+    void solve(const double *b, double *x);
+    // Negative eigenvalues of the last K factorised.
+    int negative_pivots() const { return mumps.infog[11]; }
+
+  private:
+    void run(int job, const char *what);
+    void check(const char *what) const; // throws on a MUMPS error
+
+    DMUMPS_STRUC_C        mumps;
+    std::vector<int>      row, col;  // 1-based coordinates of the lower triangle
+    std::vector<int64_t>  entry;     // their places in the compressed-row values
+    std::vector<double>   lower;     // their values, as MUMPS reads them
+    std::vector<double>   rhs;
+  };
+} // namespace softchain::fem
