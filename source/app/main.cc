@@ -121,7 +121,9 @@ namespace
 
 int main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // deal.II's thread pool (the cell assembly's WorkStream) gets the cores
+  // not taken by other MPI ranks on this node; Solver/Threads may lower it.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   std::signal(SIGINT, on_interrupt);
   const std::string command = argc > 1 ? argv[1] : "help";
   const bool        help    = command == "help" || command == "--help" || command == "-h";

@@ -13,14 +13,16 @@ namespace softchain::testing
   namespace
   {
     // mpirun refuses to run as root without the OMPI_ variables
-    // (docs/toolchain.md, "MPI"). One BLAS thread per process: MUMPS's dense kernels
-    // round differently with 2 OpenBLAS threads (a serial run) than with 1
-    // (a rank bound to one core under mpirun), by a few ulps; with the same
-    // thread count the samples of 1 and 2 ranks are the same bits.
-    // Set once for every child process of the tests.
+    // (docs/toolchain.md, "MPI"). One BLAS thread and one deal.II thread per
+    // process: MUMPS's dense kernels and deal.II's threaded loops round
+    // differently with 2 threads (a serial run) than with 1 (a rank bound to
+    // one core under mpirun), by a few ulps (each thread count alone gives
+    // the same bits on every run); with the same thread count the samples of
+    // 1 and 2 ranks are the same bits. Set once for every child process of
+    // the tests.
     const bool environment_set = [] {
       for (const char *name : {"OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM",
-                               "OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"})
+                               "OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "DEAL_II_NUM_THREADS"})
         ::setenv(name, "1", 1);
       return true;
     }();

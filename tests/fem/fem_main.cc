@@ -7,6 +7,7 @@
 
 int main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Threads as in `softchain`: the cell assembly runs in parallel here too.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   return Catch::Session().run(argc, argv);
 }
