@@ -60,7 +60,8 @@ namespace softchain::fem
       FullMatrix<double>                   matrix;
       Vector<double>                       rhs;
       std::vector<types::global_dof_index> dofs;
-      bool                                 inverted = false;
+      unsigned int                         cell_index = 0;
+      bool                                 inverted   = false;
     };
 
     // The spring band of a solve from rest's first stage (see solve()):
@@ -135,6 +136,11 @@ namespace softchain::fem
     matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
     rhs.reinit(s.owned_dofs, writable_dofs, s.communicator, true);
     serial_direct.reset(); // its symbolic analysis is of the old pattern
+    // The places need a pattern of the Dirichlet constraints alone (a point
+    // contact's pattern drops the tip rows it condenses).
+    scatter.reset();
+    if (&constraints == &s.fixed_dofs && CellMatrixScatter::serves(s.fixed_dofs, s.communicator))
+      scatter = std::make_unique<CellMatrixScatter>(s.dof_handler, s.fixed_dofs, matrix);
   }
 
   void QuasiStaticSolver::reset()
@@ -162,7 +168,8 @@ namespace softchain::fem
 
     auto worker = [&](const DoFHandler<3>::active_cell_iterator &cell, CellScratch &scratch,
                       CellCopy &copy) {
-      copy.rhs    = 0;
+      copy.rhs        = 0;
+      copy.cell_index = cell->active_cell_index();
       cell->get_dof_indices(copy.dofs);
       scratch.fe_values.reinit(cell);
       scratch.fe_values[displacement].get_function_gradients(u_ghosted, scratch.grad_u);
@@ -177,9 +184,13 @@ namespace softchain::fem
         }
     };
 
+    const bool by_places = scatter && &constraints == &s.fixed_dofs;
     auto copier = [&](const CellCopy &copy) {
       if (copy.inverted)
         inverted = true;
+      else if (by_places)
+        scatter->add(copy.cell_index, copy.dofs, with_matrix ? &copy.matrix : nullptr, copy.rhs,
+                     &matrix, rhs);
       else if (with_matrix)
         constraints.distribute_local_to_global(copy.matrix, copy.rhs, copy.dofs, matrix, rhs);
       else

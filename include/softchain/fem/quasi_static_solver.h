@@ -18,6 +18,7 @@
 #include <softchain/fem/load_state.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/prescribed_tip.h>
+#include <softchain/fem/cell_matrix_scatter.h>
 #include <softchain/fem/serial_direct_solver.h>
 
 #include <deal.II/base/timer.h>
@@ -115,6 +116,8 @@ namespace softchain::fem
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     dealii::TimerOutput                                         computing_timer;
     std::unique_ptr<SerialDirectSolver>                 serial_direct; // UMFPACK, one rank
+    // The cells' places in `matrix` for fe_space->fixed_dofs on one rank.
+    std::unique_ptr<CellMatrixScatter>                  scatter;
     std::unique_ptr<PrescribedTip>                      prescribed_tip; // built at the first tip motion
     // fe_space->fixed_dofs, or those and the tip DoFs while a tip motion is prescribed.
     const dealii::AffineConstraints<double>            *active_constraints = nullptr;

@@ -1,0 +1,76 @@
+// CellMatrixScatter adds cell matrices and vectors through stored places:
+// the same global matrix and vector, entry by entry and to the last bit, as
+// deal.II's AffineConstraints::distribute_local_to_global, on the demo
+// finger's Q2 and P2 meshes with their clamped base (constrained rows and
+// columns, and their diagonal rule, included), for seeded random cell data.
+#include "fem_test_tools.h"
+
+#include <softchain/fem/cell_matrix_scatter.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace dealii;
+using namespace softchain;
+using namespace softchain::fem;
+
+TEST_CASE("cell entries added by their stored places equal deal.II's distribution", "[fem][solver]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return; // the one-rank path
+  for (const std::string element : {"Q2", "P2"})
+    {
+      INFO(element);
+      test::SolverFixture       f(test::parameters_from_text("scatter", test::bender_prm(element, 4)));
+      const auto               &space = f.solver->space();
+      REQUIRE(CellMatrixScatter::serves(space.fixed_dofs, space.communicator));
+      REQUIRE(space.fixed_dofs.n_constraints() > 0);
+      TrilinosWrappers::SparseMatrix by_deal_ii, by_places;
+      by_deal_ii.reinit(f.solver->tangent());
+      by_places.reinit(f.solver->tangent());
+      TrilinosWrappers::MPI::Vector rhs_deal_ii(f.solver->negative_residual()), rhs_places(rhs_deal_ii);
+      by_deal_ii = 0;
+      by_places  = 0;
+      rhs_deal_ii = 0;
+      rhs_places  = 0;
+      const CellMatrixScatter scatter(space.dof_handler, space.fixed_dofs, by_places);
+
+      const unsigned int                   n = space.fe->n_dofs_per_cell();
+      FullMatrix<double>                   cell_matrix(n, n);
+      Vector<double>                       cell_rhs(n);
+      std::vector<types::global_dof_index> dofs(n);
+      std::mt19937                         random(7);
+      std::uniform_real_distribution<double> value(-1.0, 1.0);
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              cell_rhs(i) = value(random);
+              for (unsigned int j = 0; j < n; ++j)
+                cell_matrix(i, j) = value(random);
+            }
+          cell_matrix(0, 0) = 0.0; // exercises the mean-diagonal rule where DoF 0 is clamped
+          space.fixed_dofs.distribute_local_to_global(cell_matrix, cell_rhs, dofs, by_deal_ii,
+                                                      rhs_deal_ii);
+          scatter.add(cell->active_cell_index(), dofs, &cell_matrix, cell_rhs, &by_places, rhs_places);
+        }
+      by_deal_ii.compress(VectorOperation::add);
+      by_places.compress(VectorOperation::add);
+      rhs_deal_ii.compress(VectorOperation::add);
+      rhs_places.compress(VectorOperation::add);
+
+      unsigned int differing = 0, nonzero = 0;
+      for (types::global_dof_index i = 0; i < by_deal_ii.m(); ++i)
+        for (auto entry = by_deal_ii.begin(i); entry != by_deal_ii.end(i); ++entry)
+          {
+            nonzero += entry->value() != 0.0;
+            differing += entry->value() != by_places.el(i, entry->column());
+          }
+      for (types::global_dof_index i = 0; i < rhs_deal_ii.size(); ++i)
+        differing += rhs_deal_ii[i] != rhs_places[i];
+      CHECK(nonzero > 0);
+      CHECK(differing == 0);
+    }
+}
