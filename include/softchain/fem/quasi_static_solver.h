@@ -9,6 +9,7 @@
 // and the springs inside them are assembled together, cell by cell. A solve
 // from rest with springs continues in the springs' smoothing band: the load
 // path under a wide band, then the band narrowed to the .prm's at the target.
+#include <softchain/fem/cell_matrix_scatter.h>
 #include <softchain/fem/dead_surface_traction.h>
 #include <softchain/fem/embedded_points.h>
 #include <softchain/fem/embedded_spring_network.h>
@@ -18,7 +19,6 @@
 #include <softchain/fem/load_state.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/prescribed_tip.h>
-#include <softchain/fem/cell_matrix_scatter.h>
 #include <softchain/fem/serial_direct_solver.h>
 
 #include <deal.II/base/timer.h>
@@ -115,7 +115,7 @@ namespace softchain::fem
     std::unique_ptr<DeadSurfaceTraction>                tip_traction;
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     dealii::TimerOutput                                         computing_timer;
-    std::unique_ptr<SerialDirectSolver>                 serial_direct; // UMFPACK, one rank
+    std::unique_ptr<SerialDirectSolver>                 serial_direct; // LDL^T or LU, one rank
     // The cells' places in `matrix` for fe_space->fixed_dofs on one rank.
     std::unique_ptr<CellMatrixScatter>                  scatter;
     std::unique_ptr<PrescribedTip>                      prescribed_tip; // built at the first tip motion
