@@ -71,11 +71,10 @@ namespace softchain::fem
   {
     AssertThrow(mumps.infog[0] >= 0,
                 ExcMessage(std::string("MUMPS's ") + what + " failed with INFOG(1) = " +
-                           std::to_string(mumps.infog[0]) +
-                           (mumps.infog[0] == -10 ? " (the tangent stiffness matrix is singular)" : "")));
+                           std::to_string(mumps.infog[0])));
   }
 
-  void MultifrontalLDLT::factorise(const std::vector<double> &value)
+  bool MultifrontalLDLT::factorise(const std::vector<double> &value)
   {
     for (std::size_t k = 0; k < entry.size(); ++k)
       lower[k] = value[entry[k]];
@@ -89,7 +88,10 @@ namespace softchain::fem
           break;
         mumps.icntl[13] = 2 * std::max(mumps.icntl[13], 20);
       }
+    if (mumps.infog[0] == -10)
+      return false;
     check("numeric factorisation");
+    return true;
   }
 
   void MultifrontalLDLT::solve(const double *b, double *x)

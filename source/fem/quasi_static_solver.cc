@@ -277,7 +277,13 @@ namespace softchain::fem
       {
         if (!serial_direct)
           serial_direct = std::make_unique<SerialDirectSolver>(matrix);
-        serial_direct->solve(matrix, du, rhs);
+        // A singular tangent fails the Newton iteration, as a GMRES that does
+        // not converge does: the load step is cut.
+        if (!serial_direct->solve(matrix, du, rhs))
+          {
+            log << "      the tangent is singular\n";
+            return false;
+          }
       }
     else if (direct)
       {

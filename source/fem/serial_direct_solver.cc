@@ -19,10 +19,7 @@ namespace softchain::fem
     void check(SuiteSparse_long status, const std::string &step)
     {
       AssertThrow(status == UMFPACK_OK,
-                  ExcMessage("UMFPACK " + step + " failed with status " + std::to_string(status) +
-                             (status == UMFPACK_WARNING_singular_matrix ?
-                                " (the tangent stiffness matrix is singular)" :
-                                "")));
+                  ExcMessage("UMFPACK " + step + " failed with status " + std::to_string(status)));
     }
   } // namespace
 
@@ -113,7 +110,7 @@ namespace softchain::fem
   }
 
   // The symbolic analysis once, the numeric factorisation every call.
-  void SerialDirectSolver::factorise_lu()
+  bool SerialDirectSolver::factorise_lu()
   {
     const SuiteSparse_long n = row_start.size() - 1;
     if (!symbolic)
@@ -122,12 +119,15 @@ namespace softchain::fem
             "symbolic analysis");
     if (numeric)
       umfpack_dl_free_numeric(&numeric);
-    check(umfpack_dl_numeric(row_start.data(), column.data(), value.data(), symbolic, &numeric,
-                             control.data(), nullptr),
-          "numeric factorisation");
+    const SuiteSparse_long status = umfpack_dl_numeric(row_start.data(), column.data(), value.data(),
+                                                       symbolic, &numeric, control.data(), nullptr);
+    if (status == UMFPACK_WARNING_singular_matrix)
+      return false;
+    check(status, "numeric factorisation");
+    return true;
   }
 
-  void SerialDirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+  bool SerialDirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                                  TrilinosWrappers::MPI::Vector        &solution,
                                  const TrilinosWrappers::MPI::Vector  &rhs)
   {
@@ -139,12 +139,14 @@ namespace softchain::fem
       {
         if (!ldlt)
           ldlt = std::make_unique<MultifrontalLDLT>(row_start, column);
-        ldlt->factorise(value);
+        if (!ldlt->factorise(value))
+          return false;
         ldlt->solve(b.data(), x.data());
       }
     else
       {
-        factorise_lu();
+        if (!factorise_lu())
+          return false;
         check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(),
                                x.data(), b.data(), numeric, control.data(), nullptr),
               "solve");
@@ -152,5 +154,6 @@ namespace softchain::fem
     for (types::global_dof_index i = 0; i < x.size(); ++i)
       solution[i] = x[i];
     solution.compress(VectorOperation::insert);
+    return true;
   }
 } // namespace softchain::fem

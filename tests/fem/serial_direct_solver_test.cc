@@ -3,7 +3,7 @@
 // finger's tangent with springs and pressure, at two deformed states, the
 // second with the symbolic analyses of the first; symmetric matrices,
 // definite or indefinite, go to LDL^T, whose inertia is checked, and an
-// unsymmetric one goes to LU.
+// unsymmetric one goes to LU; singular ones are reported.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/serial_direct_solver.h>
@@ -58,7 +58,7 @@ TEST_CASE("the one-rank direct solver and KLU give the same Newton update", "[fe
 
   TrilinosWrappers::MPI::Vector update(solver.negative_residual());
   SerialDirectSolver            direct(solver.tangent());
-  direct.solve(solver.tangent(), update, solver.negative_residual());
+  REQUIRE(direct.solve(solver.tangent(), update, solver.negative_residual()));
   // Both are backward stable: the difference is bounded by cond(K) * eps,
   // measured 8e-12 relative here; 1e-9 leaves room for other BLAS builds.
   CHECK(relative_difference(update, klu_solution(solver)) < 1e-9);
@@ -70,7 +70,7 @@ TEST_CASE("the one-rank direct solver and KLU give the same Newton update", "[fe
   solver.set_displacement(test::smooth_displacement(solver, 6e-3, 0.05, 2));
   load.pressure = 4e4;
   REQUIRE(solver.assemble(load, true));
-  direct.solve(solver.tangent(), update, solver.negative_residual());
+  REQUIRE(direct.solve(solver.tangent(), update, solver.negative_residual()));
   CHECK(relative_difference(update, klu_solution(solver)) < 1e-9);
   CHECK(relative_difference(first, update) > 1e-3);
 }
@@ -101,7 +101,7 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
   INFO("max |K_ij - K_ji| / max |K| = " << asymmetry / largest);
   TrilinosWrappers::MPI::Vector stable(r);
   SerialDirectSolver            direct(K);
-  direct.solve(K, stable, r);
+  REQUIRE(direct.solve(K, stable, r));
   CHECK(direct.used_ldlt());
   CHECK(direct.negative_eigenvalues() == 0);
   CHECK(relative_difference(stable, klu_solution(K, r)) < 1e-9); // as above
@@ -111,7 +111,7 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
   negative.copy_from(K);
   negative *= -1.0;
   TrilinosWrappers::MPI::Vector x(r);
-  direct.solve(negative, x, r);
+  REQUIRE(direct.solve(negative, x, r));
   CHECK(direct.used_ldlt());
   CHECK(direct.negative_eigenvalues() == static_cast<int>(K.m()));
   x *= -1.0;
@@ -127,7 +127,7 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
   indefinite.copy_from(K);
   indefinite.add(free_dof, free_dof, -11.0 * K.el(free_dof, free_dof));
   indefinite.compress(VectorOperation::add);
-  direct.solve(indefinite, x, r);
+  REQUIRE(direct.solve(indefinite, x, r));
   CHECK(direct.used_ldlt());
   CHECK(direct.negative_eigenvalues() == 1);
   CHECK(relative_difference(x, klu_solution(indefinite, r)) < 1e-9);
@@ -149,7 +149,20 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
   unsymmetric.add(row, col, 0.1 * std::abs(K.el(row, row)));
   unsymmetric.compress(VectorOperation::add);
   REQUIRE(unsymmetric.el(row, col) != unsymmetric.el(col, row));
-  direct.solve(unsymmetric, x, r);
+  REQUIRE(direct.solve(unsymmetric, x, r));
   CHECK_FALSE(direct.used_ldlt());
   CHECK(relative_difference(x, klu_solution(unsymmetric, r)) < 1e-9);
+
+  // Singular tangents are reported, not solved (the Newton iteration then
+  // fails and the load step is cut): 0 K, symmetric, to LDL^T, and the
+  // unsymmetric K with row `row` zeroed, to LU.
+  TrilinosWrappers::SparseMatrix zero;
+  zero.copy_from(K);
+  zero *= 0.0;
+  CHECK_FALSE(direct.solve(zero, x, r));
+  CHECK(direct.used_ldlt());
+  for (auto entry = unsymmetric.begin(row); entry != unsymmetric.end(row); ++entry)
+    entry->value() = 0.0;
+  CHECK_FALSE(direct.solve(unsymmetric, x, r));
+  CHECK_FALSE(direct.used_ldlt());
 }

@@ -36,9 +36,9 @@ namespace softchain::fem
     MultifrontalLDLT(const MultifrontalLDLT &)            = delete;
     MultifrontalLDLT &operator=(const MultifrontalLDLT &) = delete;
 
-    // Factorises K with these values (in the pattern's order). Throws if K is
-    // numerically singular.
-    void factorise(const std::vector<double> &value);
+    // Factorises K with these values (in the pattern's order); false if K is
+    // numerically singular (MUMPS's INFOG(1) = -10). Other MUMPS errors throw.
+    bool factorise(const std::vector<double> &value);
     // x = K^-1 b with the last factorisation.
     void solve(const double *b, double *x);
     // Negative eigenvalues of the last K factorised.

@@ -46,8 +46,9 @@ namespace softchain::fem
     SerialDirectSolver(const SerialDirectSolver &)            = delete;
     SerialDirectSolver &operator=(const SerialDirectSolver &) = delete;
 
-    // Factorises `matrix` (same pattern as at construction) and solves.
-    void solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+    // Factorises `matrix` (same pattern as at construction) and solves;
+    // false, leaving `solution` alone, if the matrix is numerically singular.
+    bool solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
                dealii::TrilinosWrappers::MPI::Vector        &solution,
                const dealii::TrilinosWrappers::MPI::Vector  &rhs);
 
@@ -60,7 +61,7 @@ namespace softchain::fem
     void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix);
     void find_mirrors();
     bool symmetric() const;
-    void factorise_lu();
+    bool factorise_lu(); // false if K is singular
 
     // K in compressed rows with sorted columns. UMFPACK reads compressed
     // columns, so it sees K^T and solves with UMFPACK_At.
