@@ -36,8 +36,8 @@ namespace softchain::fem
       constrained[i] = constraints.is_constrained(i);
     // Each row's (global column, position) pairs, sorted by column.
     std::vector<std::vector<std::pair<types::global_dof_index, unsigned int>>> columns(epetra.NumMyRows());
-    row_start.resize(epetra.NumMyRows());
-    double *first_value;
+    std::vector<unsigned int> row_start(epetra.NumMyRows()); // in the contiguous values
+    double                   *first_value;
     int     n;
     epetra.ExtractMyRowView(0, n, first_value);
     for (int row = 0; row < epetra.NumMyRows(); ++row)
@@ -77,6 +77,21 @@ namespace softchain::fem
       }
   }
 
+  // A constrained row's diagonal where its K_ii = 0: the mean |K_kk| of the
+  // cell, or its mean row l1 norm if every K_kk = 0, or 1 (deal.II's rule, so
+  // that the sums are the same).
+  double CellMatrixScatter::substitute_diagonal(const FullMatrix<double> &cell_matrix)
+  {
+    const unsigned int n    = cell_matrix.m();
+    double             mean = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      mean += std::abs(cell_matrix(i, i));
+    mean /= n;
+    if (mean == 0.0)
+      mean = cell_matrix.l1_norm() / n;
+    return mean != 0.0 ? mean : 1.0;
+  }
+
   void CellMatrixScatter::add(const unsigned int                          cell_index,
                               const std::vector<types::global_dof_index> &dofs,
                               const FullMatrix<double>                   *cell_matrix,
@@ -95,24 +110,13 @@ namespace softchain::fem
     int     n_row;
     matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
     const unsigned int *to = place[cell_index].data();
-    // A constrained row's diagonal: |K_ii|, or the mean |K_kk| if K_ii = 0,
-    // or the mean row l1 norm if every K_kk = 0, or 1 (deal.II's rule, so
-    // that the sums are the same).
-    double mean_diagonal = 0;
-    for (unsigned int i = 0; i < n; ++i)
-      mean_diagonal += std::abs((*cell_matrix)(i, i));
-    mean_diagonal /= n;
-    if (mean_diagonal == 0.0)
-      mean_diagonal = cell_matrix->l1_norm() / n;
-    if (mean_diagonal == 0.0)
-      mean_diagonal = 1.0;
     for (unsigned int i = 0; i < n; ++i)
       {
         const double *row = &(*cell_matrix)(i, 0);
         if (constrained[dofs[i]])
           {
             const double diagonal = std::abs(row[i]);
-            values[to[i * n + i]] += diagonal != 0.0 ? diagonal : mean_diagonal;
+            values[to[i * n + i]] += diagonal != 0.0 ? diagonal : substitute_diagonal(*cell_matrix);
             continue;
           }
         for (unsigned int j = 0; j < n; ++j)

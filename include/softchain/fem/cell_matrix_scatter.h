@@ -48,10 +48,11 @@ namespace softchain::fem
              dealii::TrilinosWrappers::MPI::Vector             &rhs) const;
 
   private:
-    std::vector<bool>                  constrained; // per DoF
-    std::vector<unsigned int>          row_start;   // of each row in the matrix's values
+    static double substitute_diagonal(const dealii::FullMatrix<double> &cell_matrix);
+
+    std::vector<bool> constrained; // per DoF
     // Per active cell, for its (i, j) in row-major order: the index of the
-    // entry in the matrix's contiguous values (row_start[row] + position).
+    // entry in the matrix's contiguous values.
     std::vector<std::vector<unsigned int>> place;
   };
 } // namespace softchain::fem
