@@ -10,9 +10,12 @@
 //     K[c,a ; d,b]    = int  g_a^k c_ckdl g_b^l  +  delta_cd g_a . tau g_b  dV0
 // (material and geometric parts; c has minor symmetries, so sym(e_c (x) g_a)
 // may be replaced by e_c (x) g_a). Working per node pair (a, b) instead of
-// per DoF pair, with A_a[c][d][l] = g_a^k c_ckdl formed once per node, costs
-// 27 multiply-adds per 3x3 block and uses K's symmetry (b <= a), where the
-// DoF-by-DoF contraction of symmetric tensors costs several times as much.
+// per DoF pair, with
+//     A_a[c][d][l] = g_a^k c_ckdl + delta_cd (tau g_a)_l
+// formed once per node and quadrature point (the geometric term folded in,
+// tau being symmetric), each 3x3 block is K_ab[c][d] += A_a[c][d][l] g_b^l:
+// 27 multiply-adds, only for b <= a (K is symmetric). The loop runs over b,
+// with the g_b stored component by component, so that it vectorises.
 #include <softchain/fem/hyperelastic_material.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -47,10 +50,12 @@ namespace softchain::fem
 
     unsigned int                             n_nodes;
     std::vector<std::array<unsigned int, 3>> dof; // dof[a][c]: the cell DoF of e_c phi_a
-    // Per quadrature point: g_a and tau g_a; per node: A_a (c, d, l) flattened.
-    std::vector<dealii::Tensor<1, 3>>   g, tau_g;
-    std::vector<std::array<double, 27>> A;
-    // K's 3x3 blocks (a, b <= a), block (a, b) at 9 (a n_nodes + b).
+    // Per quadrature point: the components of g_a (g[l][a] = g_a^l), tau g_a
+    // and A_a (c, d, l) flattened at 27 a + 9 c + 3 d + l.
+    std::array<std::vector<double>, 3> g;
+    std::vector<dealii::Tensor<1, 3>>  tau_g;
+    std::vector<double>                A;
+    // K's 3x3 blocks (a, b <= a): K[c,a ; d,b] at (9 a + 3 c + d) n_nodes + b.
     std::vector<double> block;
   };
 } // namespace softchain::fem
