@@ -60,9 +60,12 @@ namespace softchain::fem
   namespace
   {
     // K[9 a + cd][b] += A_a[cd][l] g_b^l for b <= a: the inner loop of the
-    // tangent, over b so that it vectorises. Compiled for AVX2 with FMA
-    // too, chosen at run time where the processor has them.
-    __attribute__((target_clones("arch=x86-64-v3", "default"))) void
+    // tangent, over b so that it vectorises. On x86-64 it is compiled for
+    // AVX2 with FMA too, chosen at run time where the processor has them.
+#if defined(__x86_64__)
+    __attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+    void
     add_node_blocks(const unsigned int n, const double *A, const double *__restrict gx,
                     const double *__restrict gy, const double *__restrict gz,
                     double *__restrict block)
