@@ -24,7 +24,6 @@ namespace softchain::fem
 
   bool AdaptiveLoadStepping::failed()
   {
-    s_previous = -1.0; // no predictor right after a failure
     increment *= 0.25;
     return increment >= prm.min_load_step;
   }

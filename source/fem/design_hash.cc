@@ -40,8 +40,12 @@ namespace softchain::fem
     }
   } // namespace
 
+  // The laws the .prm names only by their parameters are part of the
+  // design: a database solved under another tension-only law (the earlier
+  // quadratic rounding over a strain band) is not this design's.
   std::string design_hash(const Parameters &prm, const FingerMesh &mesh)
   {
-    return data::content_hash(prm.design_values + "mesh\n" + mesh_text(mesh));
+    return data::content_hash(prm.design_values + "tension law t (t - eps) = delta^2/4\n" +
+                              "mesh\n" + mesh_text(mesh));
   }
 } // namespace softchain::fem

@@ -5,34 +5,19 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace softchain::fem
 {
   using namespace dealii;
 
-  namespace
-  {
-    // Tension T and dT/dl of a link at current length l (smoothed law).
-    std::pair<double, double>
-    tension(const EmbeddedSpringNetwork::Link &link, const double l, const double d)
-    {
-      const double eps = (l - link.rest_length) / link.rest_length;
-      const double EA  = link.axial_rigidity;
-      if (eps <= 0)
-        return {0.0, 0.0};
-      if (eps < d)
-        return {EA * eps * eps / (2 * d), EA * eps / d / link.rest_length};
-      return {EA * (eps - d / 2), EA / link.rest_length};
-    }
-  } // namespace
-
   EmbeddedSpringNetwork::EmbeddedSpringNetwork(
     const FiniteElementSpace            &space,
     const std::vector<SpringPolyline>   &polylines,
     const std::map<std::string, double> &axial_rigidity,
     const double                         smoothing_strain)
-    : smoothing(smoothing_strain)
+    : tension_law(smoothing_strain)
   {
     // Two embedded nodes per link, both evaluated in the cell around the
     // link's midpoint (cell_conforming_polylines() puts each link in one cell).
@@ -81,7 +66,21 @@ namespace softchain::fem
             }
           owned_stencils[k] = link_stencil(links[k]);
           links_in_cell[a.cell].push_back(k);
+          owned_links.push_back(k);
         }
+    double squares = 0;
+    for (const unsigned int k : owned_links)
+      {
+        const LinkStencil &s = owned_stencils[k];
+        const Tensor<1, 3> e = s.rest_vector / s.rest_vector.norm();
+        const double       T = links[k].axial_rigidity * tension_law.tension(0.0);
+        for (unsigned int i = 0; i < s.component.size(); ++i)
+          squares += std::pow(T * s.delta[i] * e[s.component[i]], 2);
+      }
+    rest_force_norm = std::sqrt(Utilities::MPI::sum(squares, space.communicator));
+    link_state.assign(links.size(), tension_law.state_at(0.0));
+    state_before = link_state;
+    state_step.assign(links.size(), {0.0, 0.0});
   }
 
   // The DoFs of the link's cell, in its order, each with
@@ -97,37 +96,107 @@ namespace softchain::fem
     return result;
   }
 
-  void EmbeddedSpringNetwork::add_link(const Link &link, const LinkStencil &s,
-                                       const Vector<double> &u, FullMatrix<double> *matrix,
-                                       Vector<double> &rhs) const
+  Tensor<1, 3> EmbeddedSpringNetwork::link_vector(const unsigned int k, const Vector<double> &u) const
   {
-    Tensor<1, 3> d = s.rest_vector;
+    const LinkStencil &s = owned_stencils[k];
+    Tensor<1, 3>       d = s.rest_vector;
     for (unsigned int i = 0; i < s.component.size(); ++i)
       d[s.component[i]] += s.delta[i] * u[i];
-    const double l        = d.norm();
-    const auto [T, dT_dl] = tension(link, l, smoothing);
-    if (T == 0.0)
-      return; // slack: no force, no stiffness
-    const Tensor<1, 3> e = d / l;
-    for (unsigned int i = 0; i < s.component.size(); ++i)
-      rhs(i) -= s.delta[i] * T * e[s.component[i]];
-    if (!matrix)
-      return;
-    double H[3][3];
-    for (unsigned int c = 0; c < 3; ++c)
-      for (unsigned int c2 = 0; c2 < 3; ++c2)
-        H[c][c2] = dT_dl * e[c] * e[c2] + T / l * ((c == c2) - e[c] * e[c2]);
-    for (unsigned int i = 0; i < s.component.size(); ++i)
-      for (unsigned int j = 0; j < s.component.size(); ++j)
-        (*matrix)(i, j) += s.delta[i] * H[s.component[i]][s.component[j]] * s.delta[j];
+    return d;
   }
 
-  void EmbeddedSpringNetwork::assemble_cell(const unsigned int cell_index, const Vector<double> &cell_u,
-                                            FullMatrix<double> *cell_matrix,
-                                            Vector<double>     &cell_rhs) const
+  Tensor<1, 3> EmbeddedSpringNetwork::link_vector(const unsigned int                   k,
+                                                  const TrilinosWrappers::MPI::Vector &u,
+                                                  const bool with_rest) const
   {
+    const LinkStencil &s    = owned_stencils[k];
+    const auto        &dofs = nodes->stencil(links[k].a).dof;
+    Tensor<1, 3>       d    = with_rest ? s.rest_vector : Tensor<1, 3>();
+    for (unsigned int i = 0; i < s.component.size(); ++i)
+      d[s.component[i]] += s.delta[i] * u[dofs[i]];
+    return d;
+  }
+
+  // The link's force uses its condensed tension T_eff = EA t_eff(eps; t, g)
+  // (TensionOnlyLaw::condensed_tension) and the tangent the condensed
+  // slope, dT_eff/dl = EA t / ((t + g) L); the geometric term keeps the
+  // link's own tension EA t, so that K is the Jacobian of the whole system
+  // (u, t, g) with (t, g) eliminated. On the law (set_link_states) both are
+  // the law's T(eps) and dT/dl.
+  double EmbeddedSpringNetwork::add_link(const unsigned int k, const Vector<double> &u,
+                                         FullMatrix<double> *matrix, Vector<double> &rhs) const
+  {
+    const LinkStencil          &s     = owned_stencils[k];
+    const Link                 &link  = links[k];
+    const TensionOnlyLaw::State state = link_state[k];
+    const Tensor<1, 3>          d     = link_vector(k, u);
+    const double                l     = d.norm();
+    const double                eps   = (l - link.rest_length) / link.rest_length;
+    const double                EA    = link.axial_rigidity;
+    const double                T     = EA * tension_law.condensed_tension(state, eps);
+    const Tensor<1, 3>          e     = d / l;
+    double                      f_norm_squared = 0;
+    for (unsigned int i = 0; i < s.component.size(); ++i)
+      {
+        const double f_i = s.delta[i] * e[s.component[i]];
+        rhs(i) -= f_i * T;
+        f_norm_squared += f_i * f_i;
+      }
+    if (matrix)
+      {
+        const double dT_dl = EA * tension_law.condensed_slope(state) / link.rest_length;
+        const double T_own = EA * state.tension;
+        double       H[3][3];
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int c2 = 0; c2 < 3; ++c2)
+            H[c][c2] = dT_dl * e[c] * e[c2] + T_own / l * ((c == c2) - e[c] * e[c2]);
+        for (unsigned int i = 0; i < s.component.size(); ++i)
+          for (unsigned int j = 0; j < s.component.size(); ++j)
+            (*matrix)(i, j) += s.delta[i] * H[s.component[i]][s.component[j]] * s.delta[j];
+      }
+    return std::abs(T - EA * tension_law.tension(eps)) * std::sqrt(f_norm_squared);
+  }
+
+  double EmbeddedSpringNetwork::assemble_cell(const unsigned int cell_index, const Vector<double> &cell_u,
+                                              FullMatrix<double> *cell_matrix,
+                                              Vector<double>     &cell_rhs) const
+  {
+    double mismatch = 0;
     for (const unsigned int k : links_in_cell[cell_index])
-      add_link(links[k], owned_stencils[k], cell_u, cell_matrix, cell_rhs);
+      mismatch += add_link(k, cell_u, cell_matrix, cell_rhs);
+    return mismatch;
+  }
+
+  void EmbeddedSpringNetwork::set_link_states(const TrilinosWrappers::MPI::Vector &u)
+  {
+    for (const unsigned int k : owned_links)
+      {
+        const double L = links[k].rest_length;
+        link_state[k]  = tension_law.state_at((link_vector(k, u, true).norm() - L) / L);
+      }
+  }
+
+  // The strain increment of a link for du is linearised at u:
+  // d_eps = e . (du_b - du_a) / L.
+  void EmbeddedSpringNetwork::prepare_link_updates(const TrilinosWrappers::MPI::Vector &u,
+                                                   const TrilinosWrappers::MPI::Vector &du)
+  {
+    for (const unsigned int k : owned_links)
+      {
+        const double       L     = links[k].rest_length;
+        const Tensor<1, 3> d     = link_vector(k, u, true);
+        const double       l     = d.norm();
+        const double       d_eps = link_vector(k, du, false) * d / (l * L);
+        state_before[k]          = link_state[k];
+        state_step[k]            = tension_law.increment(link_state[k], (l - L) / L, d_eps);
+      }
+  }
+
+  void EmbeddedSpringNetwork::move_link_states(const double a)
+  {
+    for (const unsigned int k : owned_links)
+      link_state[k] = {state_before[k].tension + a * state_step[k].tension,
+                       state_before[k].gap + a * state_step[k].gap};
   }
 
   std::vector<double>
@@ -136,7 +205,9 @@ namespace softchain::fem
     const auto          x = nodes->deformed(u);
     std::vector<double> result;
     for (const auto &link : links)
-      result.push_back(tension(link, x[link.a].distance(x[link.b]), smoothing).first);
+      result.push_back(link.axial_rigidity *
+                       tension_law.tension((x[link.a].distance(x[link.b]) - link.rest_length) /
+                                           link.rest_length));
     return result;
   }
 } // namespace softchain::fem

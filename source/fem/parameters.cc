@@ -170,9 +170,9 @@ namespace softchain::fem
                     "Built-in bender: fabric grid in the bottom wall and "
                     "thread rings in the side walls.");
     section.declare("Thread pitch", "0.004");
-    section.declare("Tension smoothing strain", "1e-3",
-                    "Strain band over which the tension-only law is rounded "
-                    "(C1), so that Newton does not cycle between slack and taut.");
+    section.declare("Tension smoothing strain", "1e-5",
+                    "delta: the tension-only law T = EA max(eps, 0) relaxed to "
+                    "T = EA (eps + sqrt(eps^2 + delta^2)) / 2 (smooth; within EA delta/2 of it)");
   }
 
   void SpringParameters::parse(const data::PrmSection &section)

@@ -52,7 +52,7 @@ TEST_CASE("load steps grow after easy steps, are cut after failures and end at 1
   CHECK(failures >= 2);
 }
 
-TEST_CASE("the secant predictor's previous state exists only after two consecutive steps",
+TEST_CASE("the secant predictor's previous state is the converged state before the last",
           "[fem][stepping]")
 {
   const SolverParameters prm = stepping(1e-4, 1.0);
@@ -63,8 +63,11 @@ TEST_CASE("the secant predictor's previous state exists only after two consecuti
   CHECK(path.reached() == 0.25);
   CHECK(path.step() == 0.375); // grown by 1.5 after 4 of 12 iterations
   path.failed();
-  CHECK(path.previous() < 0); // no extrapolation across a failed attempt
-  path.converged(12);         // a hard step: the step does not grow
+  // A failed attempt leaves the converged states as they were: the retried,
+  // shorter step extrapolates from the same two.
+  CHECK(path.previous() == 0.0);
+  CHECK(path.next() == 0.25 + 0.375 / 4);
+  path.converged(12); // a hard step: the step does not grow
   CHECK(path.step() == 0.375 / 4);
   CHECK(path.previous() == 0.25);
 }

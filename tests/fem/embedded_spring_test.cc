@@ -5,14 +5,14 @@
 // no lateral contraction -- the lateral stress mu (b_22 - 1) / J vanishes --
 // so its base reaction is exactly A mu (lambda - 1/lambda), and every link
 // of the spring (one per cell it crosses) is stretched by eps and carries
-//     T = EA (eps - d/2)      for eps >= d,
-//     T = EA eps^2 / (2 d)    for 0 < eps < d   (the rounded band),
-//     T = 0                   for eps <= 0      (slack),
-// the law of embedded_spring_network.h with smoothing strain d. Equal
-// tensions cancel at the interior nodes, so the spring adds exactly T to the
-// base reaction. Q2 represents the homogeneous field exactly; tolerance 1e-6
-// relative: the Newton tolerance (1e-10 relative residual) lies far below,
-// a missing, doubled or compressive spring force far above.
+//     T = EA (eps + sqrt(eps^2 + d^2)) / 2,
+// the law of embedded_spring_network.h with smoothing strain d: ~EA eps
+// taut, ~EA d/2 at the knee, ~EA d^2 / (4 |eps|) slack. Equal tensions cancel
+// at the interior nodes, so the spring adds exactly T to the base reaction.
+// Q2 represents the homogeneous field exactly; tolerance 1e-6 relative: the
+// Newton tolerance (1e-6 relative residual and update, the links' tensions
+// on their law to that) lies below, a missing, doubled or compressive spring
+// force, or a tension left off the law, far above.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/base_reaction.h>
@@ -59,10 +59,10 @@ namespace
 TEST_CASE("an embedded spring pulled along its length adds its tension law to the reaction",
           "[fem][springs]")
 {
-  for (const double eps : {1e-2, 0.5 * d, -1e-2}) // taut, in the rounded band, slack
+  for (const double eps : {1e-2, 0.5 * d, -1e-2}) // taut, at the knee, slack
     {
       const double delta = eps * L;
-      const double T     = eps >= d ? EA * (eps - d / 2) : eps > 0 ? EA * eps * eps / (2 * d) : 0.0;
+      const double T     = EA * (eps + std::sqrt(eps * eps + d * d)) / 2;
       const double lambda = 1 + eps, block = h * h * E / 2 * (lambda - 1 / lambda);
       std::vector<double> tensions, unused;
       const double        with = pull(delta, true, tensions), without = pull(delta, false, unused);
@@ -97,14 +97,16 @@ TEST_CASE("a spring link that crosses a cell face is refused, naming the link", 
 }
 
 // A taut link's tangent against the closed forms of a string under tension
-// T: stretching it along itself stiffens it by dT/dl = EA/L (the material
-// term of the taut branch); moving one end across it changes the force
+// T: stretching it along itself stiffens it by dT/dl = (EA/L) dt/deps (the
+// material term; dt/deps = (1 + eps / sqrt(eps^2 + d^2)) / 2, 0.9975 here);
+// moving one end across it changes the force
 // across by T/l per unit displacement (the geometric term, a tensioned
 // string's lateral stiffness). Each is the quadratic form v^T K v of the
 // link's cell matrix for a linear field v that moves node b by a unit vector
 // and node a not at all (Q2 interpolates it exactly), and the link's
 // internal force does the work f . v = T along it. The link lies inside one
-// Q2 cell, stretched by a uniform strain eps > d (the taut branch).
+// Q2 cell, stretched by a uniform strain eps = 10 d (taut), its tension and
+// gap on the law.
 TEST_CASE("a taut link's tangent is EA/L along it and T/l across it", "[fem][springs]")
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
@@ -114,8 +116,9 @@ TEST_CASE("a taut link's tangent is EA/L along it and T/l across it", "[fem][spr
   const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
   const Point<3>           a(0.25 * L, 0.4 * h, 0.5 * h), b(0.75 * L, 0.4 * h, 0.5 * h);
   const double             rest = b[0] - a[0], eps = 0.01;
-  const EmbeddedSpringNetwork network(space, {{"fabric", {a, b}, false}}, {{"fabric", EA}}, d);
+  EmbeddedSpringNetwork    network(space, {{"fabric", {a, b}, false}}, {{"fabric", EA}}, d);
   REQUIRE(network.all_links().size() == 1);
+  network.restore_link_states({network.law().state_at(eps)});
 
   // The cell's DoF values of the field x -> (x - a)_0 / rest * direction.
   const auto cell = space.dof_handler.begin_active();
@@ -134,11 +137,67 @@ TEST_CASE("a taut link's tangent is EA/L along it and T/l across it", "[fem][spr
   Vector<double>     rhs(u.size());
   network.assemble_cell(cell->active_cell_index(), u, &K, rhs);
 
-  const double   T = EA * (eps - d / 2), l = rest * (1 + eps);
+  const double   T = EA * (eps + std::hypot(eps, d)) / 2, l = rest * (1 + eps);
+  const double   slope = (1 + eps / std::hypot(eps, d)) / 2;
   const auto     along = values(Tensor<1, 3>({1, 0, 0})), across = values(Tensor<1, 3>({0, 1, 0}));
   // Sums of ~1e3 products of entries up to EA/L: round-off ~1e-12 relative.
   CHECK(-(rhs * along) == Approx(T).epsilon(1e-10));
-  CHECK(K.matrix_norm_square(along) == Approx(EA / rest).epsilon(1e-10));
+  CHECK(K.matrix_norm_square(along) == Approx(EA * slope / rest).epsilon(1e-10));
   CHECK(K.matrix_norm_square(across) == Approx(T / l).epsilon(1e-10));
   CHECK(std::abs(K.matrix_scalar_product(along, across)) <= 1e-10 * EA / rest);
+}
+
+// Off its law (a Newton iterate: the link's tension t and gap g are unknowns
+// of their own), a link is assembled with the tension its local equations
+// predict, T_eff = EA (t + (t (eps - t) + d^2/4) / (t + g)), the axial
+// stiffness EA t / ((t + g) L) and the geometric term EA t / l: its own
+// equations condensed (TensionOnlyLaw). Here a taut link carries half the
+// law's tension and a gap 100 times the law's.
+TEST_CASE("a link off its law is assembled with its condensed tension and stiffness",
+          "[fem][springs]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return;
+  Triangulation<3> mesh;
+  test::cantilever_block(mesh, {1, 1, 1}, L, h);
+  const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
+  const Point<3>           a(0.25 * L, 0.5 * h, 0.4 * h), b(0.75 * L, 0.5 * h, 0.4 * h);
+  const double             rest = b[0] - a[0], eps = 0.01;
+  EmbeddedSpringNetwork    network(space, {{"fabric", {a, b}, false}}, {{"fabric", EA}}, d);
+  const auto               on_law = network.law().state_at(eps);
+  const double             t = on_law.tension / 2, g = 100 * on_law.gap;
+  network.restore_link_states({{t, g}});
+
+  const auto  cell = space.dof_handler.begin_active();
+  const auto &fe   = *space.fe;
+  const auto  values = [&](const Tensor<1, 3> &direction) {
+    Vector<double> v(fe.n_dofs_per_cell());
+    for (unsigned int i = 0; i < v.size(); ++i)
+      {
+        const Point<3> x = space.mapping->transform_unit_to_real_cell(cell, fe.get_unit_support_points()[i]);
+        v[i] = (x[0] - a[0]) / rest * direction[fe.system_to_component_index(i).first];
+      }
+    return v;
+  };
+  const Vector<double> u = values(Tensor<1, 3>({eps * rest, 0, 0}));
+  FullMatrix<double>   K(u.size(), u.size());
+  Vector<double>       rhs(u.size());
+  const double         bound = network.assemble_cell(cell->active_cell_index(), u, &K, rhs);
+
+  const double T_eff = EA * (t + (t * (eps - t) + d * d / 4) / (t + g)), l = rest * (1 + eps);
+  const double T_law = EA * (eps + std::hypot(eps, d)) / 2;
+  const auto   along = values(Tensor<1, 3>({1, 0, 0})), across = values(Tensor<1, 3>({0, 1, 0}));
+  INFO("T_eff " << T_eff << " N, law " << T_law << " N");
+  REQUIRE(std::abs(T_eff - T_law) > 0.1 * T_law); // the state is far off the law
+  CHECK(-(rhs * along) == Approx(T_eff).epsilon(1e-10));
+  CHECK(K.matrix_norm_square(along) == Approx(EA * t / (t + g) / rest).epsilon(1e-10));
+  CHECK(K.matrix_norm_square(across) == Approx(EA * t / l).epsilon(1e-10));
+  // The returned bound on |R_law - R| is exact for a single link: the
+  // residual with the link on its law differs by that much.
+  network.restore_link_states({on_law});
+  Vector<double> rhs_law(u.size());
+  network.assemble_cell(cell->active_cell_index(), u, nullptr, rhs_law);
+  CHECK(-(rhs_law * along) == Approx(T_law).epsilon(1e-10));
+  rhs_law -= rhs;
+  CHECK(bound == Approx(rhs_law.l2_norm()).epsilon(1e-10));
 }

@@ -26,9 +26,9 @@ namespace softchain::fem
     double next() const;
     double step() const { return increment; }
 
-    // The converged state before the last one, when the last two converged
-    // states are consecutive steps (not separated by a failed attempt):
-    // the secant predictor extrapolates from them. Negative if none.
+    // The converged state before the last one (negative before the second):
+    // the secant predictor extrapolates from the last two converged states,
+    // also to a step retried after a failure (it is then shorter).
     double previous() const { return s_previous; }
 
     // The attempt at next() converged in `newton_iterations`: s moves there.

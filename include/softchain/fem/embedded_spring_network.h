@@ -1,19 +1,28 @@
 #pragma once
 // EmbeddedSpringNetwork: the paper's passive structures (Sec. III-A), 1D
 // tension-only springs between nodes embedded in the body. A link of rest
-// length L and current length l carries the tension
-//     T = EA (l - L) / L  for l > L,   T = 0 otherwise,
-// i.e. the strain energy Psi = EA/(2L) (l - L)^2 in tension. (The paper's
-// f = -k/L ((l - L)/L) v/|v| is the same law with k = EA L.) For Newton the
-// kink at l = L is rounded over a strain band d (Springs/Tension smoothing
-// strain): T = EA eps^2 / (2 d) for 0 < eps < d, EA (eps - d/2) above. The
-// force T e on node b (-T e on a) and its tangent
+// length L, current length l and strain eps = (l - L)/L carries the tension
+//     T = EA t(eps),   t(eps) = (eps + sqrt(eps^2 + delta^2)) / 2,
+// the tension-only law T = EA max(eps, 0) (the paper's f = -k/L ((l - L)/L)
+// v/|v| with k = EA L) with its kink relaxed over a strain delta (Springs/
+// Tension smoothing strain; TensionOnlyLaw). The force T e on node b (-T e
+// on a) and its tangent
 //     H = dT/dl e(x)e + T/l (I - e(x)e),   e = (x_b - x_a)/l,
 // reach the element DoFs through the embedded nodes' shape functions: with
 // delta_i = N_i(node b) - N_i(node a) and c_i the component of DoF i,
 //     f_int,i = delta_i T e_{c_i},   K_ij = delta_i H_{c_i c_j} delta_j.
+//
+// Newton carries each link's tension t and gap g = t - eps as unknowns of
+// their own (a primal-dual method, as interior-point methods treat
+// complementarity): the link equations are condensed cell by cell, so the
+// global system keeps its size, and after each displacement update every
+// link takes its own Newton step in (t, g) inside t, g > 0. A link that is
+// taut at an iterate but slack at the solution then sheds its tension in one
+// or two iterations, where Newton on the law t(eps(u)) alone halves it per
+// iteration (docs/results.md, "Newton with the tension-only springs").
 #include <softchain/fem/embedded_points.h>
 #include <softchain/fem/spring_polyline.h>
+#include <softchain/fem/tension_only_law.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -44,21 +53,38 @@ namespace softchain::fem
 
     bool empty() const { return links.empty(); }
 
-    // The strain band d over which the tension law is rounded: the .prm's,
-    // or a wider one while the solver continues in it (QuasiStaticSolver).
-    double band() const { return smoothing; }
-    void   set_band(double d) { smoothing = d; }
+    const TensionOnlyLaw &law() const { return tension_law; }
+    // The norm of the link forces at rest, where every link carries the
+    // relaxed law's EA delta/2: a force scale of a scene with no load.
+    double rest_force() const { return rest_force_norm; }
 
     // Each link lies in one cell (cell_conforming_polylines() splits the
     // polylines at cell faces; the constructor checks it) and is assembled
     // with that cell: cell_matrix += K, cell_rhs -= f_int of the links in the
     // cell with this active_cell_index(), from the cell's DoF values, in the
-    // cell's DoF order. Safe to call for different cells in parallel.
-    void assemble_cell(unsigned int cell_index, const dealii::Vector<double> &cell_u,
-                       dealii::FullMatrix<double> *cell_matrix,
-                       dealii::Vector<double>     &cell_rhs) const;
+    // cell's DoF order, with the links' condensed tensions (below). Returns
+    // sum |T_eff - T(eps)| |f_int / T| over the cell's links, a bound on how
+    // far the assembled residual lies from the law's at these DoF values.
+    // Safe to call for different cells in parallel.
+    double assemble_cell(unsigned int cell_index, const dealii::Vector<double> &cell_u,
+                         dealii::FullMatrix<double> *cell_matrix,
+                         dealii::Vector<double>     &cell_rhs) const;
 
-    // Tension of every link (identical on every rank).
+    // The links' own unknowns (this rank's links). set_link_states() puts
+    // every link on the law at the displacement `ghosted_u` (the assembled
+    // residual is then the law's). After a Newton update du of the
+    // displacement u (both ghosted), prepare_link_updates() computes each
+    // link's Newton step in (t, g) for the linearised strain increment, and
+    // move_link_states(a) sets the states to those before it plus a times it
+    // (a < 1 when a line search shortens the update).
+    void set_link_states(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u);
+    void prepare_link_updates(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
+                              const dealii::TrilinosWrappers::MPI::Vector &ghosted_du);
+    void move_link_states(double a);
+    const std::vector<TensionOnlyLaw::State> &link_states() const { return link_state; }
+    void restore_link_states(const std::vector<TensionOnlyLaw::State> &states) { link_state = states; }
+
+    // Tension of every link on the law (identical on every rank).
     std::vector<double> tensions(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u) const;
 
     const EmbeddedPoints             &points() const { return *nodes; }
@@ -69,7 +95,8 @@ namespace softchain::fem
     std::unique_ptr<EmbeddedPoints> nodes;
     std::vector<Link>               links;
     std::vector<std::string>        network_names;
-    double                          smoothing; // d
+    TensionOnlyLaw                  tension_law;
+    double                          rest_force_norm = 0;
 
     // How a link's vector x_b - x_a depends on the DoFs i of its cell: each
     // DoF carries one displacement component (the elements are primitive),
@@ -82,12 +109,23 @@ namespace softchain::fem
       dealii::Tensor<1, 3>                         rest_vector; // X_b - X_a
     };
     LinkStencil link_stencil(const Link &link) const;
-    // Adds the link's -f_int and K on its cell's DoFs, given their values.
-    void add_link(const Link &link, const LinkStencil &stencil, const dealii::Vector<double> &u,
-                  dealii::FullMatrix<double> *matrix, dealii::Vector<double> &rhs) const;
+    // x_b - x_a of owned link k, from the DoF values of its cell or of a
+    // global ghosted vector (zero: the rest vector).
+    dealii::Tensor<1, 3> link_vector(unsigned int k, const dealii::Vector<double> &cell_u) const;
+    dealii::Tensor<1, 3> link_vector(unsigned int                                 k,
+                                     const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
+                                     bool                                         with_rest) const;
+    // Adds link k's -f_int and K on its cell's DoFs, given their values;
+    // returns its term of assemble_cell()'s bound.
+    double add_link(unsigned int k, const dealii::Vector<double> &u,
+                    dealii::FullMatrix<double> *matrix, dealii::Vector<double> &rhs) const;
 
     // Stencils of this rank's links; the links of each cell (by active cell index).
     std::vector<LinkStencil>               owned_stencils;
     std::vector<std::vector<unsigned int>> links_in_cell;
+    std::vector<unsigned int>              owned_links;
+    // Tension and gap of each owned link (indexed by link), and the state
+    // and Newton step that move_link_states() combines.
+    std::vector<TensionOnlyLaw::State>     link_state, state_before, state_step;
   };
 } // namespace softchain::fem

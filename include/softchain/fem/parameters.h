@@ -66,7 +66,7 @@ namespace softchain::fem
     std::map<std::string, double> axial_rigidity;
     bool                          generate_for_bender = true;
     double                        thread_pitch        = 0.004; // m
-    double                        smoothing_strain    = 1e-3;  // d of the tension law
+    double                        smoothing_strain    = 1e-5;  // delta of the tension law
     static void declare(data::PrmSection &section);
     void        parse(const data::PrmSection &section);
   };

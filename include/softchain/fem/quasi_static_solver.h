@@ -6,9 +6,9 @@
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
 // stepping (cut on divergence or J <= 0, grow after easy steps) and a line
 // search on the energy along the Newton direction. The cells (HyperelasticCell)
-// and the springs inside them are assembled together, cell by cell. A solve
-// from rest with springs continues in the springs' smoothing band: the load
-// path under a wide band, then the band narrowed to the .prm's at the target.
+// and the springs inside them are assembled together, cell by cell; the
+// springs' tensions are Newton unknowns of their own, condensed per link
+// (EmbeddedSpringNetwork).
 #include <softchain/fem/cell_matrix_scatter.h>
 #include <softchain/fem/dead_surface_traction.h>
 #include <softchain/fem/embedded_points.h>
@@ -131,9 +131,12 @@ namespace softchain::fem
     dealii::TrilinosWrappers::MPI::Vector  u_owned;   // the displacement
     dealii::TrilinosWrappers::MPI::Vector  u_ghosted; // same, with ghost values
     dealii::TrilinosWrappers::MPI::Vector  du;
+    dealii::TrilinosWrappers::MPI::Vector  du_ghosted; // for the links' updates
     dealii::IndexSet                       writable_dofs;
     LoadState                      load; // at u
     double                         f_ext_norm = 0.0;
+    // Bound on |R_law - R_assembled| from the links' condensed tensions.
+    double                         tension_mismatch = 0.0;
 
     void setup_system();
     void setup_matrix(const dealii::AffineConstraints<double> &constraints,
@@ -146,13 +149,7 @@ namespace softchain::fem
                               const dealii::AffineConstraints<double> &constraints);
     bool solve_linear(); // false if the linear solver failed
     // Along the straight load path from the current state to `target`.
-    // `last_is_final`: the target state converges to the final tolerances
-    // (else to the intermediate one: a stage that another stage continues).
-    Result solve_path(const LoadState &target, double first_step, bool last_is_final = true);
-    // From an equilibrium under spring band `from` to one under the .prm's
-    // band at the same load, by a path in log d; false if it fails.
-    bool   narrow_band(double from, Result &result);
-    bool   at_rest() const;
+    Result solve_path(const LoadState &target, double first_step);
 
     struct NewtonOutcome
     {
