@@ -284,7 +284,9 @@ namespace softchain::fem
                     "used) or a Trilinos Amesos solver. Measured on P10 (8K DoFs, P2): "
                     "UMFPACK 0.19 s, KLU 0.42 s per factorisation.");
     section.declare("Krylov tolerance", "1e-10");
-    section.declare("Line search", "true");
+    section.declare("Line search", "true",
+                    "Halve a Newton step that inverts an element (J <= 0); false: cut the load step "
+                    "at once");
     section.declare("Secant predictor", "true",
                     "Start each load step from the extrapolation of the last two "
                     "converged states.");

@@ -269,7 +269,9 @@ namespace softchain::fem
     return valid;
   }
 
-  bool QuasiStaticSolver::solve_linear()
+  bool QuasiStaticSolver::solve_tangent(const TrilinosWrappers::MPI::Vector &b,
+                                        TrilinosWrappers::MPI::Vector       &x,
+                                        const bool                           same_tangent)
   {
     TimerOutput::Scope timer_section(computing_timer, "linear solve");
     const FiniteElementSpace &s      = *fe_space;
@@ -277,16 +279,18 @@ namespace softchain::fem
     const bool                direct = prm.solver.linear_solver == LinearSolver::direct ||
                         (prm.solver.linear_solver == LinearSolver::automatic &&
                          s.dof_handler.n_dofs() <= prm.solver.direct_solver_max_dofs);
-    SolverControl control(1000, prm.solver.krylov_tolerance * rhs.l2_norm());
-    du = 0;
+    SolverControl control(1000, prm.solver.krylov_tolerance * b.l2_norm());
+    x = 0;
     if (direct && prm.solver.direct_solver_package == "UMFPACK" &&
         Utilities::MPI::n_mpi_processes(s.communicator) == 1)
       {
         if (!serial_direct)
           serial_direct = std::make_unique<SerialDirectSolver>(matrix);
+        if (same_tangent)
+          serial_direct->solve_again(x, b);
         // A singular tangent fails the Newton iteration, as a GMRES that does
         // not converge does: the load step is cut.
-        if (!serial_direct->solve(matrix, du, rhs))
+        else if (!serial_direct->solve(matrix, x, b))
           {
             log << "      the tangent is singular\n";
             return false;
@@ -300,7 +304,7 @@ namespace softchain::fem
         TrilinosWrappers::SolverDirect solver(
           control,
           TrilinosWrappers::SolverDirect::AdditionalData(false, package));
-        solver.solve(matrix, du, rhs);
+        solver.solve(matrix, x, b);
       }
     else
       {
@@ -317,7 +321,7 @@ namespace softchain::fem
           control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
         try
           {
-            solver.solve(matrix, du, rhs, preconditioner);
+            solver.solve(matrix, x, b, preconditioner);
           }
         catch (const SolverControl::NoConvergence &failure)
           {
@@ -326,8 +330,26 @@ namespace softchain::fem
             return false;
           }
       }
-    (active_constraints ? *active_constraints : s.fixed_dofs).distribute(du);
-    return std::isfinite(du.l2_norm());
+    (active_constraints ? *active_constraints : s.fixed_dofs).distribute(x);
+    return std::isfinite(x.l2_norm());
+  }
+
+  void QuasiStaticSolver::apply_update(const TrilinosWrappers::MPI::Vector &update)
+  {
+    if (springs)
+      {
+        du_ghosted = update;
+        springs->prepare_link_updates(u_ghosted, du_ghosted);
+      }
+    u_owned += update;
+    u_ghosted = u_owned;
+    if (springs)
+      springs->move_link_states(1.0);
+  }
+
+  double QuasiStaticSolver::residual_bound() const
+  {
+    return rhs.l2_norm() + tension_mismatch;
   }
 
   bool QuasiStaticSolver::converged(const double residual, const double update, const bool final_state) const
@@ -342,39 +364,33 @@ namespace softchain::fem
            update <= (final_state ? prm.solver.displacement_tolerance : loose) * std::max(u_norm, 1e-300);
   }
 
-  // Line search on the energy along the Newton direction (Crisfield, Non-
-  // linear Finite Element Analysis of Solids and Structures, Sec. 9.3): with
-  // s(a) = du . R(u_old + a du), s(0) = -du.K du < 0. The full step is kept
-  // when |s(1)| <= 0.8 |s(0)| (the residual norm itself may grow in a good
-  // step of a nearly incompressible solid); otherwise the step goes to the
-  // zero of the secant of s, kept in [0.1, 1]. A step that inverts an element
-  // is halved. On entry u = u_old + du and rhs = -R(u); returns false if no
-  // admissible step was found.
-  bool QuasiStaticSolver::line_search(const LoadState &state, const double s0, const bool valid)
+  // A full Newton step that inverts an element (J <= 0 at a quadrature
+  // point) is halved, up to six times, with the springs' link states moved
+  // along. On entry u = u_old + du; returns false if every halving still
+  // inverts one. An energy line search along the Newton direction
+  // (Crisfield, Non-linear Finite Element Analysis of Solids and
+  // Structures, Sec. 9.3), which shortened steps whose energy rose at the
+  // full step, is not used: with the links' tensions as Newton unknowns it
+  // cut good steps to a tenth (the energy along du ignores the links' own
+  // step), and without it the demo's sweep took 0.75x the Newton iterations
+  // (docs/results.md, "Link tensions as Newton unknowns").
+  bool QuasiStaticSolver::halve_inverting_step(const LoadState &state)
   {
-    double step = 1.0, total = 1.0; // this cut, and all so far (u - u_old = total du_Newton)
-    if (valid)
-      {
-        const double s1 = -(du * rhs);
-        if (std::abs(s1) <= 0.8 * std::abs(s0))
-          return true;
-        step = std::clamp(s0 / (s0 - s1), 0.1, 1.0);
-      }
-    else
-      step = 0.5;
+    double step = 1.0;
     for (unsigned int k = 0; k < 6; ++k)
       {
-        u_owned.add(step - 1.0, du); // from u_old + du to u_old + step du
-        du *= step;
-        total *= step;
+        u_owned.add(-0.5 * step, du); // from u_old + step du to u_old + step/2 du
+        step *= 0.5;
         u_ghosted = u_owned;
         if (springs)
-          springs->move_link_states(total);
+          springs->move_link_states(step);
         if (prm.output.verbose)
-          log << "      line search: step " << step << '\n';
+          log << "      step halved to " << step << '\n';
         if (assemble(state, true))
-          return true;
-        step = 0.5;
+          {
+            du *= step;
+            return true;
+          }
       }
     return false;
   }
@@ -415,8 +431,7 @@ namespace softchain::fem
                                                              Result          &result,
                                                              const bool       final_state)
   {
-    double       s0             = 0.0; // du . R before the step
-    unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
+    unsigned int inverting_steps = 0; // full Newton steps that inverted an element
     for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
       {
         bool valid = assemble(state, true);
@@ -424,15 +439,14 @@ namespace softchain::fem
         // step up: it is too large for this mesh. Measured on P10 (Q2 hex,
         // 40 kPa from rest): no load step that converged had one such step,
         // while each that failed had them in 5-12 iterations, with 20-45
-        // halvings of the line search, a quarter of the solve's time.
+        // halvings, a quarter of the solve's time.
         if (it > 0 && !valid && ++inverting_steps == 2)
           return {false, true, it};
-        if (it > 0 && prm.solver.line_search)
-          valid = line_search(state, s0, valid);
+        if (it > 0 && !valid && prm.solver.line_search)
+          valid = halve_inverting_step(state);
         if (!valid)
           return {false, true, it};
-        // The law's residual is within tension_mismatch of the assembled one.
-        const double residual = rhs.l2_norm() + tension_mismatch;
+        const double residual = residual_bound();
         if (it == 0 && state.tip_motion && motion_residual_scale == 0.0)
           motion_residual_scale = residual;
         result.residual_history.push_back(residual);
@@ -442,22 +456,13 @@ namespace softchain::fem
           return {true, false, it};
         if (it == prm.solver.max_newton_iterations)
           break;
-        if (!solve_linear())
+        if (!solve_tangent(rhs, du))
           return {false, false, it};
-        s0 = -(du * rhs);
         if (prm.output.verbose)
           log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
               << std::setprecision(3) << residual << "  |du| = " << du.l2_norm()
               << std::defaultfloat << '\n';
-        if (springs)
-          {
-            du_ghosted = du;
-            springs->prepare_link_updates(u_ghosted, du_ghosted);
-          }
-        u_owned += du;
-        u_ghosted = u_owned;
-        if (springs)
-          springs->move_link_states(1.0);
+        apply_update(du);
       }
     return {false, false, prm.solver.max_newton_iterations};
   }

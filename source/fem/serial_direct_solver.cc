@@ -132,8 +132,6 @@ namespace softchain::fem
                                  const TrilinosWrappers::MPI::Vector  &rhs)
   {
     copy_values(matrix);
-    const Vector<double> b(rhs);
-    Vector<double>       x(b.size());
     last_was_ldlt = symmetric();
     if (last_was_ldlt)
       {
@@ -141,19 +139,26 @@ namespace softchain::fem
           ldlt = std::make_unique<MultifrontalLDLT>(row_start, column);
         if (!ldlt->factorise(value))
           return false;
-        ldlt->solve(b.data(), x.data());
       }
+    else if (!factorise_lu())
+      return false;
+    solve_again(solution, rhs);
+    return true;
+  }
+
+  void SerialDirectSolver::solve_again(TrilinosWrappers::MPI::Vector       &solution,
+                                       const TrilinosWrappers::MPI::Vector &rhs)
+  {
+    const Vector<double> b(rhs);
+    Vector<double>       x(b.size());
+    if (last_was_ldlt)
+      ldlt->solve(b.data(), x.data());
     else
-      {
-        if (!factorise_lu())
-          return false;
-        check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(),
-                               x.data(), b.data(), numeric, control.data(), nullptr),
-              "solve");
-      }
+      check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(), x.data(),
+                             b.data(), numeric, control.data(), nullptr),
+            "solve");
     for (types::global_dof_index i = 0; i < x.size(); ++i)
       solution[i] = x[i];
     solution.compress(VectorOperation::insert);
-    return true;
   }
 } // namespace softchain::fem

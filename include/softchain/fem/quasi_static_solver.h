@@ -4,8 +4,8 @@
 // embedded tension-only springs and point loads:
 //     R(u) = f_int(u) + f_springs(u) - f_pressure(u) - f_points = 0,
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
-// stepping (cut on divergence or J <= 0, grow after easy steps) and a line
-// search on the energy along the Newton direction. The cells (HyperelasticCell)
+// stepping (cut on divergence or J <= 0, grow after easy steps) and a
+// Newton step halved where it inverts an element. The cells (HyperelasticCell)
 // and the springs inside them are assembled together, cell by cell; the
 // springs' tensions are Newton unknowns of their own, condensed per link
 // (EmbeddedSpringNetwork).
@@ -99,6 +99,21 @@ namespace softchain::fem
     const dealii::TrilinosWrappers::MPI::Vector &support_forces();
     const dealii::TrilinosWrappers::SparseMatrix &tangent() const { return matrix; }
     const dealii::TrilinosWrappers::MPI::Vector  &negative_residual() const { return rhs; }
+    // |R| + a bound on how far the assembled residual lies from the
+    // tension law's (the springs' link states are Newton iterates): the
+    // residual norm the convergence tests use.
+    double residual_bound() const;
+    // x = K^-1 b by the configured linear solver, K the tangent of the last
+    // assemble(), x with the active constraints; `same_tangent`: K is the one
+    // of the last call (a one-rank direct solver then reuses its
+    // factorisation). False if the solver failed (a singular K, a Krylov
+    // solve that did not converge).
+    bool solve_tangent(const dealii::TrilinosWrappers::MPI::Vector &b,
+                       dealii::TrilinosWrappers::MPI::Vector       &x,
+                       bool                                         same_tangent = false);
+    // A Newton update: u += update, and the springs' link states take their
+    // Newton step for it.
+    void apply_update(const dealii::TrilinosWrappers::MPI::Vector &update);
     const FollowerPressure              &pressure_load() const { return *pressure; }
     const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
     const HyperelasticMaterial &material(dealii::types::material_id id) const { return *materials.at(id); }
@@ -135,7 +150,8 @@ namespace softchain::fem
     dealii::IndexSet                       writable_dofs;
     LoadState                      load; // at u
     double                         f_ext_norm = 0.0;
-    // Bound on |R_law - R_assembled| from the links' condensed tensions.
+    // Bound on |R_law - R_assembled| from the links' condensed tensions
+    // (EmbeddedSpringNetwork::assemble_cell).
     double                         tension_mismatch = 0.0;
 
     void setup_system();
@@ -147,7 +163,6 @@ namespace softchain::fem
                         const dealii::AffineConstraints<double> &constraints);
     void assemble_point_loads(const std::vector<PointLoad>         &point_loads,
                               const dealii::AffineConstraints<double> &constraints);
-    bool solve_linear(); // false if the linear solver failed
     // Along the straight load path from the current state to `target`.
     Result solve_path(const LoadState &target, double first_step);
 
@@ -162,7 +177,7 @@ namespace softchain::fem
     NewtonOutcome newton(const LoadState &state, Result &result, bool final_state = true);
     void          prepare_tip_motion(const LoadState &target);
     bool          converged(double residual, double update, bool final_state) const;
-    bool          line_search(const LoadState &state, double s0, bool valid);
+    bool          halve_inverting_step(const LoadState &state);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,
                                    bool inverted, Result &result) const;

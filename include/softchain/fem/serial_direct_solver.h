@@ -51,6 +51,11 @@ namespace softchain::fem
     bool solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
                dealii::TrilinosWrappers::MPI::Vector        &solution,
                const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+    // Solves with the factorisation of the last successful solve() (a
+    // second right-hand side of the same K, e.g. volume control's
+    // unit-pressure load).
+    void solve_again(dealii::TrilinosWrappers::MPI::Vector       &solution,
+                     const dealii::TrilinosWrappers::MPI::Vector &rhs);
 
     // Did the last solve use the LDL^T factorisation (else LU)?
     bool used_ldlt() const { return last_was_ldlt; }

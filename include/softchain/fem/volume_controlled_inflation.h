@@ -7,8 +7,10 @@
 // pressure's virtual work). Newton on the bordered system
 //     [ K   -g ] [du]   [ -R           ]
 //     [ g^T  0 ] [dp] = [ V_target - V ]
-// is solved with two solves of one factorisation of K (K a = -R, K b = g,
-// dp = (V_target - V - g.a) / g.b, du = a + dp b). The volume rises
+// is solved by the solver's configured linear solver, two solves of one
+// factorisation of K (K a = -R, K b = g, dp = (V_target - V - g.a) / g.b,
+// du = a + dp b); du is a Newton update of the solver's, springs' link
+// states included. The volume rises
 // monotonically through a balloon limit point, where pressure control has no
 // equilibrium beyond the peak (Crisfield, Non-linear Finite Element Analysis
 // of Solids and Structures, Vol. 1, Sec. 9.5, displacement control as the
