@@ -69,6 +69,7 @@ TEST_CASE("a parallelepiped must not taper, an STL design has no hexahedra", "[g
   CHECK_THROWS_WITH(FingerDesign::read(design_variant(
                       "p10", dir, {{"Shape", "stl"}, {"Element shape", "hex"}})),
                     Contains("'Element shape'"));
-  CHECK_THROWS_WITH(FingerDesign::read(design_variant("p10", dir, {{"Shape", "stl"}})),
+  CHECK_THROWS_WITH(FingerDesign::read(design_variant(
+                      "p10", dir, {{"Shape", "stl"}, {"Element shape", "tet"}})),
                     Contains("'Outer surface file'"));
 }
