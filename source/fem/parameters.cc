@@ -285,8 +285,9 @@ namespace softchain::fem
                     "UMFPACK 0.19 s, KLU 0.42 s per factorisation.");
     section.declare("Krylov tolerance", "1e-10");
     section.declare("Line search", "true",
-                    "Halve a Newton step that inverts an element (J <= 0); false: cut the load step "
-                    "at once");
+                    "A line search on the energy along each Newton step (with springs only the "
+                    "halving of a step that inverts an element, J <= 0); false: such a step cuts "
+                    "the load step at once");
     section.declare("Secant predictor", "true",
                     "Start each load step from the extrapolation of the last two "
                     "converged states.");

@@ -364,33 +364,40 @@ namespace softchain::fem
            update <= (final_state ? prm.solver.displacement_tolerance : loose) * std::max(u_norm, 1e-300);
   }
 
-  // A full Newton step that inverts an element (J <= 0 at a quadrature
-  // point) is halved, up to six times, with the springs' link states moved
-  // along. On entry u = u_old + du; returns false if every halving still
-  // inverts one. An energy line search along the Newton direction
-  // (Crisfield, Non-linear Finite Element Analysis of Solids and
-  // Structures, Sec. 9.3), which shortened steps whose energy rose at the
-  // full step, is not used: with the links' tensions as Newton unknowns it
-  // cut good steps to a tenth (the energy along du ignores the links' own
-  // step), and without it the demo's sweep took 0.75x the Newton iterations
-  // (docs/results.md, "Link tensions as Newton unknowns").
-  bool QuasiStaticSolver::halve_inverting_step(const LoadState &state)
+  // Line search on the energy along the Newton direction (Crisfield, Non-
+  // linear Finite Element Analysis of Solids and Structures, Sec. 9.3): with
+  // s(a) = du . R(u_old + a du), s(0) = -du.K du < 0. The full step is kept
+  // when |s(1)| <= 0.8 |s(0)| (the residual norm itself may grow in a good
+  // step of a nearly incompressible solid); otherwise the step goes to the
+  // zero of the secant of s, kept in [0.1, 1]. A step that inverts an element
+  // (`valid` false) is halved, the springs' link states moved along. On entry
+  // u = u_old + du and rhs = -R(u); returns false if no admissible step was
+  // found.
+  bool QuasiStaticSolver::line_search(const LoadState &state, const double s0, const bool valid)
   {
-    double step = 1.0;
+    double step = 1.0, total = 1.0; // this cut, and all so far (u - u_old = total du_Newton)
+    if (valid)
+      {
+        const double s1 = -(du * rhs);
+        if (std::abs(s1) <= 0.8 * std::abs(s0))
+          return true;
+        step = std::clamp(s0 / (s0 - s1), 0.1, 1.0);
+      }
+    else
+      step = 0.5;
     for (unsigned int k = 0; k < 6; ++k)
       {
-        u_owned.add(-0.5 * step, du); // from u_old + step du to u_old + step/2 du
-        step *= 0.5;
+        u_owned.add(step - 1.0, du); // from u_old + du to u_old + step du
+        du *= step;
+        total *= step;
         u_ghosted = u_owned;
         if (springs)
-          springs->move_link_states(step);
+          springs->move_link_states(total);
         if (prm.output.verbose)
-          log << "      step halved to " << step << '\n';
+          log << "      line search: step " << step << '\n';
         if (assemble(state, true))
-          {
-            du *= step;
-            return true;
-          }
+          return true;
+        step = 0.5;
       }
     return false;
   }
@@ -431,7 +438,8 @@ namespace softchain::fem
                                                              Result          &result,
                                                              const bool       final_state)
   {
-    unsigned int inverting_steps = 0; // full Newton steps that inverted an element
+    double       s0              = 0.0; // du . R before the step
+    unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
     for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
       {
         bool valid = assemble(state, true);
@@ -442,8 +450,14 @@ namespace softchain::fem
         // halvings, a quarter of the solve's time.
         if (it > 0 && !valid && ++inverting_steps == 2)
           return {false, true, it};
-        if (it > 0 && !valid && prm.solver.line_search)
-          valid = halve_inverting_step(state);
+        // With springs the energy criterion is left out: their tensions are
+        // Newton unknowns whose own step the energy along du ignores, and it
+        // cut good steps to a tenth (the demo's sweep: 1917 against 1519
+        // Newton iterations); without springs it pays (the CalculiX bender,
+        // Q2 at 3 kPa in one step: 10 against 16). docs/results.md, "Link
+        // tensions as Newton unknowns".
+        if (it > 0 && prm.solver.line_search && (!valid || !springs))
+          valid = line_search(state, s0, valid);
         if (!valid)
           return {false, true, it};
         const double residual = residual_bound();
@@ -458,6 +472,7 @@ namespace softchain::fem
           break;
         if (!solve_tangent(rhs, du))
           return {false, false, it};
+        s0 = -(du * rhs);
         if (prm.output.verbose)
           log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
               << std::setprecision(3) << residual << "  |du| = " << du.l2_norm()

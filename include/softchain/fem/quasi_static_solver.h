@@ -4,8 +4,9 @@
 // embedded tension-only springs and point loads:
 //     R(u) = f_int(u) + f_springs(u) - f_pressure(u) - f_points = 0,
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
-// stepping (cut on divergence or J <= 0, grow after easy steps) and a
-// Newton step halved where it inverts an element. The cells (HyperelasticCell)
+// stepping (cut on divergence or J <= 0, grow after easy steps) and a line
+// search (on the energy without springs; with them, a step that inverts an
+// element is halved). The cells (HyperelasticCell)
 // and the springs inside them are assembled together, cell by cell; the
 // springs' tensions are Newton unknowns of their own, condensed per link
 // (EmbeddedSpringNetwork).
@@ -177,7 +178,7 @@ namespace softchain::fem
     NewtonOutcome newton(const LoadState &state, Result &result, bool final_state = true);
     void          prepare_tip_motion(const LoadState &target);
     bool          converged(double residual, double update, bool final_state) const;
-    bool          halve_inverting_step(const LoadState &state);
+    bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,
                                    bool inverted, Result &result) const;
