@@ -54,6 +54,48 @@ namespace
       tensions = solver.spring_network()->tensions(solver.displacement());
     return BaseReaction(solver.space()).wrench(solver.support_forces()).force[0];
   }
+
+  // One link from a to b along x inside a single Q2 cell, and the cell's DoF
+  // values of a linear field x -> (x - a)_0 / rest * direction, which moves
+  // node b by `direction` and node a not at all (Q2 interpolates it exactly).
+  struct OneLinkCell
+  {
+    OneLinkCell(const Point<3> &a, const Point<3> &b)
+      : a(a)
+      , rest(b[0] - a[0])
+    {
+      test::cantilever_block(mesh, {1, 1, 1}, L, h);
+      space   = std::make_unique<FiniteElementSpace>(mesh, ElementType::Q2, MPI_COMM_WORLD);
+      network = std::make_unique<EmbeddedSpringNetwork>(*space, std::vector<SpringPolyline>{{"fabric", {a, b}, false}},
+                                                        std::map<std::string, double>{{"fabric", EA}}, d);
+    }
+
+    Vector<double> field(const Tensor<1, 3> &direction) const
+    {
+      const auto     cell = space->dof_handler.begin_active();
+      const auto    &fe   = *space->fe;
+      Vector<double> v(fe.n_dofs_per_cell());
+      for (unsigned int i = 0; i < v.size(); ++i)
+        {
+          const Point<3> x = space->mapping->transform_unit_to_real_cell(cell, fe.get_unit_support_points()[i]);
+          v[i] = (x[0] - a[0]) / rest * direction[fe.system_to_component_index(i).first];
+        }
+      return v;
+    }
+
+    // -f_int and K of the cell's link at the DoF values u; returns
+    // assemble_cell()'s bound.
+    double assemble(const Vector<double> &u, FullMatrix<double> *K, Vector<double> &rhs) const
+    {
+      return network->assemble_cell(space->dof_handler.begin_active()->active_cell_index(), u, K, rhs);
+    }
+
+    Triangulation<3>                       mesh;
+    std::unique_ptr<FiniteElementSpace>    space;
+    std::unique_ptr<EmbeddedSpringNetwork> network;
+    Point<3>                               a;
+    double                                 rest;
+  };
 } // namespace
 
 TEST_CASE("an embedded spring pulled along its length adds its tension law to the reaction",
@@ -111,35 +153,19 @@ TEST_CASE("a taut link's tangent is EA/L along it and T/l across it", "[fem][spr
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     return;
-  Triangulation<3> mesh;
-  test::cantilever_block(mesh, {1, 1, 1}, L, h);
-  const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
-  const Point<3>           a(0.25 * L, 0.4 * h, 0.5 * h), b(0.75 * L, 0.4 * h, 0.5 * h);
-  const double             rest = b[0] - a[0], eps = 0.01;
-  EmbeddedSpringNetwork    network(space, {{"fabric", {a, b}, false}}, {{"fabric", EA}}, d);
-  REQUIRE(network.all_links().size() == 1);
-  network.restore_link_states({network.law().state_at(eps)});
+  OneLinkCell  link({0.25 * L, 0.4 * h, 0.5 * h}, {0.75 * L, 0.4 * h, 0.5 * h});
+  const double rest = link.rest, eps = 0.01;
+  REQUIRE(link.network->all_links().size() == 1);
+  link.network->restore_link_states({link.network->law().state_at(eps)});
 
-  // The cell's DoF values of the field x -> (x - a)_0 / rest * direction.
-  const auto cell = space.dof_handler.begin_active();
-  const auto &fe  = *space.fe;
-  const auto values = [&](const Tensor<1, 3> &direction) {
-    Vector<double> v(fe.n_dofs_per_cell());
-    for (unsigned int i = 0; i < v.size(); ++i)
-      {
-        const Point<3> x = space.mapping->transform_unit_to_real_cell(cell, fe.get_unit_support_points()[i]);
-        v[i] = (x[0] - a[0]) / rest * direction[fe.system_to_component_index(i).first];
-      }
-    return v;
-  };
-  Vector<double> u = values(Tensor<1, 3>({eps * rest, 0, 0})); // b moves by eps rest along the link
-  FullMatrix<double> K(u.size(), u.size());
-  Vector<double>     rhs(u.size());
-  network.assemble_cell(cell->active_cell_index(), u, &K, rhs);
+  const Vector<double> u = link.field(Tensor<1, 3>({eps * rest, 0, 0})); // b moves by eps rest along the link
+  FullMatrix<double>   K(u.size(), u.size());
+  Vector<double>       rhs(u.size());
+  link.assemble(u, &K, rhs);
 
-  const double   T = EA * (eps + std::hypot(eps, d)) / 2, l = rest * (1 + eps);
-  const double   slope = (1 + eps / std::hypot(eps, d)) / 2;
-  const auto     along = values(Tensor<1, 3>({1, 0, 0})), across = values(Tensor<1, 3>({0, 1, 0}));
+  const double T = EA * (eps + std::hypot(eps, d)) / 2, l = rest * (1 + eps);
+  const double slope = (1 + eps / std::hypot(eps, d)) / 2;
+  const auto   along = link.field(Tensor<1, 3>({1, 0, 0})), across = link.field(Tensor<1, 3>({0, 1, 0}));
   // Sums of ~1e3 products of entries up to EA/L: round-off ~1e-12 relative.
   CHECK(-(rhs * along) == Approx(T).epsilon(1e-10));
   CHECK(K.matrix_norm_square(along) == Approx(EA * slope / rest).epsilon(1e-10));
@@ -158,35 +184,20 @@ TEST_CASE("a link off its law is assembled with its condensed tension and stiffn
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     return;
-  Triangulation<3> mesh;
-  test::cantilever_block(mesh, {1, 1, 1}, L, h);
-  const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
-  const Point<3>           a(0.25 * L, 0.5 * h, 0.4 * h), b(0.75 * L, 0.5 * h, 0.4 * h);
-  const double             rest = b[0] - a[0], eps = 0.01;
-  EmbeddedSpringNetwork    network(space, {{"fabric", {a, b}, false}}, {{"fabric", EA}}, d);
-  const auto               on_law = network.law().state_at(eps);
-  const double             t = on_law.tension / 2, g = 100 * on_law.gap;
-  network.restore_link_states({{t, g}});
+  OneLinkCell  link({0.25 * L, 0.5 * h, 0.4 * h}, {0.75 * L, 0.5 * h, 0.4 * h});
+  const double rest = link.rest, eps = 0.01;
+  const auto   on_law = link.network->law().state_at(eps);
+  const double t = on_law.tension / 2, g = 100 * on_law.gap;
+  link.network->restore_link_states({{t, g}});
 
-  const auto  cell = space.dof_handler.begin_active();
-  const auto &fe   = *space.fe;
-  const auto  values = [&](const Tensor<1, 3> &direction) {
-    Vector<double> v(fe.n_dofs_per_cell());
-    for (unsigned int i = 0; i < v.size(); ++i)
-      {
-        const Point<3> x = space.mapping->transform_unit_to_real_cell(cell, fe.get_unit_support_points()[i]);
-        v[i] = (x[0] - a[0]) / rest * direction[fe.system_to_component_index(i).first];
-      }
-    return v;
-  };
-  const Vector<double> u = values(Tensor<1, 3>({eps * rest, 0, 0}));
+  const Vector<double> u = link.field(Tensor<1, 3>({eps * rest, 0, 0}));
   FullMatrix<double>   K(u.size(), u.size());
   Vector<double>       rhs(u.size());
-  const double         bound = network.assemble_cell(cell->active_cell_index(), u, &K, rhs);
+  const double         bound = link.assemble(u, &K, rhs);
 
   const double T_eff = EA * (t + (t * (eps - t) + d * d / 4) / (t + g)), l = rest * (1 + eps);
   const double T_law = EA * (eps + std::hypot(eps, d)) / 2;
-  const auto   along = values(Tensor<1, 3>({1, 0, 0})), across = values(Tensor<1, 3>({0, 1, 0}));
+  const auto   along = link.field(Tensor<1, 3>({1, 0, 0})), across = link.field(Tensor<1, 3>({0, 1, 0}));
   INFO("T_eff " << T_eff << " N, law " << T_law << " N");
   REQUIRE(std::abs(T_eff - T_law) > 0.1 * T_law); // the state is far off the law
   CHECK(-(rhs * along) == Approx(T_eff).epsilon(1e-10));
@@ -194,9 +205,9 @@ TEST_CASE("a link off its law is assembled with its condensed tension and stiffn
   CHECK(K.matrix_norm_square(across) == Approx(EA * t / l).epsilon(1e-10));
   // The returned bound on |R_law - R| is exact for a single link: the
   // residual with the link on its law differs by that much.
-  network.restore_link_states({on_law});
+  link.network->restore_link_states({on_law});
   Vector<double> rhs_law(u.size());
-  network.assemble_cell(cell->active_cell_index(), u, nullptr, rhs_law);
+  link.assemble(u, nullptr, rhs_law);
   CHECK(-(rhs_law * along) == Approx(T_law).epsilon(1e-10));
   rhs_law -= rhs;
   CHECK(bound == Approx(rhs_law.l2_norm()).epsilon(1e-10));
