@@ -6,10 +6,9 @@
 // solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
 // stepping (cut on divergence or J <= 0, grow after easy steps) and a line
 // search (on the energy without springs; with them, a step that inverts an
-// element is halved). The cells (HyperelasticCell)
-// and the springs inside them are assembled together, cell by cell; the
-// springs' tensions are Newton unknowns of their own, condensed per link
-// (EmbeddedSpringNetwork).
+// element is halved). The cells (HyperelasticCell) and the springs inside
+// them are assembled together, cell by cell; the springs' tensions are
+// Newton unknowns of their own, condensed per link (EmbeddedSpringNetwork).
 #include <softchain/fem/cell_matrix_scatter.h>
 #include <softchain/fem/dead_surface_traction.h>
 #include <softchain/fem/embedded_points.h>
