@@ -171,8 +171,11 @@ namespace softchain::fem
   {
     for (const unsigned int k : owned_links)
       {
-        const double L = links[k].rest_length;
-        link_state[k]  = tension_law.state_at((link_vector(k, u, true).norm() - L) / L);
+        const double L   = links[k].rest_length;
+        const double eps = (link_vector(k, u, true).norm() - L) / L;
+        // At its rest length (to the round-off of the reference positions)
+        // a link starts on the taut side of the knee (TensionOnlyLaw::rest_start).
+        link_state[k] = std::abs(eps) <= 1e-12 ? tension_law.rest_start() : tension_law.state_at(eps);
       }
   }
 

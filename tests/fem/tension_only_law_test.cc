@@ -3,7 +3,7 @@
 // law max(eps, 0), its slope against central differences, and the local
 // Newton step on (t, g): quadratic convergence onto the law at a fixed strain,
 // the condensed tension as the tension of that step, and a step across the
-// knee landing on the law.
+// knee landing on the law; the taut start of a link at rest.
 #include <softchain/fem/tension_only_law.h>
 
 #include <catch2/catch.hpp>
@@ -120,4 +120,27 @@ TEST_CASE("a link's Newton step across the knee lands on the law at the new stra
       CHECK(s.tension + step.tension == Approx(to.tension).epsilon(1e-12));
       CHECK(s.gap + step.gap == Approx(to.gap).epsilon(1e-12));
     }
+}
+
+TEST_CASE("a link at rest starts on the taut side of the knee, with nearly its full slope",
+          "[fem][springs]")
+{
+  const TensionOnlyLaw law(delta);
+  const auto           s = law.rest_start();
+  // Inside the relaxed complementarity (t g = m, both positive) but off the
+  // law at eps = 0 (t - g = 0 there): the taut side, t > g.
+  CHECK(s.tension > 0);
+  CHECK(s.gap > 0);
+  CHECK(s.tension * s.gap == Approx(law.complementarity()).epsilon(1e-14));
+  CHECK(s.tension > 100 * s.gap);
+  // Condensed at eps = 0: a tension below the law's delta/2 (the start adds
+  // no spurious pull to the finger at rest) and a slope within 1 % of the
+  // taut string's 1, where the law's is 1/2.
+  CHECK(law.condensed_tension(s, 0.0) >= 0);
+  CHECK(law.condensed_tension(s, 0.0) < 0.2 * law.tension(0.0));
+  CHECK(law.condensed_slope(s) > 0.99);
+  CHECK(law.slope(0.0) == Approx(0.5).epsilon(1e-14));
+  // One local Newton step at eps = 0 brings it onto the law there.
+  const auto step = law.increment(s, 0.0, 0.0);
+  CHECK(s.tension + step.tension == Approx(law.tension(0.0)).epsilon(1e-6));
 }

@@ -55,6 +55,20 @@ namespace softchain::fem
       return {complementarity() / g, g};
     }
 
+    // Where a link at its rest length (eps = 0, the knee's centre) starts:
+    // on the taut side of the knee, t = 10 delta and g = delta/40. Still
+    // t g = m, but off g - t + eps = 0: its condensed tension is
+    // 2 t g/(t + g) = 0.05 delta (the law's is delta/2) and its condensed
+    // slope t/(t + g) = 0.9975 (the law's is 1/2). The paper's fabric and
+    // threads are stress-free in the reference state, so at rest every link
+    // sits at the knee; with the law's half slope the first linear step
+    // from rest saw half-stiff strings and overshot until an element
+    // inverted (P10 and the demo bender both failed their first load step,
+    // 0.125 of the load, from rest). From this start the first step sees
+    // the strings' stiffness, and a link the load compresses crosses the
+    // knee in its first update, onto the law at its linearised strain.
+    State rest_start() const { return {taut_start * delta, delta / (4 * taut_start)}; }
+
     // Newton's increment of (t, g) for a strain increment d_eps, from the
     // linearised equations  g - t + eps = 0  and  t g - m = 0:
     //     dt = (t (d_eps + r) - c) / (t + g),   dg = dt - d_eps - r,
@@ -92,6 +106,7 @@ namespace softchain::fem
 
   private:
     static constexpr double boundary_fraction = 0.01;
+    static constexpr double taut_start        = 10;
     double                  delta;
   };
 } // namespace softchain::fem
