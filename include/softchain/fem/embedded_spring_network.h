@@ -73,11 +73,12 @@ namespace softchain::fem
     // The links' own unknowns (this rank's links). set_link_states() puts
     // every link on the law at the displacement `ghosted_u` (the assembled
     // residual is then the law's), except a link at its rest length, which
-    // starts on the taut side of the knee (TensionOnlyLaw::rest_start). After a Newton update du of the
-    // displacement u (both ghosted), prepare_link_updates() computes each
-    // link's Newton step in (t, g) for the linearised strain increment, and
-    // move_link_states(a) sets the states to those before it plus a times it
-    // (a < 1 when a line search shortens the update).
+    // starts on the taut side of the knee (TensionOnlyLaw::rest_start).
+    // After a Newton update du of the displacement u (both ghosted),
+    // prepare_link_updates() computes each link's Newton step in (t, g) for
+    // the linearised strain increment, and move_link_states(a) sets the
+    // states to those before it plus a times it (a < 1 when a line search
+    // shortens the update).
     void set_link_states(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u);
     void prepare_link_updates(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
                               const dealii::TrilinosWrappers::MPI::Vector &ghosted_du);
