@@ -17,6 +17,7 @@
 #include <calculix_deck.h>
 #include <fem_test_tools.h>
 
+#include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/boundary_ids.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -149,6 +150,8 @@ namespace
 
 int main(int argc, char **argv)
 {
+  // Both codes get the CPU's BLAS kernel: the variable passes to ccx.
+  use_the_cpus_blas_kernel(argv);
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MultithreadInfo::set_thread_limit(1);
   const unsigned int cells    = argc > 1 ? std::atoi(argv[1]) : 16;

@@ -2,6 +2,7 @@
 // (docs/conventions.md, "Command line and exit codes").
 #include <softchain/chain/chain_run.h>
 #include <softchain/app/commands.h>
+#include <softchain/fem/blas_kernel.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/design_parameters.h>
 #include <softchain/data/prm_file.h>
@@ -121,6 +122,7 @@ namespace
 
 int main(int argc, char **argv)
 {
+  softchain::fem::use_the_cpus_blas_kernel(argv);
   // deal.II's thread pool (the cell assembly's WorkStream) gets the cores
   // not taken by other MPI ranks on this node; Solver/Threads may lower it.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);

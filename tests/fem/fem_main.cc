@@ -3,10 +3,13 @@
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
+#include <softchain/fem/blas_kernel.h>
+
 #include <deal.II/base/mpi.h>
 
 int main(int argc, char **argv)
 {
+  softchain::fem::use_the_cpus_blas_kernel(argv);
   // Threads as in `softchain`: the cell assembly runs in parallel here too.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   return Catch::Session().run(argc, argv);
