@@ -71,11 +71,13 @@ namespace softchain::fem
         const double step = motion_size(increment);
         return step > 0 ? std::min(1.0, prm.solver.initial_load_step * motion_size(target.tip_motion) / step) : 1.0;
       }
-    if (!start || start->point_forces.size() != target.point_forces.size())
+    // From an inflated state without forces (a chain's start) the forces grow from zero.
+    if (!start || (!start->point_forces.empty() &&
+                   start->point_forces.size() != target.point_forces.size()))
       return prm.solver.initial_load_step;
     data::Actuation increment = target; // the forces at the same points, in chain order
     increment.pressure -= start->pressure;
-    for (std::size_t k = 0; k < increment.point_forces.size(); ++k)
+    for (std::size_t k = 0; k < start->point_forces.size(); ++k)
       for (unsigned int c = 0; c < 3; ++c)
         increment.point_forces[k].force[c] -= start->point_forces[k].force[c];
     const double step = load_size(increment);

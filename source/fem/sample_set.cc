@@ -208,6 +208,11 @@ namespace softchain::fem
     return size;
   }
 
+  bool pressure_only(const data::Actuation &actuation)
+  {
+    return actuation.point_forces.empty() && !actuation.tip_motion;
+  }
+
   SampleSet SampleSet::read(const data::PrmFile &prm, const TipFace &tip,
                             const std::string &design_hash)
   {

@@ -31,7 +31,8 @@
 //
 // Samples with the same role, the same force points and (with forces) the
 // same pressure form a continuation chain, ordered by increasing load, so that each continues from the one
-// before it. deal.II-free: the FEM tier checks that the points lie inside the
+// before it (and the sweep starts a chain's first sample from a pressure-only
+// sample, SampleSweep). deal.II-free: the FEM tier checks that the points lie inside the
 // body before any solve.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/prm_file.h>
@@ -51,6 +52,10 @@ namespace softchain::fem
   // |p| + sum |f|, or V/V0 - 1 under volume control: the order of the
   // samples along a chain [mixed units, compared only within one chain].
   double load_size(const data::Actuation &actuation);
+
+  // Whether an actuation inflates the finger alone (pressure or volume
+  // control; no forces, no tip motion): the equilibria other chains start from.
+  bool pressure_only(const data::Actuation &actuation);
 
   class SampleSet
   {

@@ -4,8 +4,11 @@
 // (SampleSet) that <output dir>/database.h5 does not hold yet (the cache, keyed
 // by design hash and actuation) solves the quasi-static problem, continuing
 // from the nearest converged sample of its chain, and stores the sample
-// atomically (converged or failed). Samples are spread over MPI sample groups
-// (whole chains per group, so the results do not depend on the rank count);
+// atomically (converged or failed). The pressure-only samples come first:
+// a chain of forces at pressure p then starts from the converged one at the
+// highest pressure not above p instead of from rest. Samples are spread over
+// MPI sample groups (whole chains per group, so the results do not depend on
+// the rank count);
 // world rank 0 writes the database and prints one progress line per sample.
 // Then, if subsection Protocol asks for it, the samples of the paper's
 // validation experiment (TipMotionProtocol): the inflation to a tip angle,
@@ -65,8 +68,9 @@ namespace softchain::fem
     using Records = std::map<std::size_t, data::SampleRecord>; // by sample index
 
     void read_cached(const std::vector<std::size_t> &indices, Records &known) const;
-    void solve_missing(const std::vector<std::size_t> &indices, Records &known,
-                       Summary &summary) const;
+    void solve_missing(const std::vector<std::size_t> &indices, Records &known, Summary &summary,
+                       bool inflations_first = false);
+    void start_chains_from_inflations(const std::vector<std::size_t> &indices, Records &known);
     std::string                         run_protocol(Records &known, Summary &summary);
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
     data::TipPose                       tip_pose(const data::SampleRecord &record);
