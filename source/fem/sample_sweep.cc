@@ -184,7 +184,9 @@ namespace softchain::fem
   // A chain of forces at a pressure p would start from rest, and its first
   // load path would inflate the finger again before the forces act. It
   // starts instead from the converged pressure-only sample at the highest
-  // pressure p_0 <= p, put at the head of the chain: the path from there
+  // pressure p_0 <= p, put at the head of the chain (pressure control only:
+  // a volume-controlled sample may lie past the limit point, on another
+  // branch of equilibria than a load path from rest); the path from there
   // ramps the pressure from p_0 to p and the forces from zero. The
   // equilibrium is the same; the demo's sweep took 827 Newton iterations
   // instead of 1341 (docs/results.md, "Force chains start inflated"). Rank 0
@@ -205,6 +207,7 @@ namespace softchain::fem
             if (const auto record = known.find(i);
                 record != known.end() && record->second.converged() &&
                 pressure_only(record->second.actuation) &&
+                !set.samples[i].actuation.cavity_volume_ratio &&
                 std::find(set.chains[c].begin(), set.chains[c].end(), i) == set.chains[c].end() &&
                 record->second.actuation.pressure <= first.pressure &&
                 record->second.actuation.pressure > best)
