@@ -434,6 +434,44 @@ namespace softchain::fem
     active_constraints = &prescribed_tip->constraints();
   }
 
+  // The tip moved to `state`'s motion, the body following linearly: with d
+  // the tip DoFs' move, u += d + v where K v = -R(u) - K d on the free DoFs
+  // (K and R at u, the tip held). Moving the tip DoFs alone shears the
+  // elements at the tip face, and the first steps of a motion inverted them
+  // until cut to a hundredth (docs/results.md, "A tip motion's first step").
+  // K d is the directional derivative of the residual, by a forward
+  // difference along d with step h = 1e-3 (relative error of order h times
+  // the residual's curvature along d, well within Newton's tolerance: the
+  // Newton iterations that follow correct it). Returns false if an element
+  // inverts on the way (u is then as on entry).
+  bool QuasiStaticSolver::predict_tip_motion(const LoadState &state)
+  {
+    TrilinosWrappers::MPI::Vector d(u_owned);
+    prescribed_tip->apply(*state.tip_motion, d);
+    d -= u_owned;
+    constexpr double h = 1e-3;
+    u_owned.add(h, d);
+    u_ghosted     = u_owned;
+    const bool ok = assemble(state, false);
+    u_owned.add(-h, d);
+    u_ghosted = u_owned;
+    if (!ok)
+      return false;
+    TrilinosWrappers::MPI::Vector moved_rhs(rhs);
+    if (!assemble(state, true))
+      return false;
+    // -R(u) - K d = rhs + (rhs(u + h d) - rhs) / h, rhs = -R (condensed).
+    TrilinosWrappers::MPI::Vector b(rhs);
+    b.sadd(1.0 - 1.0 / h, 1.0 / h, moved_rhs);
+    if (motion_residual_scale == 0.0) // the residual the move alone would leave
+      motion_residual_scale = b.l2_norm();
+    if (!solve_tangent(b, du))
+      return false;
+    du += d;
+    apply_update(du);
+    return true;
+  }
+
   QuasiStaticSolver::NewtonOutcome QuasiStaticSolver::newton(const LoadState &state,
                                                              Result          &result,
                                                              const bool       final_state)
@@ -529,7 +567,10 @@ namespace softchain::fem
             u_owned.add(-ratio, u_before);
             u_ghosted = u_owned;
           }
-        if (state.tip_motion) // the tip where the motion puts it, held there by Newton
+        // The tip where the motion puts it, held there by Newton; without
+        // the secant's history the body first follows it linearly.
+        const bool secant = prm.solver.secant_predictor && path.previous() >= 0;
+        if (state.tip_motion && (secant || !predict_tip_motion(state)))
           {
             prescribed_tip->apply(*state.tip_motion, u_owned);
             u_ghosted = u_owned;

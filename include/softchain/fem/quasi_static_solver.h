@@ -176,6 +176,7 @@ namespace softchain::fem
     // step) to Solver/Intermediate tolerance.
     NewtonOutcome newton(const LoadState &state, Result &result, bool final_state = true);
     void          prepare_tip_motion(const LoadState &target);
+    bool          predict_tip_motion(const LoadState &state);
     bool          converged(double residual, double update, bool final_state) const;
     bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
