@@ -8,8 +8,8 @@
 // a chain of forces at pressure p then starts from the converged one at the
 // highest pressure not above p instead of from rest. Samples are spread over
 // MPI sample groups (whole chains per group, so the results do not depend on
-// the rank count);
-// world rank 0 writes the database and prints one progress line per sample.
+// the rank count); world rank 0 writes the database and prints one progress
+// line per sample.
 // Then, if subsection Protocol asks for it, the samples of the paper's
 // validation experiment (TipMotionProtocol): the inflation to a tip angle,
 // found by trial samples, and the tip motions from that state, listed in
