@@ -194,28 +194,11 @@ namespace softchain::fem
   void SampleSweep::start_chains_from_inflations(const std::vector<std::size_t> &indices,
                                                  Records                        &known)
   {
-    constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+    constexpr std::size_t    none = std::numeric_limits<std::size_t>::max();
     std::vector<std::size_t> head(set.chains.size(), none);
     if (world_rank() == 0)
       for (std::size_t c = 0; c < set.chains.size(); ++c)
-        {
-          const data::Actuation &first = set.samples[set.chains[c].front()].actuation;
-          if (first.tip_motion || first.cavity_volume_ratio || first.pressure <= 0)
-            continue;
-          double best = 0;
-          for (const std::size_t i : indices)
-            if (const auto record = known.find(i);
-                record != known.end() && record->second.converged() &&
-                pressure_only(record->second.actuation) &&
-                !set.samples[i].actuation.cavity_volume_ratio &&
-                std::find(set.chains[c].begin(), set.chains[c].end(), i) == set.chains[c].end() &&
-                record->second.actuation.pressure <= first.pressure &&
-                record->second.actuation.pressure > best)
-              {
-                best    = record->second.actuation.pressure;
-                head[c] = i;
-              }
-        }
+        head[c] = inflated_start(set.chains[c], indices, known).value_or(none);
     head = Utilities::MPI::broadcast(MPI_COMM_WORLD, head, 0);
     for (std::size_t c = 0; c < set.chains.size(); ++c)
       if (head[c] != none)
@@ -223,6 +206,35 @@ namespace softchain::fem
           share_record(head[c], known);
           set.chains[c].insert(set.chains[c].begin(), head[c]);
         }
+  }
+
+  // Of `indices`, the converged pressure-controlled sample without forces,
+  // outside `chain`, at the highest pressure not above the chain's first
+  // sample's; none for a chain at p <= 0, of tip motions or under volume control.
+  std::optional<std::size_t> SampleSweep::inflated_start(const std::vector<std::size_t> &chain,
+                                                         const std::vector<std::size_t> &indices,
+                                                         const Records &known) const
+  {
+    const data::Actuation &first = set.samples[chain.front()].actuation;
+    if (first.tip_motion || first.cavity_volume_ratio || first.pressure <= 0)
+      return std::nullopt;
+    std::optional<std::size_t> best;
+    double                     best_pressure = 0;
+    for (const std::size_t i : indices)
+      {
+        const auto record = known.find(i);
+        if (record == known.end() || !record->second.converged())
+          continue;
+        const data::Actuation &a = record->second.actuation;
+        if (pressure_only(a) && !set.samples[i].actuation.cavity_volume_ratio &&
+            a.pressure <= first.pressure &&
+            a.pressure > best_pressure && std::find(chain.begin(), chain.end(), i) == chain.end())
+          {
+            best          = i;
+            best_pressure = a.pressure;
+          }
+      }
+    return best;
   }
 
   // The paper's validation protocol (TipMotionProtocol): the inflation to the

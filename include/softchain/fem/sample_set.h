@@ -54,7 +54,8 @@ namespace softchain::fem
   double load_size(const data::Actuation &actuation);
 
   // Whether an actuation inflates the finger alone (pressure or volume
-  // control; no forces, no tip motion): the equilibria other chains start from.
+  // control; no forces, no tip motion): the sweep solves these first, and
+  // other chains start from the pressure-controlled ones (SampleSweep).
   bool pressure_only(const data::Actuation &actuation);
 
   class SampleSet

@@ -71,6 +71,9 @@ namespace softchain::fem
     void solve_missing(const std::vector<std::size_t> &indices, Records &known, Summary &summary,
                        bool inflations_first = false);
     void start_chains_from_inflations(const std::vector<std::size_t> &indices, Records &known);
+    std::optional<std::size_t> inflated_start(const std::vector<std::size_t> &chain,
+                                              const std::vector<std::size_t> &indices,
+                                              const Records                  &known) const;
     std::string                         run_protocol(Records &known, Summary &summary);
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
     data::TipPose                       tip_pose(const data::SampleRecord &record);
