@@ -293,28 +293,53 @@ TEST_CASE("continuation from the converged neighbour takes fewer load steps than
   CHECK(load_steps[true] < load_steps[false]);
 }
 
+namespace
+{
+  using Stored = std::map<std::string, softchain::data::SampleRecord>; // by sample id
+
+  // The samples of `sweep` solved twice: [true] with continuation (chains,
+  // inflated starts), [false] each from rest.
+  std::map<bool, Stored> solved_both_ways(const std::string &name, const std::string &sweep)
+  {
+    std::map<bool, Stored> stored;
+    for (const bool continuation : {true, false})
+      {
+        TinyDesign design(name, sweep + "\nset Continuation = " + (continuation ? "true" : "false"));
+        REQUIRE(design.run("sweep").status == 0);
+        const auto database = ActuationDatabase::open(design.database());
+        for (const auto &id : database.sample_ids())
+          stored[continuation][id] = database.read_sample(id);
+      }
+    return stored;
+  }
+
+  // The largest node position difference between two solves of one sample.
+  // Both end at a relative residual and update of 1e-6, and the tiny
+  // bender's nodes move about 1 mm, so the same equilibrium agrees to about
+  // 1e-9 m; callers allow 1e-8 m, a hundredth of a micrometre. (Measured:
+  // the same bits, Newton having gone to round-off.)
+  double node_difference(const softchain::data::SampleRecord &a, const softchain::data::SampleRecord &b)
+  {
+    double largest = 0;
+    for (std::size_t n = 0; n < a.x.size(); ++n)
+      for (int c = 0; c < 3; ++c)
+        largest = std::max(largest, std::abs(a.x[n][c] - b.x[n][c]));
+    return largest;
+  }
+} // namespace
+
 TEST_CASE("a chain of forces at a pressure starts from that pressure's equilibrium, not from rest")
 {
   // The pressure samples are solved first; the lateral chain at 2 kPa then
   // starts from the 2 kPa sample and only its force grows (one load step),
   // where from rest the pressure and the force grow together.
-  const std::string sweep = "set Pressure sweep = 1e3, 2e3\n"
-                            "set Force sample pressures = 2e3\n"
-                            "set Lateral tip forces = 0.01, 0.02";
-  std::map<bool, std::map<std::string, softchain::data::SampleRecord>> stored;
-  for (const bool continuation : {true, false})
+  const auto stored = solved_both_ways("sweep_inflated_start", "set Pressure sweep = 1e3, 2e3\n"
+                                                               "set Force sample pressures = 2e3\n"
+                                                               "set Lateral tip forces = 0.01, 0.02");
+  REQUIRE(stored.at(true).size() == 4);
+  for (const auto &[id, record] : stored.at(true))
     {
-      TinyDesign design("sweep_inflated_start",
-                        sweep + "\nset Continuation = " + (continuation ? "true" : "false"));
-      REQUIRE(design.run("sweep").status == 0);
-      const auto database = ActuationDatabase::open(design.database());
-      for (const auto &id : database.sample_ids())
-        stored[continuation][id] = database.read_sample(id);
-    }
-  REQUIRE(stored[true].size() == 4);
-  for (const auto &[id, record] : stored[true])
-    {
-      const auto &from_rest = stored[false].at(id);
+      const auto &from_rest = stored.at(false).at(id);
       INFO("sample " << id << " at " << record.actuation.pressure << " Pa");
       if (record.actuation.point_forces.empty())
         continue;
@@ -324,16 +349,31 @@ TEST_CASE("a chain of forces at a pressure starts from that pressure's equilibri
           CHECK(record.load_steps == 1);
           CHECK(from_rest.load_steps > 1);
         }
-      // The same equilibrium: both solves end at a relative residual and
-      // update of 1e-6, and the tiny bender's nodes move about 1 mm, so the
-      // states agree to about 1e-9 m; 1e-8 m is a hundredth of a micrometre.
-      // (Measured: the same bits here, Newton having gone to round-off.)
-      double largest = 0;
-      for (std::size_t n = 0; n < record.x.size(); ++n)
-        for (int c = 0; c < 3; ++c)
-          largest = std::max(largest, std::abs(record.x[n][c] - from_rest.x[n][c]));
-      CHECK(largest < 1e-8);
+      CHECK(node_difference(record, from_rest) < 1e-8);
     }
+}
+
+TEST_CASE("a held-out pressure continues from the nearest lower swept pressure, not from rest")
+{
+  // The inflations share one chain whatever their role: the held-out
+  // 1.5 kPa starts from the 1 kPa equilibrium, where from rest it would
+  // first inflate the finger through the 1 kPa the sweep already solved.
+  const auto stored = solved_both_ways("sweep_held_out_pressure", "set Pressure sweep = 1e3, 2e3\n"
+                                                                  "set Validation samples = 1.5e3");
+  REQUIRE(stored.at(true).size() == 3);
+  int held_out = 0;
+  for (const auto &[id, record] : stored.at(true))
+    {
+      const auto &from_rest = stored.at(false).at(id);
+      INFO("sample " << id << " (" << record.actuation.role << ") at " << record.actuation.pressure << " Pa");
+      if (record.actuation.role == "validation")
+        {
+          ++held_out;
+          CHECK(record.load_steps < from_rest.load_steps);
+        }
+      CHECK(node_difference(record, from_rest) < 1e-8);
+    }
+  CHECK(held_out == 1);
 }
 
 TEST_CASE("a sample that does not converge is stored as failed and the sweep exits 2 naming it")

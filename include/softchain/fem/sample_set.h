@@ -32,7 +32,8 @@
 // Samples with the same role, the same force points and (with forces) the
 // same pressure form a continuation chain, ordered by increasing load, so
 // that each continues from the one before it (and the sweep starts a chain's
-// first sample from a pressure-only sample, SampleSweep). deal.II-free: the
+// first sample from a pressure-only sample, SampleSweep). The inflations
+// under pressure control, swept or held out, form one chain. deal.II-free: the
 // FEM tier checks that the points lie inside the body before any solve.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/prm_file.h>
