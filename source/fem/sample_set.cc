@@ -123,13 +123,16 @@ namespace softchain::fem
 
     // The chain key: role, force points and, for samples with forces, the
     // pressure (a chain of forces grows at one pressure). The inflations
-    // under pressure control share one chain whatever their role (the
-    // pressure sweep and the held-out pressures): a held-out pressure then
-    // continues from the nearest lower swept one, not from rest.
+    // under pressure control share one chain per sign of the pressure,
+    // whatever their role (the pressure sweep and the held-out pressures):
+    // a held-out pressure then continues from the nearest lower swept one,
+    // not from rest. Split by sign, each chain loads proportionally, so a
+    // sample past a limit point of its chain has no equilibrium on that path
+    // (a vacuum that collapses the finger says nothing of inflation).
     std::string chain_key(const data::Actuation &a)
     {
       if (pressure_only(a) && !a.cavity_volume_ratio)
-        return "inflation";
+        return a.pressure < 0 ? "deflation" : "inflation";
       std::string key = a.role;
       if (!a.point_forces.empty())
         key += " p " + data::canonical(a.pressure);

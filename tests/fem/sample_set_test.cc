@@ -1,5 +1,6 @@
 // SampleSet: the lateral and torsion samples are repeated at every pressure
-// of `Force sample pressures`, each pressure a continuation chain of its own.
+// of `Force sample pressures`, each pressure a continuation chain of its own;
+// the inflations form one chain per sign of the pressure.
 #include <softchain/fem/sample_set.h>
 
 #include "../data/scratch_directory.h"
@@ -7,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 using namespace softchain;
@@ -67,6 +69,28 @@ TEST_CASE("force samples are made at each force sample pressure, one chain per r
         const data::Actuation &a = set.samples[k].actuation;
         CHECK((a.role == "pressure" || a.pressure == set.samples[chain.back()].actuation.pressure));
       }
+}
+
+TEST_CASE("the inflations form one chain per sign of the pressure, held-out pressures included")
+{
+  const SampleSet set = read_samples("inflations", "  set Pressure sweep = 2e4, -1e4, 1e4, -3e4\n"
+                                                   "  set Validation samples = 1.5e4 ; -2e4\n");
+  REQUIRE(set.samples.size() == 6);
+  REQUIRE(set.chains.size() == 2);
+  for (const auto &chain : set.chains)
+    {
+      std::vector<double> pressures;
+      for (const std::size_t k : chain)
+        pressures.push_back(set.samples[k].actuation.pressure);
+      INFO("chain starting at " << pressures.front() << " Pa");
+      CHECK(pressures.size() == 3);
+      // One sign per chain, in increasing |p| (each sample continues from
+      // the nearest smaller pressure of its sign).
+      CHECK(std::all_of(pressures.begin(), pressures.end(),
+                        [&](double p) { return (p < 0) == (pressures.front() < 0); }));
+      CHECK(std::is_sorted(pressures.begin(), pressures.end(),
+                           [](double a, double b) { return std::abs(a) < std::abs(b); }));
+    }
 }
 
 TEST_CASE("a validation sample can load the torsion couple's points by name")
