@@ -34,8 +34,8 @@
 // that each continues from the one before it (and the sweep starts a chain's
 // first sample from a pressure-only sample, SampleSweep). The inflations
 // under pressure control, swept or held out, form one chain per sign of the
-// pressure. deal.II-free: the
-// FEM tier checks that the points lie inside the body before any solve.
+// pressure. deal.II-free: the FEM tier checks that the points lie inside the
+// body before any solve.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/prm_file.h>
 
