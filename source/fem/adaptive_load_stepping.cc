@@ -16,8 +16,7 @@ namespace softchain::fem
 
   void AdaptiveLoadStepping::converged(const unsigned int newton_iterations)
   {
-    s_previous = s;
-    s          = next();
+    s = next();
     if (3 * newton_iterations <= 2 * prm.max_newton_iterations)
       increment = std::min(prm.max_load_step, 1.5 * increment);
   }

@@ -289,8 +289,9 @@ namespace softchain::fem
                     "halving of a step that inverts an element, J <= 0); false: such a step cuts "
                     "the load step at once");
     section.declare("Secant predictor", "true",
-                    "Start each load step from the extrapolation of the last two "
-                    "converged states.");
+                    "Start each load step from the extrapolation of the last converged "
+                    "states: the secant through two, or the parabola through three where it "
+                    "would have predicted the last state better (ContinuationPredictor).");
     section.declare("Threads", "0", "0: all cores");
   }
 

@@ -1,6 +1,7 @@
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/data/input_error.h>
 #include <softchain/fem/adaptive_load_stepping.h>
+#include <softchain/fem/continuation_predictor.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/cell_conforming_polylines.h>
 #include <softchain/fem/hyperelastic_cell.h>
@@ -534,10 +535,11 @@ namespace softchain::fem
   }
 
   // Load stepping along s in [0, 1] from the current state to `target`
-  // (AdaptiveLoadStepping). Each step starts from the secant extrapolation
-  // of the last two converged states (a first-order continuation
-  // predictor), which leaves Newton only the correction; a failed step is
-  // retried, shorter, from the last converged state and its link states.
+  // (AdaptiveLoadStepping). Each step starts from the extrapolation of the
+  // last converged states (ContinuationPredictor: the secant, or the
+  // parabola through three), which leaves Newton only the correction; a
+  // failed step is retried, shorter, from the last converged state and its
+  // link states.
   // Measured on P10 (Q2 hex, 40 kPa from rest): a retry without the
   // predictor started from a residual of a few tenths of a newton with a
   // Newton update of 0.1-0.15 m and crept along it with line-search steps of
@@ -552,25 +554,19 @@ namespace softchain::fem
     bool                 last_inverted = false;
     // (pressure, cavity volume) of converged states, to tell a limit point.
     std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};
-    TrilinosWrappers::MPI::Vector          u_converged(u_owned), u_before(u_owned);
+    ContinuationPredictor                  predictor(u_owned);
     std::vector<TensionOnlyLaw::State>     links_converged;
     if (springs)
       links_converged = springs->link_states();
     while (!path.finished())
       {
-        const double    s = path.reached(), s_try = path.next();
+        const double    s_try = path.next();
         const LoadState state = LoadState::interpolate(start, target, s_try);
-        if (prm.solver.secant_predictor && path.previous() >= 0) // u + (ds / ds_previous) (u - u_before)
-          {
-            const double ratio = (s_try - s) / (s - path.previous());
-            u_owned.add(ratio, u_converged);
-            u_owned.add(-ratio, u_before);
-            u_ghosted = u_owned;
-          }
+        const bool predicted = prm.solver.secant_predictor && predictor.predict(s_try, u_owned);
+        u_ghosted            = u_owned;
         // The tip where the motion puts it, held there by Newton; without
-        // the secant's history the body first follows it linearly.
-        const bool secant = prm.solver.secant_predictor && path.previous() >= 0;
-        if (state.tip_motion && (secant || !predict_tip_motion(state)))
+        // the path's history the body first follows it linearly.
+        if (state.tip_motion && (predicted || !predict_tip_motion(state)))
           {
             prescribed_tip->apply(*state.tip_motion, u_owned);
             u_ghosted = u_owned;
@@ -580,9 +576,8 @@ namespace softchain::fem
         if (outcome.converged)
           {
             path.converged(outcome.iterations);
-            load        = state;
-            u_before    = u_converged;
-            u_converged = u_owned;
+            predictor.converged(path.reached(), u_owned);
+            load = state;
             if (springs)
               links_converged = springs->link_states();
             ++result.load_steps;
@@ -591,7 +586,7 @@ namespace softchain::fem
                 << outcome.iterations << " Newton iterations\n";
             continue;
           }
-        set_displacement(u_converged);
+        set_displacement(predictor.last());
         if (springs)
           springs->restore_link_states(links_converged);
         last_inverted   = outcome.inverted;

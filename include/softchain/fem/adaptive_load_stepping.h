@@ -26,11 +26,6 @@ namespace softchain::fem
     double next() const;
     double step() const { return increment; }
 
-    // The converged state before the last one (negative before the second):
-    // the secant predictor extrapolates from the last two converged states,
-    // also to a step retried after a failure (it is then shorter).
-    double previous() const { return s_previous; }
-
     // The attempt at next() converged in `newton_iterations`: s moves there.
     void converged(unsigned int newton_iterations);
     // The attempt at next() failed: the step is cut. Returns false when the
@@ -39,8 +34,7 @@ namespace softchain::fem
 
   private:
     const SolverParameters &prm;
-    double                  s          = 0.0;
-    double                  s_previous = -1.0;
+    double                  s = 0.0;
     double                  increment;
   };
 } // namespace softchain::fem

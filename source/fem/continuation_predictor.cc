@@ -1,0 +1,50 @@
+#include <softchain/fem/continuation_predictor.h>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  ContinuationPredictor::ContinuationPredictor(const TrilinosWrappers::MPI::Vector &u)
+    : states{{0.0, u}}
+  {}
+
+  void ContinuationPredictor::converged(const double s, const TrilinosWrappers::MPI::Vector &u)
+  {
+    if (states.size() == 4)
+      states.pop_back();
+    states.insert(states.begin(), {s, u});
+    quadratic = false;
+    if (states.size() < 4)
+      return;
+    // How far each order's prediction from the older states lands from u_0.
+    TrilinosWrappers::MPI::Vector secant(u), parabola(u);
+    extrapolate(1, 2, s, secant);
+    extrapolate(1, 3, s, parabola);
+    secant -= u;
+    parabola -= u;
+    quadratic = parabola.l2_norm() < secant.l2_norm();
+  }
+
+  bool ContinuationPredictor::predict(const double s, TrilinosWrappers::MPI::Vector &u) const
+  {
+    if (states.size() < 2)
+      return false;
+    extrapolate(0, quadratic ? 3 : 2, s, u);
+    return true;
+  }
+
+  // u(s) = sum_i L_i(s) u_i, L_i(s) = prod_{j != i} (s - s_j) / (s_i - s_j).
+  void ContinuationPredictor::extrapolate(const unsigned int first, const unsigned int n, const double s,
+                                          TrilinosWrappers::MPI::Vector &u) const
+  {
+    u = 0;
+    for (unsigned int i = first; i < first + n; ++i)
+      {
+        double weight = 1.0;
+        for (unsigned int j = first; j < first + n; ++j)
+          if (j != i)
+            weight *= (s - states[j].s) / (states[i].s - states[j].s);
+        u.add(weight, states[i].u);
+      }
+  }
+} // namespace softchain::fem
