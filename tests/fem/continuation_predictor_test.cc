@@ -1,6 +1,8 @@
 // ContinuationPredictor on model paths u(s) in R^3 whose form is known: the
 // secant is exact on a straight path, the parabola on a quadratic one, and
-// the order follows which of the two would have predicted the last state.
+// the order follows which of the two would have predicted the last state;
+// a scalar carried along (volume control's pressure) is extrapolated alike,
+// here the path's first component.
 #include <softchain/fem/continuation_predictor.h>
 
 #include <deal.II/base/index_set.h>
@@ -27,17 +29,20 @@ namespace
   // The predictor after the path's converged states at `s` (s[0] = 0: its start).
   ContinuationPredictor along(const Path &u, const std::vector<double> &s)
   {
-    ContinuationPredictor predictor(state(u, s[0]));
+    ContinuationPredictor predictor(state(u, s[0]), u(s[0], 0));
     for (std::size_t k = 1; k < s.size(); ++k)
-      predictor.converged(s[k], state(u, s[k]));
+      predictor.converged(s[k], state(u, s[k]), u(s[k], 0));
     return predictor;
   }
 
-  // |prediction - u(s)|.
+  // |prediction - u(s)|; the scalar's prediction is checked against the
+  // vector's first component (the same weights).
   double error(const ContinuationPredictor &predictor, const Path &u, const double s)
   {
     TrilinosWrappers::MPI::Vector v(complete_index_set(3), MPI_COMM_SELF);
-    REQUIRE(predictor.predict(s, v));
+    double                        scalar = 0;
+    REQUIRE(predictor.predict(s, v, &scalar));
+    CHECK(scalar == Approx(v[0]).epsilon(1e-14)); // the same sum, to round-off
     v -= state(u, s);
     return v.l2_norm();
   }

@@ -48,8 +48,10 @@ namespace softchain::fem
     // g = dV/du: the nodal load of a unit follower pressure at the current state.
     dealii::TrilinosWrappers::MPI::Vector unit_pressure_load() const;
 
-    // Inflates to `target_volume` in adaptive volume steps; leaves the
-    // solver at the last converged state, with its load the pressure there.
+    // Inflates to `target_volume` in adaptive volume steps (AdaptiveLoadStepping),
+    // each started from the extrapolation of u and p (ContinuationPredictor)
+    // as under pressure control; leaves the solver at the last converged
+    // state, with its load the pressure there.
     Result solve(double target_volume);
 
   private:
@@ -57,8 +59,10 @@ namespace softchain::fem
     const Parameters  &prm;
     double             p;
 
-    // Newton at a fixed volume; false if it fails (state restored by caller).
-    bool newton(double target_volume, Result &result);
+    // Newton at a fixed volume, to the final tolerances if `final_state`,
+    // else to the intermediate one (a stepping stone); false if it fails
+    // (state restored by the caller).
+    bool newton(double target_volume, Result &result, bool final_state);
     dealii::TrilinosWrappers::MPI::Vector owned_displacement() const;
     LoadState                             pressure_state() const; // the load p alone
   };
