@@ -266,7 +266,8 @@ namespace softchain::fem
                     "Newton stops when |R| <= tol * |external load| ...");
     section.declare("Displacement tolerance", "1e-6", "... and |du| <= tol * |u|.");
     section.declare("Intermediate tolerance", "1e-2",
-                    "both tolerances of the load steps before a load path's last, whose states "
+                    "both tolerances of the load steps (under volume control, the residual's "
+                    "of the volume steps) before a load path's last, whose states "
                     "are only stepping stones (the last step converges to the two above); not "
                     "part of the design hash: the answer does not depend on it",
                     false);
