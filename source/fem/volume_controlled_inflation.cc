@@ -92,10 +92,8 @@ namespace softchain::fem
     result.curve.push_back({v_start, p});
     while (!path.finished())
       {
-        const TrilinosWrappers::MPI::Vector u_converged = owned_displacement();
-        const double                        p_converged = p;
-        const unsigned int                  before      = result.newton_iterations;
-        TrilinosWrappers::MPI::Vector       u_predicted(u_converged);
+        const unsigned int            before = result.newton_iterations;
+        TrilinosWrappers::MPI::Vector u_predicted(predictor.last());
         if (prm.solver.secant_predictor && predictor.predict(path.next(), u_predicted, &p))
           solver.set_displacement(u_predicted);
         if (newton(v_start + path.next() * (target_volume - v_start), result, path.next() >= 1.0))
@@ -105,8 +103,9 @@ namespace softchain::fem
             result.curve.push_back({volume(), p});
             continue;
           }
-        solver.set_displacement(u_converged);
-        p = p_converged;
+        // Back to the last converged state (the curve's last point).
+        solver.set_displacement(predictor.last());
+        p = result.curve.back().pressure;
         if (!path.failed())
           {
             std::ostringstream why;
@@ -114,7 +113,7 @@ namespace softchain::fem
                 << prm.solver.min_load_step << " (last converged V = " << result.curve.back().volume
                 << " m^3, p = " << p << " Pa)";
             result.reason = why.str();
-            solver.set_state(u_converged, pressure_state());
+            solver.set_state(predictor.last(), pressure_state());
             return result;
           }
       }
