@@ -83,22 +83,26 @@ namespace softchain::fem
   } // namespace
 
   // The blocks (a, b <= a) of one quadrature point.
-  void HyperelasticCell::add_tangent(const SymmetricTensor<4, 3> &c_tensor, const double JxW)
+  // A_a[i][d][l] = JxW (g_a^k c_ikdl + delta_id (tau g_a)_l), with the
+  // contraction of IsotropicTangent:
+  //     = v_i delta_dl + g_i (JxW B)_dl + delta_id w_l + h delta_il g_d,
+  // v = JxW (gamma g + B g), w = JxW (eta/2 g + tau g), h = JxW eta/2.
+  void HyperelasticCell::add_tangent(const IsotropicTangent &c, const double JxW)
   {
-    double c[3][3][3][3];
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int k = 0; k < 3; ++k)
-        for (unsigned int d = 0; d < 3; ++d)
-          for (unsigned int l = 0; l < 3; ++l)
-            c[i][k][d][l] = JxW * c_tensor[i][k][d][l];
-    // A_a[i][d][l] = JxW (g_a^k c_ikdl + delta_id (tau g_a)_l)
+    const SymmetricTensor<2, 3> B = JxW * c.B;
+    const double                h = 0.5 * JxW * c.eta;
     for (unsigned int a = 0; a < n_nodes; ++a)
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int d = 0; d < 3; ++d)
-          for (unsigned int l = 0; l < 3; ++l)
-            A[27 * a + 9 * i + 3 * d + l] = g[0][a] * c[i][0][d][l] + g[1][a] * c[i][1][d][l] +
-                                            g[2][a] * c[i][2][d][l] +
-                                            (i == d ? JxW * tau_g[a][l] : 0.0);
+      {
+        const Tensor<1, 3> g_a({g[0][a], g[1][a], g[2][a]});
+        const Tensor<1, 3> v = (JxW * c.gamma) * g_a + B * g_a;
+        const Tensor<1, 3> w = h * g_a + JxW * tau_g[a];
+        double *const      A_a = &A[27 * a];
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int d = 0; d < 3; ++d)
+            for (unsigned int l = 0; l < 3; ++l)
+              A_a[9 * i + 3 * d + l] = (d == l ? v[i] : 0.0) + g_a[i] * B[d][l] +
+                                       (i == d ? w[l] : 0.0) + (i == l ? h * g_a[d] : 0.0);
+      }
     add_node_blocks(n_nodes, A.data(), g[0].data(), g[1].data(), g[2].data(), block.data());
   }
 

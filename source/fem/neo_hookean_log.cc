@@ -26,11 +26,10 @@ namespace softchain::fem
     return constants.mu * (b - I) + constants.lambda * lnJ * I;
   }
 
-  SymmetricTensor<4, 3> NeoHookeanLog::spatial_tangent(const Tensor<2, 3> &F) const
+  // Jc = lambda I(x)I + 2 (mu - lambda ln J) S.
+  IsotropicTangent NeoHookeanLog::spatial_tangent(const Tensor<2, 3> &F) const
   {
-    const SymmetricTensor<2, 3> I   = unit_symmetric_tensor<3>();
-    const double                lnJ = std::log(determinant(F));
-    return constants.lambda * outer_product(I, I) +
-           2.0 * (constants.mu - constants.lambda * lnJ) * identity_tensor<3>();
+    const double lnJ = std::log(determinant(F));
+    return {constants.lambda, 2.0 * (constants.mu - constants.lambda * lnJ), {}};
   }
 } // namespace softchain::fem

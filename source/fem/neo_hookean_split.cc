@@ -26,20 +26,15 @@ namespace softchain::fem
            0.5 * constants.kappa * (J * J - 1.0) * unit_symmetric_tensor<3>();
   }
 
-  SymmetricTensor<4, 3> NeoHookeanSplit::spatial_tangent(const Tensor<2, 3> &F) const
+  // Jc_iso + Jc_vol with P = S - 1/3 I(x)I expanded (IsotropicTangent).
+  IsotropicTangent NeoHookeanSplit::spatial_tangent(const Tensor<2, 3> &F) const
   {
-    const double                J       = determinant(F);
-    const SymmetricTensor<2, 3> I       = unit_symmetric_tensor<3>();
-    const SymmetricTensor<2, 3> b_bar   = std::pow(J, -2.0 / 3.0) * symmetrize(F * transpose(F));
-    const SymmetricTensor<2, 3> tau_iso = constants.mu * deviator(b_bar);
+    const double                J          = determinant(F);
+    const SymmetricTensor<2, 3> b_bar      = std::pow(J, -2.0 / 3.0) * symmetrize(F * transpose(F));
     const double                tr_tau_bar = constants.mu * trace(b_bar);
-
-    const SymmetricTensor<4, 3> Jc_iso =
-      (2.0 / 3.0) * tr_tau_bar * deviator_tensor<3>() -
-      (2.0 / 3.0) * (outer_product(tau_iso, I) + outer_product(I, tau_iso));
-    const SymmetricTensor<4, 3> Jc_vol =
-      constants.kappa * J * J * outer_product(I, I) -
-      constants.kappa * (J * J - 1.0) * identity_tensor<3>();
-    return Jc_iso + Jc_vol;
+    const double                kappa_J2   = constants.kappa * J * J;
+    return {kappa_J2 - (2.0 / 9.0) * tr_tau_bar,
+            (2.0 / 3.0) * tr_tau_bar - (kappa_J2 - constants.kappa),
+            (-2.0 / 3.0) * constants.mu * deviator(b_bar)};
   }
 } // namespace softchain::fem

@@ -14,7 +14,8 @@
 //     A_a[c][d][l] = g_a^k c_ckdl + delta_cd (tau g_a)_l
 // formed once per node and quadrature point (the geometric term folded in,
 // tau being symmetric), each 3x3 block is K_ab[c][d] += A_a[c][d][l] g_b^l:
-// 27 multiply-adds, only for b <= a (K is symmetric). The loop runs over b,
+// 27 multiply-adds, only for b <= a (K is symmetric). A_a comes from the
+// closed-form contraction g_a^k c_ckdl of IsotropicTangent. The loop runs over b,
 // with the g_b stored component by component, so that it vectorises.
 #include <softchain/fem/hyperelastic_material.h>
 
@@ -45,7 +46,7 @@ namespace softchain::fem
                   dealii::Vector<double>                   &rhs);
 
   private:
-    void add_tangent(const dealii::SymmetricTensor<4, 3> &c, double JxW);
+    void add_tangent(const IsotropicTangent &c, double JxW);
     void copy_blocks_to(dealii::FullMatrix<double> &matrix) const;
 
     unsigned int                             n_nodes;

@@ -2,7 +2,10 @@
 // HyperelasticMaterial: a compressible isotropic strain energy W(F), evaluated
 // in the spatial form used by the assembly (deal.II step-44): the Kirchhoff
 // stress tau = P F^T and the spatial tangent Jc (the push-forward of the
-// material tangent, J times the Eulerian elasticity tensor).
+// material tangent, J times the Eulerian elasticity tensor), the latter by
+// the coefficients of IsotropicTangent.
+#include <softchain/fem/isotropic_tangent.h>
+
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
@@ -26,7 +29,7 @@ namespace softchain::fem
     // tau = 2 F dW/dC F^T
     virtual dealii::SymmetricTensor<2, 3> kirchhoff_stress(const dealii::Tensor<2, 3> &F) const = 0;
     // Jc_ijkl = 4 F_iI F_jJ F_kK F_lL d2W/dC_IJ dC_KL
-    virtual dealii::SymmetricTensor<4, 3> spatial_tangent(const dealii::Tensor<2, 3> &F) const = 0;
+    virtual IsotropicTangent spatial_tangent(const dealii::Tensor<2, 3> &F) const = 0;
 
     // NeoHookeanLog or NeoHookeanSplit with E [Pa] and nu.
     static std::unique_ptr<HyperelasticMaterial>

@@ -14,7 +14,7 @@ namespace softchain::fem
     NeoHookeanLog(double youngs_modulus, double poissons_ratio);
     double                strain_energy(const dealii::Tensor<2, 3> &F) const override;
     dealii::SymmetricTensor<2, 3> kirchhoff_stress(const dealii::Tensor<2, 3> &F) const override;
-    dealii::SymmetricTensor<4, 3> spatial_tangent(const dealii::Tensor<2, 3> &F) const override;
+    IsotropicTangent spatial_tangent(const dealii::Tensor<2, 3> &F) const override;
 
   private:
     ElasticConstants constants;
