@@ -53,7 +53,8 @@ namespace softchain::fem
                                   const double                         p,
                                   const AffineConstraints<double>     &constraints,
                                   TrilinosWrappers::SparseMatrix      *matrix,
-                                  TrilinosWrappers::MPI::Vector       &rhs) const
+                                  TrilinosWrappers::MPI::Vector       &rhs,
+                                  const CellMatrixScatter             *places) const
   {
     const unsigned int                   n = space.fe->n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
@@ -66,7 +67,10 @@ namespace softchain::fem
       if (current.state() != IteratorState::valid)
         return;
       current->get_dof_indices(dofs);
-      if (matrix)
+      if (places)
+        places->add(current->active_cell_index(), dofs, matrix ? &cell_matrix : nullptr, cell_rhs,
+                    matrix, rhs);
+      else if (matrix)
         constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, *matrix, rhs);
       else
         constraints.distribute_local_to_global(cell_rhs, dofs, rhs);

@@ -187,13 +187,13 @@ namespace softchain::fem
         }
     };
 
-    const bool by_places = scatter && &constraints == &s.fixed_dofs;
+    const bool places = by_places(constraints);
     tension_mismatch = 0;
     auto copier = [&](const CellCopy &copy) {
       tension_mismatch += copy.tension_mismatch;
       if (copy.inverted)
         inverted = true;
-      else if (by_places)
+      else if (places)
         scatter->add(copy.cell_index, copy.dofs, with_matrix ? &copy.matrix : nullptr, copy.rhs,
                      &matrix, rhs);
       else if (with_matrix)
@@ -208,6 +208,11 @@ namespace softchain::fem
                     worker, copier, CellScratch(s), CellCopy(n));
     tension_mismatch = Utilities::MPI::sum(tension_mismatch, s.communicator);
     return !Utilities::MPI::logical_or(inverted.load(), s.communicator);
+  }
+
+  bool QuasiStaticSolver::by_places(const AffineConstraints<double> &constraints) const
+  {
+    return scatter && &constraints == &fe_space->fixed_dofs;
   }
 
   void QuasiStaticSolver::assemble_point_loads(const std::vector<PointLoad>  &point_loads,
@@ -255,7 +260,7 @@ namespace softchain::fem
     // External loads first: their norm scales the convergence test.
     if (state.pressure != 0.0)
       pressure->assemble(u_ghosted, state.pressure, constraints, with_matrix ? &matrix : nullptr,
-                         rhs);
+                         rhs, by_places(constraints) ? scatter.get() : nullptr);
     if (!state.point_loads.empty())
       assemble_point_loads(state.point_loads, constraints);
     if (state.tip_traction.norm() > 0)

@@ -2,7 +2,8 @@
 // the same global matrix and vector, entry by entry and to the last bit, as
 // deal.II's AffineConstraints::distribute_local_to_global, on the demo
 // finger's Q2 and P2 meshes with their clamped base (constrained rows and
-// columns, and their diagonal rule, included), for seeded random cell data.
+// columns, and their diagonal rule, included), for seeded random cell data,
+// and for the follower pressure's cavity cells at a deformed state.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/cell_matrix_scatter.h>
@@ -71,6 +72,49 @@ TEST_CASE("cell entries added by their stored places equal deal.II's distributio
       for (types::global_dof_index i = 0; i < rhs_deal_ii.size(); ++i)
         differing += rhs_deal_ii[i] != rhs_places[i];
       CHECK(nonzero > 0);
+      CHECK(differing == 0);
+    }
+}
+
+TEST_CASE("the follower pressure added by places equals deal.II's distribution", "[fem][solver]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return; // the one-rank path
+  for (const std::string element : {"Q2", "P2"})
+    {
+      INFO(element);
+      test::SolverFixture f(test::parameters_from_text("scatter", test::bender_prm(element, 4)));
+      const auto         &space = f.solver->space();
+      f.solver->set_displacement(test::smooth_displacement(*f.solver, 2e-3, 0.05, 3));
+      TrilinosWrappers::SparseMatrix by_deal_ii, by_places;
+      by_deal_ii.reinit(f.solver->tangent());
+      by_places.reinit(f.solver->tangent());
+      TrilinosWrappers::MPI::Vector rhs_deal_ii(f.solver->negative_residual()), rhs_places(rhs_deal_ii);
+      by_deal_ii  = 0;
+      by_places   = 0;
+      rhs_deal_ii = 0;
+      rhs_places  = 0;
+      const CellMatrixScatter scatter(space.dof_handler, space.fixed_dofs, by_places);
+      const auto             &pressure = f.solver->pressure_load();
+      pressure.assemble(f.solver->displacement(), 3e3, space.fixed_dofs, &by_deal_ii, rhs_deal_ii);
+      pressure.assemble(f.solver->displacement(), 3e3, space.fixed_dofs, &by_places, rhs_places,
+                        &scatter);
+      for (auto *m : {&by_deal_ii, &by_places})
+        m->compress(VectorOperation::add);
+      for (auto *v : {&rhs_deal_ii, &rhs_places})
+        v->compress(VectorOperation::add);
+
+      unsigned int differing = 0, nonzero = 0;
+      for (types::global_dof_index i = 0; i < by_deal_ii.m(); ++i)
+        for (auto entry = by_deal_ii.begin(i); entry != by_deal_ii.end(i); ++entry)
+          {
+            nonzero += entry->value() != 0.0;
+            differing += entry->value() != by_places.el(i, entry->column());
+          }
+      for (types::global_dof_index i = 0; i < rhs_deal_ii.size(); ++i)
+        differing += rhs_deal_ii[i] != rhs_places[i];
+      CHECK(nonzero > 0);
+      CHECK(rhs_deal_ii.l2_norm() > 0);
       CHECK(differing == 0);
     }
 }

@@ -14,6 +14,7 @@
 //     K[c,a ; d,b] = p int phi_a J (n_c g_b,d - g_b,c n_d) dA0,
 // assembled node by node, only for the nodes a of the cavity face
 // (phi_a = 0 on it for the others).
+#include <softchain/fem/cell_matrix_scatter.h>
 #include <softchain/fem/finite_element_space.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -26,12 +27,16 @@ namespace softchain::fem
   public:
     explicit FollowerPressure(const FiniteElementSpace &space);
 
-    // rhs += f_ext, matrix -= d f_ext / du (if given), for pressure p.
+    // rhs += f_ext, matrix -= d f_ext / du (if given), for pressure p. With
+    // `places` (built for `constraints`), each cavity cell's sums go to
+    // their stored places in the matrix instead of through deal.II's
+    // column searches (CellMatrixScatter).
     void assemble(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
                   double                               pressure,
                   const dealii::AffineConstraints<double>     &constraints,
                   dealii::TrilinosWrappers::SparseMatrix      *matrix,
-                  dealii::TrilinosWrappers::MPI::Vector       &rhs) const;
+                  dealii::TrilinosWrappers::MPI::Vector       &rhs,
+                  const CellMatrixScatter                     *places = nullptr) const;
 
     // Total pressure force on the walls (zero for a closed cavity).
     dealii::Tensor<1, 3> resultant(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double pressure) const;

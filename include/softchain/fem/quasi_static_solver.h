@@ -161,6 +161,8 @@ namespace softchain::fem
                        const dealii::AffineConstraints<double> &constraints);
     bool assemble_cells(bool with_matrix, double gravity_factor,
                         const dealii::AffineConstraints<double> &constraints);
+    // Do cell sums under `constraints` go through `scatter`'s places?
+    bool by_places(const dealii::AffineConstraints<double> &constraints) const;
     void assemble_point_loads(const std::vector<PointLoad>         &point_loads,
                               const dealii::AffineConstraints<double> &constraints);
     // Along the straight load path from the current state to `target`.
