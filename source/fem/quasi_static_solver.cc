@@ -157,6 +157,25 @@ namespace softchain::fem
       springs->set_link_states(u_ghosted);
   }
 
+  void QuasiStaticSolver::move_to(const TrilinosWrappers::MPI::Vector &owned_u)
+  {
+    u_owned   = owned_u;
+    u_ghosted = u_owned;
+  }
+
+  std::vector<TensionOnlyLaw::State> QuasiStaticSolver::link_states() const
+  {
+    return springs ? springs->link_states() : std::vector<TensionOnlyLaw::State>();
+  }
+
+  void QuasiStaticSolver::restore(const TrilinosWrappers::MPI::Vector      &owned_u,
+                                  const std::vector<TensionOnlyLaw::State> &links)
+  {
+    move_to(owned_u);
+    if (springs)
+      springs->restore_link_states(links);
+  }
+
   bool QuasiStaticSolver::assemble_cells(const bool with_matrix, const double gravity_factor,
                                          const AffineConstraints<double> &constraints)
   {
@@ -560,9 +579,7 @@ namespace softchain::fem
     // (pressure, cavity volume) of converged states, to tell a limit point.
     std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};
     ContinuationPredictor                  predictor(u_owned);
-    std::vector<TensionOnlyLaw::State>     links_converged;
-    if (springs)
-      links_converged = springs->link_states();
+    std::vector<TensionOnlyLaw::State>     links_converged = link_states();
     while (!path.finished())
       {
         const double    s_try = path.next();
@@ -583,17 +600,14 @@ namespace softchain::fem
             path.converged(outcome.iterations);
             predictor.converged(path.reached(), u_owned);
             load = state;
-            if (springs)
-              links_converged = springs->link_states();
+            links_converged = link_states();
             ++result.load_steps;
             pv.emplace_back(state.pressure, pressure->cavity_volume(u_ghosted));
             log << "    load step " << result.load_steps << ": factor " << path.reached() << ", "
                 << outcome.iterations << " Newton iterations\n";
             continue;
           }
-        set_displacement(predictor.last());
-        if (springs)
-          springs->restore_link_states(links_converged);
+        restore(predictor.last(), links_converged);
         last_inverted   = outcome.inverted;
         const bool more = path.failed();
         log << "    load factor " << s_try << " failed ("

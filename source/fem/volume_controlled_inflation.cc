@@ -89,22 +89,24 @@ namespace softchain::fem
     const double         v_start = volume();
     AdaptiveLoadStepping path(prm.solver, prm.solver.initial_load_step);
     ContinuationPredictor predictor(owned_displacement(), p);
+    std::vector<TensionOnlyLaw::State> links_converged = solver.link_states();
     result.curve.push_back({v_start, p});
     while (!path.finished())
       {
         const unsigned int            before = result.newton_iterations;
         TrilinosWrappers::MPI::Vector u_predicted(predictor.last());
         if (prm.solver.secant_predictor && predictor.predict(path.next(), u_predicted, &p))
-          solver.set_displacement(u_predicted);
+          solver.move_to(u_predicted);
         if (newton(v_start + path.next() * (target_volume - v_start), result, path.next() >= 1.0))
           {
             path.converged(result.newton_iterations - before);
             predictor.converged(path.reached(), owned_displacement(), p);
+            links_converged = solver.link_states();
             result.curve.push_back({volume(), p});
             continue;
           }
         // Back to the last converged state (the curve's last point).
-        solver.set_displacement(predictor.last());
+        solver.restore(predictor.last(), links_converged);
         p = result.curve.back().pressure;
         if (!path.failed())
           {

@@ -76,6 +76,16 @@ namespace softchain::fem
     const FiniteElementSpace            &space() const { return *fe_space; }
     const dealii::TrilinosWrappers::MPI::Vector &displacement() const { return u_ghosted; }
     void set_displacement(const dealii::TrilinosWrappers::MPI::Vector &owned_u);
+    // u = owned_u with the springs' link states (their tensions and gaps,
+    // Newton unknowns) kept as they are: a predictor's start, from which the
+    // links take their own Newton steps as under pressure control.
+    void move_to(const dealii::TrilinosWrappers::MPI::Vector &owned_u);
+    // The springs' link states, to return to with a converged state after a
+    // step that failed (empty without springs).
+    std::vector<TensionOnlyLaw::State> link_states() const;
+    // Back to a converged state: u = owned_u and the link states it had.
+    void restore(const dealii::TrilinosWrappers::MPI::Vector &owned_u,
+                 const std::vector<TensionOnlyLaw::State>    &links);
     // The loads of the current state (rest, or the last converged load step).
     const LoadState &load_state() const { return load; }
     // Restart from a stored equilibrium: `owned_u` balances `state` (the

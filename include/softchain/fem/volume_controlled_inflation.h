@@ -10,7 +10,10 @@
 // is solved by the solver's configured linear solver, two solves of one
 // factorisation of K (K a = -R, K b = g, dp = (V_target - V - g.a) / g.b,
 // du = a + dp b); du is a Newton update of the solver's, springs' link
-// states included. The volume rises
+// states included. Each volume step starts from the extrapolated u and p
+// with the links' states of the last converged step (their own Newton steps
+// take them onward), and a failed step returns to that state, links and
+// all, as pressure control does. The volume rises
 // monotonically through a balloon limit point, where pressure control has no
 // equilibrium beyond the peak (Crisfield, Non-linear Finite Element Analysis
 // of Solids and Structures, Vol. 1, Sec. 9.5, displacement control as the
