@@ -18,6 +18,7 @@
 #include <fem_test_tools.h>
 
 #include <softchain/fem/blas_kernel.h>
+#include <softchain/fem/lone_process_mpi.h>
 #include <softchain/fem/boundary_ids.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -152,6 +153,7 @@ int main(int argc, char **argv)
 {
   // Both codes get the CPU's BLAS kernel: the variable passes to ccx.
   use_the_cpus_blas_kernel(argv);
+  use_no_network_transport_when_alone();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MultithreadInfo::set_thread_limit(1);
   const unsigned int cells    = argc > 1 ? std::atoi(argv[1]) : 16;

@@ -3,6 +3,7 @@
 #include <softchain/chain/chain_run.h>
 #include <softchain/app/commands.h>
 #include <softchain/fem/blas_kernel.h>
+#include <softchain/fem/lone_process_mpi.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/design_parameters.h>
 #include <softchain/data/prm_file.h>
@@ -123,6 +124,7 @@ namespace
 int main(int argc, char **argv)
 {
   softchain::fem::use_the_cpus_blas_kernel(argv);
+  softchain::fem::use_no_network_transport_when_alone();
   // deal.II's thread pool (the cell assembly's WorkStream) gets the cores
   // not taken by other MPI ranks on this node; Solver/Threads may lower it.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);

@@ -4,12 +4,14 @@
 #include <catch2/catch.hpp>
 
 #include <softchain/fem/blas_kernel.h>
+#include <softchain/fem/lone_process_mpi.h>
 
 #include <deal.II/base/mpi.h>
 
 int main(int argc, char **argv)
 {
   softchain::fem::use_the_cpus_blas_kernel(argv);
+  softchain::fem::use_no_network_transport_when_alone();
   // Threads as in `softchain`: the cell assembly runs in parallel here too.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
   return Catch::Session().run(argc, argv);
