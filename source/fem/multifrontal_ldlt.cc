@@ -24,7 +24,8 @@ namespace softchain::fem
   } // namespace
 
   MultifrontalLDLT::MultifrontalLDLT(const std::vector<int64_t> &row_start,
-                                     const std::vector<int64_t> &column)
+                                     const std::vector<int64_t> &column,
+                                     const Pivoting              pivoting)
   {
     for (std::size_t i = 0; i + 1 < row_start.size(); ++i)
       for (int64_t k = row_start[i]; k < row_start[i + 1]; ++k)
@@ -39,7 +40,7 @@ namespace softchain::fem
 
     mumps.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
     mumps.par          = 1; // this rank factorises
-    mumps.sym          = 2; // general symmetric: LDL^T with 2x2 pivots
+    mumps.sym          = pivoting == Pivoting::threshold ? 2 : 1;
     run(-1, "initialisation");
     mumps.icntl[0] = -1; // no messages: an indefinite K is an expected outcome
     mumps.icntl[1] = -1;

@@ -8,12 +8,14 @@
 
 #include <softchain/fem/serial_direct_solver.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 
 using namespace dealii;
 using namespace softchain;
@@ -103,6 +105,7 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
   SerialDirectSolver            direct(K);
   REQUIRE(direct.solve(K, stable, r));
   CHECK(direct.used_ldlt());
+  CHECK_FALSE(direct.used_pivoting()); // positive definite: the pivots need no search
   CHECK(direct.negative_eigenvalues() == 0);
   CHECK(relative_difference(stable, klu_solution(K, r)) < 1e-9); // as above
 
@@ -165,4 +168,55 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
     entry->value() = 0.0;
   CHECK_FALSE(direct.solve(unsymmetric, x, r));
   CHECK_FALSE(direct.used_ldlt());
+}
+
+// Two symmetric indefinite matrices that an LDL^T factorisation without
+// pivoting cannot take, whatever its ordering. The adjacency matrix of a path
+// of six nodes (eigenvalues 2 cos(k pi / 7), k = 1..6, three negative) has a
+// zero diagonal: the first pivot is zero (MUMPS reports K singular). A dense
+// random symmetric matrix with a diagonal of 1e-9 meets tiny pivots whose
+// multipliers grow its entries (the solution's backward error is far above
+// round-off). Either way the solver must notice and solve K by the pivoting
+// factorisation (1x1 and 2x2 pivots), as accurately as its conditioning allows.
+TEST_CASE("symmetric matrices whose pivots need a search are solved by the pivoting LDL^T",
+          "[fem][solver]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return;
+  const bool             path_graph = GENERATE(true, false);
+  const unsigned int     n          = path_graph ? 6 : 40;
+  DynamicSparsityPattern pattern(n, n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      if (!path_graph || (j + 1 >= i && j <= i + 1))
+        pattern.add(i, j);
+  const IndexSet                 all = complete_index_set(n);
+  TrilinosWrappers::SparseMatrix K;
+  K.reinit(all, all, pattern, MPI_COMM_WORLD);
+  std::mt19937                           random(11);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = i; j < n; ++j)
+      if (pattern.exists(i, j))
+        {
+          const double k_ij = i == j ? (path_graph ? 0.0 : 1e-9) : path_graph ? 1.0 : value(random);
+          K.set(i, j, k_ij);
+          K.set(j, i, k_ij);
+        }
+  K.compress(VectorOperation::insert);
+  TrilinosWrappers::MPI::Vector b(all, MPI_COMM_WORLD), x(b), residual(b);
+  for (unsigned int i = 0; i < n; ++i)
+    b[i] = 1.0 + i;
+  b.compress(VectorOperation::insert);
+
+  SerialDirectSolver direct(K);
+  REQUIRE(direct.solve(K, x, b));
+  CHECK(direct.used_ldlt());
+  CHECK(direct.used_pivoting());
+  if (path_graph)
+    CHECK(direct.negative_eigenvalues() == 3);
+  K.vmult(residual, x);
+  residual -= b;
+  // A backward-stable solve: |b - K x| of the order of the round-off of K x.
+  CHECK(residual.l2_norm() <= 1e-12 * (K.frobenius_norm() * x.l2_norm() + b.l2_norm()));
 }
