@@ -26,6 +26,7 @@ namespace softchain::fem
   MultifrontalLDLT::MultifrontalLDLT(const std::vector<int64_t> &row_start,
                                      const std::vector<int64_t> &column,
                                      const Pivoting              pivoting)
+    : pivoting(pivoting)
   {
     for (std::size_t i = 0; i + 1 < row_start.size(); ++i)
       for (int64_t k = row_start[i]; k < row_start[i + 1]; ++k)
@@ -89,7 +90,7 @@ namespace softchain::fem
           break;
         mumps.icntl[13] = 2 * std::max(mumps.icntl[13], 20);
       }
-    if (mumps.infog[0] == -10)
+    if (mumps.infog[0] == -10 || (pivoting == Pivoting::none && mumps.infog[0] < 0))
       return false;
     check("numeric factorisation");
     return true;

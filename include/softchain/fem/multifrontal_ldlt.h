@@ -50,7 +50,9 @@ namespace softchain::fem
     MultifrontalLDLT &operator=(const MultifrontalLDLT &) = delete;
 
     // Factorises K with these values (in the pattern's order); false if K is
-    // numerically singular (MUMPS's INFOG(1) = -10). Other MUMPS errors throw.
+    // numerically singular (MUMPS's INFOG(1) = -10) or, without pivoting, if
+    // MUMPS stops with any error (its pivots then need a search). Other MUMPS
+    // errors throw.
     bool factorise(const std::vector<double> &value);
     // x = K^-1 b with the last factorisation.
     void solve(const double *b, double *x);
@@ -61,6 +63,7 @@ namespace softchain::fem
     void run(int job, const char *what);
     void check(const char *what) const; // throws on a MUMPS error
 
+    Pivoting              pivoting;
     DMUMPS_STRUC_C        mumps;
     std::vector<int>      row, col;  // 1-based coordinates of the lower triangle
     std::vector<int64_t>  entry;     // their places in the compressed-row values
