@@ -151,8 +151,7 @@ namespace softchain::fem
 
   void QuasiStaticSolver::set_displacement(const TrilinosWrappers::MPI::Vector &owned_u)
   {
-    u_owned   = owned_u;
-    u_ghosted = u_owned;
+    move_to(owned_u);
     if (springs)
       springs->set_link_states(u_ghosted);
   }
