@@ -12,6 +12,7 @@
 // in both codes, and the ratio of the times.
 //
 // Run: calculix_speed [CELLS along the length = 16] [PRESSURE Pa = 5000] [RUNS = 3]
+//                     [ELEMENTS = Q1,Q2: SoftChain's elements of the pairs to run]
 // Both codes write their files (.prm, the ccx deck and its output) into a
 // scratch directory, $TMPDIR/softchain_calculix_speed.
 #include <calculix_deck.h>
@@ -159,6 +160,7 @@ int main(int argc, char **argv)
   const unsigned int cells    = argc > 1 ? std::atoi(argv[1]) : 16;
   const double       pressure = argc > 2 ? std::atof(argv[2]) : 5e3;
   const unsigned int runs     = argc > 3 ? std::atoi(argv[3]) : 3;
+  const std::string  elements = argc > 4 ? argv[4] : "Q1,Q2";
   if (std::system("command -v ccx > /dev/null 2>&1") != 0)
     {
       std::fprintf(stderr, "ccx not found (scripts/setup installs calculix-ccx)\n");
@@ -175,6 +177,8 @@ int main(int argc, char **argv)
     {"Q1", test::CalculixDeck::Element::C3D8}, {"Q2", test::CalculixDeck::Element::C3D20R}};
   for (const auto &[element, ccx_element] : pairs)
     {
+      if (elements.find(element) == std::string::npos)
+        continue;
       std::vector<double> ours, theirs;
       Run                 sc{}, ccx{};
       for (unsigned int r = 0; r < runs; ++r) // interleaved: both see the same machine load

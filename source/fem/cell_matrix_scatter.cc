@@ -27,6 +27,7 @@ namespace softchain::fem
                                        const AffineConstraints<double>      &constraints,
                                        const TrilinosWrappers::SparseMatrix &matrix)
     : constrained(dof_handler.n_dofs())
+    , free_cell(dof_handler.get_triangulation().n_active_cells())
     , place(dof_handler.get_triangulation().n_active_cells())
   {
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
@@ -58,6 +59,8 @@ namespace softchain::fem
       {
         cell->get_dof_indices(dofs);
         auto &cell_place = place[cell->active_cell_index()];
+        free_cell[cell->active_cell_index()] =
+          std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) { return constrained[dof]; });
         for (const auto row : dofs)
           for (const auto column : dofs)
             {
@@ -99,10 +102,11 @@ namespace softchain::fem
                               TrilinosWrappers::SparseMatrix             *matrix,
                               TrilinosWrappers::MPI::Vector              &rhs) const
   {
-    const unsigned int n = dofs.size();
-    double            *r = rhs.begin();
+    const unsigned int n    = dofs.size();
+    const bool         free = free_cell[cell_index];
+    double            *r    = rhs.begin();
     for (unsigned int i = 0; i < n; ++i)
-      if (!constrained[dofs[i]])
+      if (free || !constrained[dofs[i]])
         r[dofs[i]] += cell_rhs(i);
     if (!cell_matrix)
       return;
@@ -110,6 +114,13 @@ namespace softchain::fem
     int     n_row;
     matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
     const unsigned int *to = place[cell_index].data();
+    if (free) // no constrained DoF: the cell matrix's entries in storage order
+      {
+        const double *entry = &(*cell_matrix)(0, 0);
+        for (unsigned int k = 0; k < n * n; ++k)
+          values[to[k]] += entry[k];
+        return;
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
         const double *row = &(*cell_matrix)(i, 0);

@@ -23,7 +23,8 @@ namespace softchain::fem
     }
   } // namespace
 
-  MultifrontalLDLT::MultifrontalLDLT(const std::vector<int64_t> &row_start,
+  template <typename Real>
+  MultifrontalLDLT<Real>::MultifrontalLDLT(const std::vector<int64_t> &row_start,
                                      const std::vector<int64_t> &column,
                                      const Pivoting              pivoting)
     : pivoting(pivoting)
@@ -56,27 +57,31 @@ namespace softchain::fem
     run(1, "analysis");
   }
 
-  MultifrontalLDLT::~MultifrontalLDLT()
+  template <typename Real>
+  MultifrontalLDLT<Real>::~MultifrontalLDLT()
   {
     mumps.job = -2;
-    dmumps_c(&mumps);
+    MumpsArithmetic<Real>::call(&mumps);
   }
 
-  void MultifrontalLDLT::run(const int job, const char *what)
+  template <typename Real>
+  void MultifrontalLDLT<Real>::run(const int job, const char *what)
   {
     mumps.job = job;
-    dmumps_c(&mumps);
+    MumpsArithmetic<Real>::call(&mumps);
     check(what);
   }
 
-  void MultifrontalLDLT::check(const char *what) const
+  template <typename Real>
+  void MultifrontalLDLT<Real>::check(const char *what) const
   {
     AssertThrow(mumps.infog[0] >= 0,
                 ExcMessage(std::string("MUMPS's ") + what + " failed with INFOG(1) = " +
                            std::to_string(mumps.infog[0])));
   }
 
-  bool MultifrontalLDLT::factorise(const std::vector<double> &value)
+  template <typename Real>
+  bool MultifrontalLDLT<Real>::factorise(const std::vector<double> &value)
   {
     for (std::size_t k = 0; k < entry.size(); ++k)
       lower[k] = value[entry[k]];
@@ -85,7 +90,7 @@ namespace softchain::fem
     for (int attempt = 0; attempt < 4; ++attempt)
       {
         mumps.job = 2;
-        dmumps_c(&mumps);
+        MumpsArithmetic<Real>::call(&mumps);
         if (!workspace_too_small(mumps.infog[0]))
           break;
         mumps.icntl[13] = 2 * std::max(mumps.icntl[13], 20);
@@ -96,7 +101,8 @@ namespace softchain::fem
     return true;
   }
 
-  void MultifrontalLDLT::solve(const double *b, double *x)
+  template <typename Real>
+  void MultifrontalLDLT<Real>::solve(const double *b, double *x)
   {
     std::copy(b, b + rhs.size(), rhs.begin());
     mumps.rhs  = rhs.data();
@@ -105,4 +111,7 @@ namespace softchain::fem
     run(3, "solve");
     std::copy(rhs.begin(), rhs.end(), x);
   }
+
+  template class MultifrontalLDLT<double>;
+  template class MultifrontalLDLT<float>;
 } // namespace softchain::fem

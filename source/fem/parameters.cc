@@ -264,7 +264,9 @@ namespace softchain::fem
   {
     section.declare("Residual tolerance", "1e-6",
                     "Newton stops when |R| <= tol * |external load| ...");
-    section.declare("Displacement tolerance", "1e-6", "... and |du| <= tol * |u|.");
+    section.declare("Displacement tolerance", "1e-6",
+                    "... and the displacement's error |u* - u| <= tol * |u|, estimated by the "
+                    "last update or by the next (simplified) Newton correction.");
     section.declare("Intermediate tolerance", "1e-2",
                     "both tolerances of the load steps (under volume control, the residual's "
                     "of the volume steps) before a load path's last, whose states "

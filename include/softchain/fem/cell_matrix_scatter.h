@@ -51,6 +51,7 @@ namespace softchain::fem
     static double substitute_diagonal(const dealii::FullMatrix<double> &cell_matrix);
 
     std::vector<bool> constrained; // per DoF
+    std::vector<bool> free_cell;   // per active cell: none of its DoFs constrained
     // Per active cell, for its (i, j) in row-major order: the index of the
     // entry in the matrix's contiguous values.
     std::vector<std::vector<unsigned int>> place;

@@ -26,13 +26,36 @@
 // tree depend on the pattern alone: they are computed once, and each
 // factorise() repeats only the numeric factorisation. The number of negative
 // pivots is K's count of negative eigenvalues (Sylvester's law of inertia).
+//
+// `Real` is the precision of the factors: double, or float (MUMPS's single
+// precision arithmetic, about half the time and memory of the double
+// factorisation); K, b and x are passed in double either way, and a float
+// solve is as accurate as the factors (its user refines it: SerialDirectSolver).
 #include <dmumps_c.h>
+#include <smumps_c.h>
 
 #include <cstdint>
 #include <vector>
 
 namespace softchain::fem
 {
+  // MUMPS's interface for factors in `Real`.
+  template <typename Real>
+  struct MumpsArithmetic;
+  template <>
+  struct MumpsArithmetic<double>
+  {
+    using Instance = DMUMPS_STRUC_C;
+    static void call(Instance *instance) { dmumps_c(instance); }
+  };
+  template <>
+  struct MumpsArithmetic<float>
+  {
+    using Instance = SMUMPS_STRUC_C;
+    static void call(Instance *instance) { smumps_c(instance); }
+  };
+
+  template <typename Real>
   class MultifrontalLDLT
   {
   public:
@@ -63,11 +86,11 @@ namespace softchain::fem
     void run(int job, const char *what);
     void check(const char *what) const; // throws on a MUMPS error
 
-    Pivoting              pivoting;
-    DMUMPS_STRUC_C        mumps;
-    std::vector<int>      row, col;  // 1-based coordinates of the lower triangle
-    std::vector<int64_t>  entry;     // their places in the compressed-row values
-    std::vector<double>   lower;     // their values, as MUMPS reads them
-    std::vector<double>   rhs;
+    Pivoting                                   pivoting;
+    typename MumpsArithmetic<Real>::Instance   mumps;
+    std::vector<int>                           row, col; // 1-based coordinates of the lower triangle
+    std::vector<int64_t>                       entry;    // their places in the compressed-row values
+    std::vector<Real>                          lower;    // their values, as MUMPS reads them
+    std::vector<Real>                          rhs;
   };
 } // namespace softchain::fem

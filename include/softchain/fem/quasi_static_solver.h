@@ -114,13 +114,19 @@ namespace softchain::fem
     // residual norm the convergence tests use.
     double residual_bound() const;
     // x = K^-1 b by the configured linear solver, K the tangent of the last
-    // assemble(), x with the active constraints; `same_tangent`: K is the one
-    // of the last call (a one-rank direct solver then reuses its
-    // factorisation). False if the solver failed (a singular K, a Krylov
-    // solve that did not converge).
+    // assemble(), x with the active constraints; `same_tangent`: with the
+    // factorisation of the last call where the solver keeps one
+    // (keeps_factorisation()), even if K was assembled anew since, else with
+    // K. False if the solver failed (a singular K, a Krylov solve that did
+    // not converge).
     bool solve_tangent(const dealii::TrilinosWrappers::MPI::Vector &b,
                        dealii::TrilinosWrappers::MPI::Vector       &x,
                        bool                                         same_tangent = false);
+    // The linear solver is direct (Solver/Linear solver, direct solver max
+    // DoFs); it keeps its factorisation between calls (one rank, SoftChain's
+    // own MUMPS/UMFPACK solver rather than Trilinos' Amesos).
+    bool uses_direct_solver() const;
+    bool keeps_factorisation() const;
     // A Newton update: u += update, and the springs' link states take their
     // Newton step for it.
     void apply_update(const dealii::TrilinosWrappers::MPI::Vector &update);
@@ -189,7 +195,10 @@ namespace softchain::fem
     NewtonOutcome newton(const LoadState &state, Result &result, bool final_state = true);
     void          prepare_tip_motion(const LoadState &target);
     bool          predict_tip_motion(const LoadState &state);
-    bool          converged(double residual, double update, bool final_state) const;
+    // Newton's two tests: |R| <= tol |external load| and |u* - u| <= tol |u|,
+    // the error estimated (in newton()) by `error`.
+    bool          residual_converged(double residual, bool final_state) const;
+    bool          error_converged(double error, bool final_state) const;
     bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,

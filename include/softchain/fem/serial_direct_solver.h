@@ -13,19 +13,24 @@
 // relative on P10), and factorises a symmetric K by LDL^T, an unsymmetric
 // one by LU.
 //
-// A symmetric K is first factorised without pivoting (no pivot search, no
+// A symmetric K is first factorised without pivoting in single precision,
+// and the solution refined in double until its normwise backward error is
+// that of the double factorisation (1e-14); where the refinement
+// stalls, K is factorised without pivoting in double (no pivot search, no
 // delayed pivots: the P10 sample's linear solve 0.77x the time of the
-// pivoting factorisation), and the solution's normwise backward error is
-// checked; a K whose pivots need a search (a zero or tiny pivot in the
-// ordering's sequence, possible only where K is indefinite) is then
-// factorised with threshold pivoting. On the demo's 900 Newton solves none
-// needed it (docs/results.md, "LDL^T without pivoting first").
+// pivoting factorisation) and the backward error checked again; a K whose
+// pivots need a search (a zero or tiny pivot in the ordering's sequence,
+// possible only where K is indefinite) is then factorised with threshold
+// pivoting. Each step is taken only where the one before does not meet the
+// bound (docs/results.md, "LDL^T without pivoting first" and "Factors in
+// single precision").
 //
 // The tangent's sparsity pattern never changes during a solve, so the work
 // that depends on the pattern alone is done once (docs/results.md, "What a solve skips"):
-//   - the compressed-row copy of K and, per Trilinos entry, its place in it,
-//     so that refreshing the values is one pass without searches;
-//   - each entry's mirror K_ji, for the symmetry check;
+//   - the compressed-row copy of K (and, if Trilinos keeps a row's columns
+//     out of order, each entry's place in it), so that refreshing the values
+//     is one pass without searches;
+//   - the check that every entry has its mirror K_ji, for the symmetry test;
 //   - MUMPS's and UMFPACK's symbolic analyses (fill-reducing orderings,
 //     elimination trees and frontal matrix sizes), which their user guides
 //     allow to be reused for every matrix with the same pattern; each is made
@@ -65,16 +70,29 @@ namespace softchain::fem
     void solve_again(dealii::TrilinosWrappers::MPI::Vector       &solution,
                      const dealii::TrilinosWrappers::MPI::Vector &rhs);
 
-    // Did the last solve use the LDL^T factorisation (else LU)?
-    bool used_ldlt() const { return last_was_ldlt; }
-    // Negative eigenvalues of the last K factorised by LDL^T.
-    int negative_eigenvalues() const { return last_ldlt ? last_ldlt->negative_pivots() : 0; }
+    // Which factors solved last: LDL^T in single precision with iterative
+    // refinement, LDL^T in double without or with pivoting, or LU.
+    enum class Factors
+    {
+      single,
+      unpivoted,
+      pivoted,
+      lu
+    };
+    Factors last_factors() const { return last; }
+    // Did the last solve use an LDL^T factorisation (else LU)?
+    bool used_ldlt() const { return last != Factors::lu; }
     // Did the last LDL^T solve need the pivoting factorisation?
-    bool used_pivoting() const { return last_ldlt && last_ldlt == pivoted.get(); }
+    bool used_pivoting() const { return last == Factors::pivoted; }
+    // Negative eigenvalues of the last K factorised by LDL^T.
+    int negative_eigenvalues() const;
+    // Refinement steps of the last single-precision solve.
+    unsigned int refinement_steps_taken() const { return refinement_steps; }
 
   private:
     void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix);
-    void find_mirrors();
+    template <typename Visit>
+    bool visit_mirrors(const Visit &visit) const;
     bool symmetric() const;
     bool factorise_lu(); // false if K is singular
 
@@ -83,22 +101,32 @@ namespace softchain::fem
     std::vector<SuiteSparse_long> row_start, column;
     std::vector<double>           value;
     // Entry k of the Trilinos matrix's local storage (rows in order) sits at
-    // value[place[k]].
+    // value[place[k]]; empty where that is k (every row's columns in
+    // increasing order, as deal.II's matrices keep them).
     std::vector<SuiteSparse_long> place;
-    // value[mirror[k]] is K_ji for value[k] = K_ij; empty if the pattern is
-    // not symmetric.
-    std::vector<SuiteSparse_long> mirror;
+    // Has each entry (i, j) its mirror (j, i) in the pattern?
+    bool symmetric_pattern = false;
 
-    // x = K^-1 b by the LDL^T factorisation without pivoting, if its normwise
-    // backward error is small enough (below); false otherwise.
-    bool solve_unpivoted(const dealii::TrilinosWrappers::MPI::Vector &rhs, std::vector<double> &x);
-    // The normwise backward error |b - K x|_inf / (|K|_inf |x|_inf + |b|_inf)
-    // of x for K x = b (Rigal and Gaches, Numer. Math. 1967).
-    double backward_error(const double *b, const std::vector<double> &x) const;
+    // x = K^-1 b for a symmetric K, each false where it does not apply (below).
+    bool solve_single(const double *b, std::vector<double> &x);
+    bool refine(const double *b, std::vector<double> &x); // with the single factors
+    bool solve_double(const double *b, std::vector<double> &x);
+    bool solve_unpivoted(const double *b, std::vector<double> &x);
+    // r = b - K x; returns the normwise backward error |r|_inf / (|K|_inf
+    // |x|_inf + |b|_inf) of x (Rigal and Gaches, Numer. Math. 1967).
+    double residual(const double *b, const std::vector<double> &x, std::vector<double> &r) const;
+    // The backward error of a backward-stable double solve (solve_unpivoted())
+    // and the one the refinement of single-precision factors goes to (refine()).
+    static constexpr double       backward_error_bound   = 1e-12;
+    static constexpr double       refined_backward_error = 1e-14;
+    static constexpr unsigned int max_refinement_steps = 6;
 
-    std::unique_ptr<MultifrontalLDLT> unpivoted, pivoted; // each made when first needed
-    MultifrontalLDLT                 *last_ldlt     = nullptr;
-    bool                              last_was_ldlt = false;
+    std::unique_ptr<MultifrontalLDLT<float>>  single;           // each made when first needed
+    std::unique_ptr<MultifrontalLDLT<double>> unpivoted, pivoted;
+    Factors                                   last             = Factors::lu;
+    unsigned int                              refinement_steps = 0;
+    // False once a refinement failed (solve_single()).
+    bool single_pays = true;
 
     std::array<double, UMFPACK_CONTROL> control;
     void                               *symbolic = nullptr;
