@@ -200,21 +200,6 @@ namespace softchain::fem
       }
   }
 
-  // Iterative refinement with factors in single precision (Wilkinson's
-  // scheme in mixed precision: Langou et al., Proc. SC 2006; Buttari et al.,
-  // ACM TOMS 34, 2008): x_0 = 0, r_k = b - K x_k in double, x_{k+1} = x_k +
-  // (L D L^T)_single^-1 r_k. Each step gains about -log10(kappa(K) u_single)
-  // digits, u_single = 6e-8: on the CalculiX bender's Q2 tangents the
-  // backward error went 3e-8, 6e-11, 1e-12, 5e-14, 2e-15, 1e-16. The
-  // solution is accepted at a backward error of 1e-14, what the double
-  // factorisation reaches (at most 2.1e-14 over the demo's 900 solves). The
-  // refinement gives up when a step does not halve the backward error
-  // (kappa(K) u_single near 1, or a poor pivot of the unpivoted factors) and
-  // after six steps: a step is a pair of triangular solves and a product
-  // with K (17 ms on the CalculiX bender's Q2 tangent, 28K DoFs, against
-  // 0.14-0.18 s for its single and 0.26-0.29 s for its double factorisation),
-  // so six cost about what the single factors save. Measured: 2 to 5 steps
-  // without springs, 4 to 7 on P10 with its fabric and threads.
   // Single factors serve while they pay: a refinement that stalls or needs
   // more than its step budget (below) hands this and every later K to the
   // double factors.
@@ -231,6 +216,21 @@ namespace softchain::fem
     return single_pays;
   }
 
+  // Iterative refinement with factors in single precision (Wilkinson's
+  // scheme in mixed precision: Langou et al., Proc. SC 2006; Buttari et al.,
+  // ACM TOMS 34, 2008): x_0 = 0, r_k = b - K x_k in double, x_{k+1} = x_k +
+  // (L D L^T)_single^-1 r_k. Each step gains about -log10(kappa(K) u_single)
+  // digits, u_single = 6e-8: on the CalculiX bender's Q2 tangents the
+  // backward error went 3e-8, 6e-11, 1e-12, 5e-14, 2e-15, 1e-16. The
+  // solution is accepted at the bound of the double factors (1e-12, see
+  // solve_unpivoted()). The refinement gives up when a step does not halve
+  // the backward error (kappa(K) u_single near 1, or a poor pivot of the
+  // unpivoted factors) and after six steps: a step is a pair of triangular
+  // solves and a product with K (17 ms on the CalculiX bender's Q2 tangent,
+  // 28K DoFs, against 0.14-0.18 s for its single and 0.26-0.29 s for its
+  // double factorisation), so six cost about what the single factors save.
+  // Measured: 2 to 4 steps without springs, 3 to 6 on P10 with its fabric
+  // and threads.
   bool SerialDirectSolver::refine(const double *b, std::vector<double> &x)
   {
     std::vector<double> r(b, b + x.size()), correction(x.size());
@@ -243,7 +243,7 @@ namespace softchain::fem
           x[i] += correction[i];
         const double error = residual(b, x, r);
         refinement_steps   = step + 1;
-        if (error <= refined_backward_error)
+        if (error <= backward_error_bound)
           return true;
         if (!(error < 0.5 * previous))
           return false;
@@ -259,7 +259,12 @@ namespace softchain::fem
   // on the CalculiX bender's Q2 tangents, indefinite ones included); above
   // 1e-12 the pivoting factorisation solves instead (a dense random K with a
   // diagonal of 1e-9 gave 1e-8). A backward error below 1e-12 is far below
-  // what Newton's quadratic convergence needs of its update.
+  // what Newton's quadratic convergence needs of its update: with beta the
+  // backward error, the update's linear residual is |K du + R| <= beta (|K|
+  // |du| + |R|) <= beta (1 + cond(K)) |R|, 1e-4 |R| even for cond(K) = 1e8,
+  // and an inexact Newton step with a relative linear residual eta
+  // converges as Newton's up to a term eta |R| (Dembo, Eisenstat and
+  // Steihaug, SIAM J. Numer. Anal. 19, 1982), below the residual tolerance.
   bool SerialDirectSolver::solve_unpivoted(const double *b, std::vector<double> &x)
   {
     if (!unpivoted)

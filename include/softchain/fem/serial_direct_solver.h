@@ -15,7 +15,7 @@
 //
 // A symmetric K is first factorised without pivoting in single precision,
 // and the solution refined in double until its normwise backward error is
-// that of the double factorisation (1e-14); where the refinement
+// at most 1e-12 (what Newton needs, see solve_unpivoted()); where the refinement
 // stalls, K is factorised without pivoting in double (no pivot search, no
 // delayed pivots: the P10 sample's linear solve 0.77x the time of the
 // pivoting factorisation) and the backward error checked again; a K whose
@@ -115,10 +115,9 @@ namespace softchain::fem
     // r = b - K x; returns the normwise backward error |r|_inf / (|K|_inf
     // |x|_inf + |b|_inf) of x (Rigal and Gaches, Numer. Math. 1967).
     double residual(const double *b, const std::vector<double> &x, std::vector<double> &r) const;
-    // The backward error of a backward-stable double solve (solve_unpivoted())
-    // and the one the refinement of single-precision factors goes to (refine()).
-    static constexpr double       backward_error_bound   = 1e-12;
-    static constexpr double       refined_backward_error = 1e-14;
+    // The backward error every solve of a symmetric K meets (solve_unpivoted(),
+    // refine()).
+    static constexpr double       backward_error_bound = 1e-12;
     static constexpr unsigned int max_refinement_steps = 6;
 
     std::unique_ptr<MultifrontalLDLT<float>>  single;           // each made when first needed
