@@ -23,7 +23,7 @@
 // possible only where K is indefinite) is then factorised with threshold
 // pivoting. Each step is taken only where the one before does not meet the
 // bound (docs/results.md, "LDL^T without pivoting first" and "Factors in
-// single precision").
+// single precision, Newton's error estimate").
 //
 // The tangent's sparsity pattern never changes during a solve, so the work
 // that depends on the pattern alone is done once (docs/results.md, "What a solve skips"):
