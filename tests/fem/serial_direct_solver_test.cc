@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 using namespace dealii;
@@ -55,6 +56,40 @@ namespace
     K.vmult(r, x);
     r -= b;
     return r.linfty_norm() / (K.linfty_norm() * x.linfty_norm() + b.linfty_norm());
+  }
+  // A symmetric n x n matrix on one rank, tridiagonal or full, with K_ij =
+  // K_ji = entry(i, j) for i <= j (called in increasing i, then j).
+  TrilinosWrappers::SparseMatrix symmetric_matrix(const unsigned int n, const bool tridiagonal,
+                                                  const std::function<double(unsigned int, unsigned int)> &entry)
+  {
+    DynamicSparsityPattern pattern(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (!tridiagonal || (j + 1 >= i && j <= i + 1))
+          pattern.add(i, j);
+    const IndexSet                 all = complete_index_set(n);
+    TrilinosWrappers::SparseMatrix K;
+    K.reinit(all, all, pattern, MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i; j < n; ++j)
+        if (pattern.exists(i, j))
+          {
+            const double k_ij = entry(i, j);
+            K.set(i, j, k_ij);
+            K.set(j, i, k_ij);
+          }
+    K.compress(VectorOperation::insert);
+    return K;
+  }
+
+  // b_i = 1 + i.
+  TrilinosWrappers::MPI::Vector ramp(const unsigned int n)
+  {
+    TrilinosWrappers::MPI::Vector b(complete_index_set(n), MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < n; ++i)
+      b[i] = 1.0 + i;
+    b.compress(VectorOperation::insert);
+    return b;
   }
 } // namespace
 
@@ -200,31 +235,15 @@ TEST_CASE("symmetric matrices whose pivots need a search are solved by the pivot
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     return;
-  const bool             path_graph = GENERATE(true, false);
-  const unsigned int     n          = path_graph ? 6 : 40;
-  DynamicSparsityPattern pattern(n, n);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = 0; j < n; ++j)
-      if (!path_graph || (j + 1 >= i && j <= i + 1))
-        pattern.add(i, j);
-  const IndexSet                 all = complete_index_set(n);
-  TrilinosWrappers::SparseMatrix K;
-  K.reinit(all, all, pattern, MPI_COMM_WORLD);
+  const bool                             path_graph = GENERATE(true, false);
+  const unsigned int                     n          = path_graph ? 6 : 40;
   std::mt19937                           random(11);
   std::uniform_real_distribution<double> value(-1.0, 1.0);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = i; j < n; ++j)
-      if (pattern.exists(i, j))
-        {
-          const double k_ij = i == j ? (path_graph ? 0.0 : 1e-9) : path_graph ? 1.0 : value(random);
-          K.set(i, j, k_ij);
-          K.set(j, i, k_ij);
-        }
-  K.compress(VectorOperation::insert);
-  TrilinosWrappers::MPI::Vector b(all, MPI_COMM_WORLD), x(b), residual(b);
-  for (unsigned int i = 0; i < n; ++i)
-    b[i] = 1.0 + i;
-  b.compress(VectorOperation::insert);
+  TrilinosWrappers::SparseMatrix K = symmetric_matrix(n, path_graph, [&](unsigned int i, unsigned int j) {
+    return i == j ? (path_graph ? 0.0 : 1e-9) : path_graph ? 1.0 : value(random);
+  });
+  const TrilinosWrappers::MPI::Vector b = ramp(n);
+  TrilinosWrappers::MPI::Vector       x(b), residual(b);
 
   SerialDirectSolver direct(K);
   REQUIRE(direct.solve(K, x, b));
@@ -249,25 +268,12 @@ TEST_CASE("single-precision factors are refined where they converge, else double
 {
   if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     return;
-  const bool             hilbert = GENERATE(false, true);
-  const unsigned int     n       = hilbert ? 8 : 40;
-  DynamicSparsityPattern pattern(n, n);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = 0; j < n; ++j)
-      if (hilbert || (j + 1 >= i && j <= i + 1))
-        pattern.add(i, j);
-  const IndexSet                 all = complete_index_set(n);
-  TrilinosWrappers::SparseMatrix K;
-  K.reinit(all, all, pattern, MPI_COMM_WORLD);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = 0; j < n; ++j)
-      if (pattern.exists(i, j))
-        K.set(i, j, hilbert ? 1.0 / (i + j + 1) : (i == j ? 2.0 : -1.0));
-  K.compress(VectorOperation::insert);
-  TrilinosWrappers::MPI::Vector b(all, MPI_COMM_WORLD), x(b);
-  for (unsigned int i = 0; i < n; ++i)
-    b[i] = 1.0 + i;
-  b.compress(VectorOperation::insert);
+  const bool                           hilbert = GENERATE(false, true);
+  const TrilinosWrappers::SparseMatrix K = symmetric_matrix(hilbert ? 8 : 40, !hilbert, [&](unsigned int i, unsigned int j) {
+    return hilbert ? 1.0 / (i + j + 1) : (i == j ? 2.0 : -1.0);
+  });
+  const TrilinosWrappers::MPI::Vector b = ramp(K.m());
+  TrilinosWrappers::MPI::Vector       x(b);
 
   SerialDirectSolver direct(K);
   REQUIRE(direct.solve(K, x, b));
