@@ -25,8 +25,8 @@ namespace softchain::fem
 
   template <typename Real>
   MultifrontalLDLT<Real>::MultifrontalLDLT(const std::vector<int64_t> &row_start,
-                                     const std::vector<int64_t> &column,
-                                     const Pivoting              pivoting)
+                                           const std::vector<int64_t> &column,
+                                           const Pivoting              pivoting)
     : pivoting(pivoting)
   {
     for (std::size_t i = 0; i + 1 < row_start.size(); ++i)

@@ -17,7 +17,6 @@ namespace softchain::fem
 
   namespace
   {
-
     void check(SuiteSparse_long status, const std::string &step)
     {
       AssertThrow(status == UMFPACK_OK,
@@ -151,7 +150,6 @@ namespace softchain::fem
                                  const TrilinosWrappers::MPI::Vector  &rhs)
   {
     copy_values(matrix);
-    std::vector<double> x(rhs.locally_owned_size());
     if (!symmetric())
       {
         last = Factors::lu;
@@ -160,6 +158,7 @@ namespace softchain::fem
         solve_again(solution, rhs);
         return true;
       }
+    std::vector<double> x(rhs.locally_owned_size());
     if (!solve_single(rhs.begin(), x) && !solve_double(rhs.begin(), x))
       return false;
     std::copy(x.begin(), x.end(), solution.begin());
