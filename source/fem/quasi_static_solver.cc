@@ -319,8 +319,12 @@ namespace softchain::fem
     x = 0;
     if (keeps_factorisation())
       {
+        // The linear residual Newton's steps may leave: at most a hundredth
+        // of the residual tolerance relative to |R|, so that near the
+        // solution (|R| <= |f|) it is a hundredth of what the final test
+        // allows (SerialDirectSolver::refine()).
         if (!serial_direct)
-          serial_direct = std::make_unique<SerialDirectSolver>(matrix);
+          serial_direct = std::make_unique<SerialDirectSolver>(matrix, prm.solver.residual_tolerance / 100);
         if (same_tangent)
           serial_direct->solve_again(x, b);
         // A singular tangent fails the Newton iteration, as a GMRES that does

@@ -560,9 +560,12 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
   CHECK(c.mesh().cavity_triangles == a.mesh().cavity_triangles);
   CHECK(c.mesh().tip_nodes == a.mesh().tip_nodes);
   REQUIRE(c.sample_ids() == a.sample_ids());
-  // The partitioned solve sums in another order: rounding differences only
-  // (measured 1.6e-17 m, ~10 ulp of 0.08 m, without the volume chain; 6.6e-16 m
-  // with it, whose pressure is itself an unknown); 1e-12 m is 1e-9 of the
-  // ~1 mm displacements, far below any numbering or gathering error (>= 1 mm).
-  CHECK(position_difference(a, c) < 1e-12);
+  // The partitioned solve sums in another order, and one rank accepts
+  // Newton steps refined to a relative linear residual of a hundredth of
+  // the residual tolerance (SerialDirectSolver) where two ranks factorise in
+  // double: the answers differ within Newton's tolerances (measured 1.1e-12
+  // m; 6.6e-16 m, rounding, when both solved exactly). 1e-9 m is the
+  // displacement tolerance (1e-6) of the ~1 mm displacements, far below
+  // any numbering or gathering error (>= 1 mm).
+  CHECK(position_difference(a, c) < 1e-9);
 }

@@ -15,7 +15,9 @@
 //
 // A symmetric K is first factorised without pivoting in single precision,
 // and the solution refined in double until its normwise backward error is
-// at most 1e-12 (what Newton needs, see solve_unpivoted()); where the refinement
+// at most 1e-12 (what Newton needs, see solve_unpivoted()) or its relative
+// residual |b - K x| / |b| meets the caller's `relative_residual` (an
+// inexact Newton step's forcing term, see refine()); where the refinement
 // stalls, K is factorised without pivoting in double (no pivot search, no
 // delayed pivots: the P10 sample's linear solve 0.77x the time of the
 // pivoting factorisation) and the backward error checked again; a K whose
@@ -53,8 +55,12 @@ namespace softchain::fem
   class SerialDirectSolver
   {
   public:
-    // `matrix` must live on one rank; its sparsity pattern is copied.
-    explicit SerialDirectSolver(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+    // `matrix` must live on one rank; its sparsity pattern is copied. A
+    // solution refined from single factors is accepted once its relative
+    // residual is at most `relative_residual` (0: only at the backward
+    // error bound).
+    explicit SerialDirectSolver(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                                double relative_residual = 0.0);
     ~SerialDirectSolver();
     SerialDirectSolver(const SerialDirectSolver &)            = delete;
     SerialDirectSolver &operator=(const SerialDirectSolver &) = delete;
@@ -119,6 +125,7 @@ namespace softchain::fem
     // refine()).
     static constexpr double       backward_error_bound = 1e-12;
     static constexpr unsigned int max_refinement_steps = 6;
+    const double                  relative_residual;
 
     std::unique_ptr<MultifrontalLDLT<float>>  single;           // each made when first needed
     std::unique_ptr<MultifrontalLDLT<double>> unpivoted, pivoted;
