@@ -189,7 +189,7 @@ int main(int argc, char **argv)
           theirs.push_back(ccx.seconds);
         }
       const std::string pair = element + (element == "Q1" ? " / C3D8" : " / C3D20R");
-      std::printf("%-16s %7u %9.2fs %9.2fs %8u %8u %14.6e %14.6e %9.2f\n", pair.c_str(), sc.dofs,
+      std::printf("%-16s %7u %9.3gs %9.3gs %8u %8u %14.6e %14.6e %9.2f\n", pair.c_str(), sc.dofs,
                   median(ours), median(theirs), sc.newton_iterations, ccx.newton_iterations,
                   sc.corner_u, ccx.corner_u, median(theirs) / median(ours));
     }
