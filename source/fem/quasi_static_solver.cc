@@ -2,7 +2,6 @@
 #include <softchain/data/input_error.h>
 #include <softchain/fem/adaptive_load_stepping.h>
 #include <softchain/fem/continuation_predictor.h>
-#include <softchain/fem/energy_line_search.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/cell_conforming_polylines.h>
 #include <softchain/fem/hyperelastic_cell.h>
@@ -24,7 +23,6 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
-#include <limits>
 
 namespace softchain::fem
 {
@@ -381,22 +379,9 @@ namespace softchain::fem
         springs->prepare_link_updates(u_ghosted, du_ghosted);
       }
     u_owned += update;
-    u_ghosted     = u_owned;
-    step_fraction = 1.0;
-    if (springs)
-      springs->move_link_states(1.0);
-  }
-
-  // Shortens (or restores) the last update: u = u_old + f du, du *= f,
-  // the springs' link states moved to the same fraction of their step.
-  void QuasiStaticSolver::scale_step(const double f)
-  {
-    u_owned.add(f - 1.0, du);
-    du *= f;
-    step_fraction *= f;
     u_ghosted = u_owned;
     if (springs)
-      springs->move_link_states(step_fraction);
+      springs->move_link_states(1.0);
   }
 
   double QuasiStaticSolver::residual_bound() const
@@ -419,47 +404,40 @@ namespace softchain::fem
                       std::max(u_owned.l2_norm(), 1e-300);
   }
 
-  // Line search on the energy along the Newton direction du: the full step
-  // is kept when |s(1)| <= 0.8 |s0| for the energy's slope s(a) = du .
-  // R(u_old + a du) (the residual norm itself may grow in a good step of a
-  // nearly incompressible solid); otherwise the step goes near the zero of
-  // s (EnergyLineSearch, each trial a residual without the matrix), but at
-  // most to `max_step`: newton() lets the step at most double from one
-  // iteration to the next, as trust regions grow. Uncapped, the CalculiX
-  // bender (Q2, 10 kPa from rest) went from a step of 0.19 to one of 0.56,
-  // where the next Newton update inverted elements twice and the load step
-  // failed (27 Newton iterations in 5 load steps against 8 in one). A step
-  // that inverts an element (`valid` false) is halved. The springs' link
-  // states move along. On entry u = u_old + du and rhs = -R(u); on return
-  // u = u_old + du with du the step taken, the matrix assembled there;
-  // false if no admissible step was found.
-  bool QuasiStaticSolver::line_search(const LoadState &state, const double s0, const bool valid,
-                                      const double max_step)
+  // Line search on the energy along the Newton direction (Crisfield, Non-
+  // linear Finite Element Analysis of Solids and Structures, Sec. 9.3): with
+  // s(a) = du . R(u_old + a du), s(0) = -du.K du < 0. The full step is kept
+  // when |s(1)| <= 0.8 |s(0)| (the residual norm itself may grow in a good
+  // step of a nearly incompressible solid); otherwise the step goes to the
+  // zero of the secant of s, kept in [0.1, 1]. A step that inverts an element
+  // (`valid` false) is halved, the springs' link states moved along. On entry
+  // u = u_old + du and rhs = -R(u); returns false if no admissible step was
+  // found.
+  bool QuasiStaticSolver::line_search(const LoadState &state, const double s0, const bool valid)
   {
-    double step = 0.5;
+    double step = 1.0, total = 1.0; // this cut, and all so far (u - u_old = total du_Newton)
     if (valid)
       {
         const double s1 = -(du * rhs);
         if (std::abs(s1) <= 0.8 * std::abs(s0))
           return true;
-        const auto slope = [&](const double a) {
-          scale_step(a);
-          const double s = assemble(state, false) ? -(du * rhs) / a : std::numeric_limits<double>::infinity();
-          scale_step(1.0 / a);
-          return s;
-        };
-        const auto search = EnergyLineSearch::minimise(s0, s1, slope);
-        if (search.evaluations == 0) // s(1) < 0: the full step, assembled already
-          return true;
-        step = std::min(search.fraction, max_step);
+        step = std::clamp(s0 / (s0 - s1), 0.1, 1.0);
       }
-    for (unsigned int k = 0; k < 6; ++k, step = 0.5)
+    else
+      step = 0.5;
+    for (unsigned int k = 0; k < 6; ++k)
       {
-        scale_step(step);
+        u_owned.add(step - 1.0, du); // from u_old + du to u_old + step du
+        du *= step;
+        total *= step;
+        u_ghosted = u_owned;
+        if (springs)
+          springs->move_link_states(total);
         if (prm.output.verbose)
           log << "      line search: step " << step << '\n';
         if (assemble(state, true))
           return true;
+        step = 0.5;
       }
     return false;
   }
@@ -539,7 +517,6 @@ namespace softchain::fem
                                                              const bool       final_state)
   {
     double       s0              = 0.0; // du . R before the step
-    double       last_fraction   = 0.5; // of its Newton step the last line search took
     unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
     for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
       {
@@ -552,16 +529,13 @@ namespace softchain::fem
         if (it > 0 && !valid && ++inverting_steps == 2)
           return {false, true, it};
         // With springs the energy criterion is left out: their tensions are
-        // Newton unknowns whose own step the energy along du ignores (the
-        // demo's first run: 1074 against 883 Newton iterations, and two
-        // lateral samples failed); without springs it pays (the CalculiX
-        // bender, Q2 at 3 kPa in one step: 7 against 14). docs/results.md,
-        // "A line search for stiffening walls".
+        // Newton unknowns whose own step the energy along du ignores, and it
+        // cut good steps to a tenth (the demo's sweep: 1917 against 1519
+        // Newton iterations); without springs it pays (the CalculiX bender,
+        // Q2 at 3 kPa in one step: 10 against 16). docs/results.md, "Link
+        // tensions as Newton unknowns".
         if (it > 0 && prm.solver.line_search && (!valid || !springs))
-          {
-            valid         = line_search(state, s0, valid, 2 * last_fraction);
-            last_fraction = step_fraction;
-          }
+          valid = line_search(state, s0, valid);
         if (!valid)
           return {false, true, it};
         const double residual = residual_bound();

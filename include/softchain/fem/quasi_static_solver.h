@@ -163,7 +163,6 @@ namespace softchain::fem
     dealii::TrilinosWrappers::MPI::Vector  u_ghosted; // same, with ghost values
     dealii::TrilinosWrappers::MPI::Vector  du;
     dealii::TrilinosWrappers::MPI::Vector  du_ghosted; // for the links' updates
-    double step_fraction = 1.0; // of the Newton step the last update took (line search)
     dealii::IndexSet                       writable_dofs;
     LoadState                      load; // at u
     double                         f_ext_norm = 0.0;
@@ -200,8 +199,7 @@ namespace softchain::fem
     // the error estimated (in newton()) by `error`.
     bool          residual_converged(double residual, bool final_state) const;
     bool          error_converged(double error, bool final_state) const;
-    bool          line_search(const LoadState &state, double s0, bool valid, double max_step);
-    void          scale_step(double f);
+    bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,
                                    bool inverted, Result &result) const;
