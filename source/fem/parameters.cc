@@ -263,7 +263,8 @@ namespace softchain::fem
   void SolverParameters::declare(data::PrmSection &section)
   {
     section.declare("Residual tolerance", "1e-6",
-                    "Newton stops when |R| <= tol * |external load| ...");
+                    "Newton stops when |R| <= tol * |external load| ... (single-precision "
+                    "factors refine each Newton step to a linear residual of tol/100 * |R|)");
     section.declare("Displacement tolerance", "1e-6",
                     "... and the displacement's error |u* - u| <= tol * |u|, estimated by the "
                     "last update or by the next (simplified) Newton correction.");
