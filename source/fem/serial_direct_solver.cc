@@ -229,7 +229,7 @@ namespace softchain::fem
   // digits, u_single = 6e-8: on the CalculiX bender's Q2 tangents the
   // backward error went 3e-8, 6e-11, 1e-12, 5e-14, 2e-15, 1e-16. The
   // solution is accepted at the bound of the double factors (1e-12, see
-  // solve_unpivoted()). The refinement gives up when a step does not halve
+  // solve_unpivoted()) or at the caller's relative residual (below). The refinement gives up when a step does not halve
   // the backward error (kappa(K) u_single near 1, or a poor pivot of the
   // unpivoted factors) and after six steps: a step is a pair of triangular
   // solves and a product with K (17 ms on the CalculiX bender's Q2 tangent,
@@ -237,6 +237,7 @@ namespace softchain::fem
   // double factorisation), so six cost about what the single factors save.
   // Measured: 2 to 4 steps without springs, 3 to 6 on P10 with its fabric
   // and threads.
+  //
   // A Newton step needs less: with a relative linear residual eta, |K du +
   // R| <= eta |R|, it converges as Newton's up to a term eta |R| (Dembo,
   // Eisenstat and Steihaug, SIAM J. Numer. Anal. 19, 1982), so the caller
