@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 namespace softchain::fem
@@ -102,37 +103,61 @@ namespace softchain::fem
                               TrilinosWrappers::SparseMatrix             *matrix,
                               TrilinosWrappers::MPI::Vector              &rhs) const
   {
-    const unsigned int n    = dofs.size();
-    const bool         free = free_cell[cell_index];
-    double            *r    = rhs.begin();
+    const unsigned int n = dofs.size();
+    if (!free_cell[cell_index])
+      {
+        std::vector<unsigned int> all(n);
+        std::iota(all.begin(), all.end(), 0u);
+        add(cell_index, dofs, all, cell_matrix, cell_rhs, matrix, rhs);
+        return;
+      }
+    // No constrained DoF: the cell's entries in storage order.
+    double *r = rhs.begin();
     for (unsigned int i = 0; i < n; ++i)
-      if (free || !constrained[dofs[i]])
-        r[dofs[i]] += cell_rhs(i);
+      r[dofs[i]] += cell_rhs(i);
     if (!cell_matrix)
       return;
     double *values;
     int     n_row;
     matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
+    const unsigned int *to    = place[cell_index].data();
+    const double       *entry = &(*cell_matrix)(0, 0);
+    for (unsigned int k = 0; k < n * n; ++k)
+      values[to[k]] += entry[k];
+  }
+
+  void CellMatrixScatter::add(const unsigned int                          cell_index,
+                              const std::vector<types::global_dof_index> &dofs,
+                              const std::vector<unsigned int>            &local,
+                              const FullMatrix<double>                   *block,
+                              const Vector<double>                       &block_rhs,
+                              TrilinosWrappers::SparseMatrix             *matrix,
+                              TrilinosWrappers::MPI::Vector              &rhs) const
+  {
+    const unsigned int n = dofs.size(), m = local.size();
+    double            *r = rhs.begin();
+    for (unsigned int i = 0; i < m; ++i)
+      if (!constrained[dofs[local[i]]])
+        r[dofs[local[i]]] += block_rhs(i);
+    if (!block)
+      return;
+    double *values;
+    int     n_row;
+    matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
     const unsigned int *to = place[cell_index].data();
-    if (free) // no constrained DoF: the cell matrix's entries in storage order
+    for (unsigned int i = 0; i < m; ++i)
       {
-        const double *entry = &(*cell_matrix)(0, 0);
-        for (unsigned int k = 0; k < n * n; ++k)
-          values[to[k]] += entry[k];
-        return;
-      }
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const double *row = &(*cell_matrix)(i, 0);
-        if (constrained[dofs[i]])
+        const double      *row     = &(*block)(i, 0);
+        const unsigned int cell_row = local[i] * n;
+        if (constrained[dofs[local[i]]])
           {
             const double diagonal = std::abs(row[i]);
-            values[to[i * n + i]] += diagonal != 0.0 ? diagonal : substitute_diagonal(*cell_matrix);
+            values[to[cell_row + local[i]]] += diagonal != 0.0 ? diagonal : substitute_diagonal(*block);
             continue;
           }
-        for (unsigned int j = 0; j < n; ++j)
-          if (!constrained[dofs[j]])
-            values[to[i * n + j]] += row[j];
+        for (unsigned int j = 0; j < m; ++j)
+          if (!constrained[dofs[local[j]]])
+            values[to[cell_row + local[j]]] += row[j];
       }
   }
 } // namespace softchain::fem

@@ -3,7 +3,8 @@
 // deal.II's AffineConstraints::distribute_local_to_global, on the demo
 // finger's Q2 and P2 meshes with their clamped base (constrained rows and
 // columns, and their diagonal rule, included), for seeded random cell data,
-// and for the follower pressure's cavity cells at a deformed state.
+// and for the follower pressure's cavity faces (blocks of their cells' DoFs)
+// at a deformed state.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/cell_matrix_scatter.h>

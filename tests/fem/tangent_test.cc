@@ -99,6 +99,58 @@ TEST_CASE("follower pressure tangent matches finite differences", "[fem][tangent
   CHECK(tangent_error(f, load) < 1e-6);
 }
 
+// The follower pressure alone, on each element shape: its load is exactly
+// quadratic in u (the area vector F T1 x F T2 with F T1, F T2 linear in u),
+// so the central difference has no truncation error and the two sides agree
+// to round-off, whatever the step. With h |v| = 1e-4 m the round-off is
+// ~1e-16 |f| / h ~ 1e-13 of |K v| (measured: 5e-15 to 2.4e-14 of |K v|); 1e-9 leaves a
+// wide margin and still fails for any wrong term of the load stiffness,
+// which the full tangent's check above sees only relative to the (larger)
+// material part.
+TEST_CASE("the follower pressure's own tangent matches finite differences", "[fem][tangent]")
+{
+  for (const std::string element : {"Q1", "Q2", "P2"})
+    {
+      INFO(element);
+      test::SolverFixture f(test::parameters_from_text("tangent_pressure_alone",
+                                                       test::bender_prm(element, 4, options("log", false))));
+      QuasiStaticSolver &solver = *f.solver;
+      const auto         u      = test::smooth_displacement(solver, 2e-3, 0.05, 1);
+      const auto         v      = test::smooth_displacement(solver, 1.0, 1.0, 2);
+      const auto        &space  = solver.space();
+      const double       p = 5e4, h = 1e-4;
+
+      TrilinosWrappers::SparseMatrix K;
+      K.reinit(solver.tangent());
+      TrilinosWrappers::MPI::Vector f_ext(solver.negative_residual()), fd(f_ext), Kv(v);
+      auto load_at = [&](const TrilinosWrappers::MPI::Vector &state, TrilinosWrappers::SparseMatrix *matrix) {
+        solver.set_displacement(state);
+        f_ext = 0;
+        if (matrix)
+          *matrix = 0;
+        solver.pressure_load().assemble(solver.displacement(), p, space.fixed_dofs, matrix, f_ext);
+        f_ext.compress(VectorOperation::add);
+        if (matrix)
+          matrix->compress(VectorOperation::add);
+        return f_ext;
+      };
+      load_at(u, &K);
+      K.vmult(Kv, v); // K = -d f_ext / du
+      TrilinosWrappers::MPI::Vector plus(u), minus(u);
+      plus.add(h, v);
+      minus.add(-h, v);
+      fd = load_at(plus, nullptr);
+      fd -= load_at(minus, nullptr);
+      fd *= 1.0 / (2 * h);
+      space.fixed_dofs.set_zero(fd);
+      space.fixed_dofs.set_zero(Kv);
+      fd += Kv;
+      INFO("|K v| = " << Kv.l2_norm() << ", |K v + d f_ext/du v| = " << fd.l2_norm());
+      CHECK(Kv.l2_norm() > 0);
+      CHECK(fd.l2_norm() <= 1e-9 * Kv.l2_norm());
+    }
+}
+
 TEST_CASE("embedded spring tangent matches finite differences", "[fem][tangent]")
 {
   test::SolverFixture f(test::parameters_from_text("tangent_springs",

@@ -46,6 +46,15 @@ namespace softchain::fem
              const dealii::Vector<double>                      &cell_rhs,
              dealii::TrilinosWrappers::SparseMatrix            *matrix,
              dealii::TrilinosWrappers::MPI::Vector             &rhs) const;
+    // The same for a block of the cell matrix: its rows and columns are the
+    // cell's DoFs local[0], local[1], ... (e.g. a face's).
+    void add(unsigned int                                      cell_index,
+             const std::vector<dealii::types::global_dof_index> &dofs,
+             const std::vector<unsigned int>                   &local,
+             const dealii::FullMatrix<double>                  *block,
+             const dealii::Vector<double>                      &block_rhs,
+             dealii::TrilinosWrappers::SparseMatrix            *matrix,
+             dealii::TrilinosWrappers::MPI::Vector             &rhs) const;
 
   private:
     static double substitute_diagonal(const dealii::FullMatrix<double> &cell_matrix);
