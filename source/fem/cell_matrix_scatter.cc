@@ -24,60 +24,77 @@ namespace softchain::fem
     return true;
   }
 
+  // The places in two passes without searches: every cell's DoFs and, per
+  // DoF, the cell rows it heads; then, row by row, each column's position
+  // in the row's storage is written to a table indexed by column (stamped
+  // with the row, so that an entry missing from the pattern is found), and
+  // every cell row of that DoF reads its entries' places from it.
   CellMatrixScatter::CellMatrixScatter(const DoFHandler<3>                  &dof_handler,
                                        const AffineConstraints<double>      &constraints,
                                        const TrilinosWrappers::SparseMatrix &matrix)
     : constrained(dof_handler.n_dofs())
     , free_cell(dof_handler.get_triangulation().n_active_cells())
-    , place(dof_handler.get_triangulation().n_active_cells())
+    , dofs_per_cell(dof_handler.get_fe().n_dofs_per_cell())
   {
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
-    AssertThrow(epetra.StorageOptimized() && epetra.NumMyRows() == static_cast<int>(dof_handler.n_dofs()),
+    const auto              n_dofs = dof_handler.n_dofs();
+    AssertThrow(epetra.StorageOptimized() && epetra.NumMyRows() == static_cast<int>(n_dofs),
                 ExcMessage("CellMatrixScatter needs the whole matrix on one rank, in contiguous storage"));
-    for (types::global_dof_index i = 0; i < constrained.size(); ++i)
+    for (types::global_dof_index i = 0; i < n_dofs; ++i)
       constrained[i] = constraints.is_constrained(i);
-    // Each row's (global column, position) pairs, sorted by column.
-    std::vector<std::vector<std::pair<types::global_dof_index, unsigned int>>> columns(epetra.NumMyRows());
-    std::vector<unsigned int> row_start(epetra.NumMyRows()); // in the contiguous values
-    double                   *first_value;
-    int     n;
-    epetra.ExtractMyRowView(0, n, first_value);
+
+    const unsigned int n = dofs_per_cell, n_cells = free_cell.size();
+    std::vector<types::global_dof_index> cell_dofs(std::size_t(n_cells) * n), dofs(n);
+    std::vector<unsigned int>            rows_start(n_dofs + 1, 0); // cell rows per DoF
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(), dofs.end(), cell_dofs.begin() + std::size_t(cell->active_cell_index()) * n);
+        free_cell[cell->active_cell_index()] =
+          std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) { return constrained[dof]; });
+        for (const auto dof : dofs)
+          ++rows_start[dof + 1];
+      }
+    std::partial_sum(rows_start.begin(), rows_start.end(), rows_start.begin());
+    std::vector<unsigned int> cell_rows(rows_start.back()), next(rows_start.begin(), rows_start.end() - 1);
+    for (std::size_t k = 0; k < cell_dofs.size(); ++k)
+      cell_rows[next[cell_dofs[k]]++] = k; // cell k / n, local row k % n
+
+    std::vector<types::global_dof_index> global_column(epetra.ColMap().NumMyElements());
+    for (std::size_t c = 0; c < global_column.size(); ++c)
+      global_column[c] = epetra.GCID64(c);
+    std::vector<unsigned int>            position(n_dofs);
+    std::vector<types::global_dof_index> stamp(n_dofs, numbers::invalid_dof_index);
+    place.assign(std::size_t(n_cells) * n * n, 0); // a dropped entry keeps 0: never written
+    double *first_value;
+    int     length;
+    epetra.ExtractMyRowView(0, length, first_value);
     for (int row = 0; row < epetra.NumMyRows(); ++row)
       {
         double *values;
         int    *local_columns;
-        epetra.ExtractMyRowView(row, n, values);
-        epetra.Graph().ExtractMyRowView(row, n, local_columns);
-        const auto global_row  = epetra.GRID64(row);
-        row_start[global_row]  = values - first_value;
-        auto &row_columns      = columns[global_row];
-        for (int k = 0; k < n; ++k)
-          row_columns.emplace_back(epetra.GCID64(local_columns[k]), k);
-        std::sort(row_columns.begin(), row_columns.end());
-      }
-    std::vector<types::global_dof_index> dofs(dof_handler.get_fe().n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        auto &cell_place = place[cell->active_cell_index()];
-        free_cell[cell->active_cell_index()] =
-          std::none_of(dofs.begin(), dofs.end(), [&](const auto dof) { return constrained[dof]; });
-        for (const auto row : dofs)
-          for (const auto column : dofs)
-            {
-              // The pattern holds a constrained DoF's diagonal only.
-              if ((constrained[row] || constrained[column]) && row != column)
-                {
-                  cell_place.push_back(0); // never written
+        epetra.ExtractMyRowView(row, length, values);
+        epetra.Graph().ExtractMyRowView(row, length, local_columns);
+        const types::global_dof_index global_row = epetra.GRID64(row);
+        for (int k = 0; k < length; ++k)
+          {
+            position[global_column[local_columns[k]]] = (values - first_value) + k;
+            stamp[global_column[local_columns[k]]]    = global_row;
+          }
+        for (unsigned int r = rows_start[global_row]; r < rows_start[global_row + 1]; ++r)
+          {
+            const std::size_t cell = cell_rows[r] / n, i = cell_rows[r] % n;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const auto column = cell_dofs[cell * n + j];
+                // The pattern holds a constrained DoF's diagonal only.
+                if ((constrained[global_row] || constrained[column]) && global_row != column)
                   continue;
-                }
-              const auto &row_columns = columns[row];
-              const auto  at          = std::lower_bound(row_columns.begin(), row_columns.end(),
-                                                         std::make_pair(column, 0u));
-              AssertThrow(at != row_columns.end() && at->first == column,
-                          ExcMessage("a cell coupling is missing from the tangent's pattern"));
-              cell_place.push_back(row_start[row] + at->second);
-            }
+                AssertThrow(stamp[column] == global_row,
+                            ExcMessage("a cell coupling is missing from the tangent's pattern"));
+                place[(cell * n + i) * n + j] = position[column];
+              }
+          }
       }
   }
 
@@ -120,7 +137,7 @@ namespace softchain::fem
     double *values;
     int     n_row;
     matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
-    const unsigned int *to    = place[cell_index].data();
+    const unsigned int *to    = &place[std::size_t(cell_index) * dofs_per_cell * dofs_per_cell];
     const double       *entry = &(*cell_matrix)(0, 0);
     for (unsigned int k = 0; k < n * n; ++k)
       values[to[k]] += entry[k];
@@ -144,7 +161,7 @@ namespace softchain::fem
     double *values;
     int     n_row;
     matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
-    const unsigned int *to = place[cell_index].data();
+    const unsigned int *to = &place[std::size_t(cell_index) * dofs_per_cell * dofs_per_cell];
     for (unsigned int i = 0; i < m; ++i)
       {
         const double      *row     = &(*block)(i, 0);

@@ -32,7 +32,7 @@
 //   - the compressed-row copy of K (and, if Trilinos keeps a row's columns
 //     out of order, each entry's place in it), so that refreshing the values
 //     is one pass without searches;
-//   - the check that every entry has its mirror K_ji, for the symmetry test;
+//   - each entry's mirror K_ji, for the symmetry test;
 //   - MUMPS's and UMFPACK's symbolic analyses (fill-reducing orderings,
 //     elimination trees and frontal matrix sizes), which their user guides
 //     allow to be reused for every matrix with the same pattern; each is made
@@ -48,6 +48,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace softchain::fem
@@ -110,8 +111,11 @@ namespace softchain::fem
     // value[place[k]]; empty where that is k (every row's columns in
     // increasing order, as deal.II's matrices keep them).
     std::vector<SuiteSparse_long> place;
-    // Has each entry (i, j) its mirror (j, i) in the pattern?
-    bool symmetric_pattern = false;
+    // Has each entry (i, j) its mirror (j, i) in the pattern? If so, the
+    // pairs (k, m) of each entry k = (i, j) above the diagonal and its
+    // mirror m = (j, i), for the symmetry test.
+    bool                                               symmetric_pattern = false;
+    std::vector<std::pair<SuiteSparse_long, SuiteSparse_long>> upper_mirrors;
 
     // x = K^-1 b for a symmetric K, each false where it does not apply (below).
     bool solve_single(const double *b, std::vector<double> &x);
