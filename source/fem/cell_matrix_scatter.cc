@@ -113,6 +113,19 @@ namespace softchain::fem
     return mean != 0.0 ? mean : 1.0;
   }
 
+  double *CellMatrixScatter::values_of(TrilinosWrappers::SparseMatrix &matrix)
+  {
+    double *values;
+    int     n_row;
+    matrix.trilinos_matrix().ExtractMyRowView(0, n_row, values);
+    return values;
+  }
+
+  const unsigned int *CellMatrixScatter::places_of(const unsigned int cell_index) const
+  {
+    return &place[std::size_t(cell_index) * dofs_per_cell * dofs_per_cell];
+  }
+
   void CellMatrixScatter::add(const unsigned int                          cell_index,
                               const std::vector<types::global_dof_index> &dofs,
                               const FullMatrix<double>                   *cell_matrix,
@@ -134,11 +147,9 @@ namespace softchain::fem
       r[dofs[i]] += cell_rhs(i);
     if (!cell_matrix)
       return;
-    double *values;
-    int     n_row;
-    matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
-    const unsigned int *to    = &place[std::size_t(cell_index) * dofs_per_cell * dofs_per_cell];
-    const double       *entry = &(*cell_matrix)(0, 0);
+    double             *values = values_of(*matrix);
+    const unsigned int *to     = places_of(cell_index);
+    const double       *entry  = &(*cell_matrix)(0, 0);
     for (unsigned int k = 0; k < n * n; ++k)
       values[to[k]] += entry[k];
   }
@@ -158,10 +169,8 @@ namespace softchain::fem
         r[dofs[local[i]]] += block_rhs(i);
     if (!block)
       return;
-    double *values;
-    int     n_row;
-    matrix->trilinos_matrix().ExtractMyRowView(0, n_row, values);
-    const unsigned int *to = &place[std::size_t(cell_index) * dofs_per_cell * dofs_per_cell];
+    double             *values = values_of(*matrix);
+    const unsigned int *to     = places_of(cell_index);
     for (unsigned int i = 0; i < m; ++i)
       {
         const double      *row     = &(*block)(i, 0);

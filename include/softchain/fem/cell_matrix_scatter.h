@@ -58,6 +58,9 @@ namespace softchain::fem
 
   private:
     static double substitute_diagonal(const dealii::FullMatrix<double> &cell_matrix);
+    // The matrix's values in their contiguous storage; a cell's places in them.
+    static double      *values_of(dealii::TrilinosWrappers::SparseMatrix &matrix);
+    const unsigned int *places_of(unsigned int cell_index) const;
 
     std::vector<bool> constrained; // per DoF
     std::vector<bool> free_cell;   // per active cell: none of its DoFs constrained
