@@ -35,7 +35,9 @@ namespace softchain::fem
     : constrained(dof_handler.n_dofs())
     , free_cell(dof_handler.get_triangulation().n_active_cells())
     , dofs_per_cell(dof_handler.get_fe().n_dofs_per_cell())
+    , all_local(dofs_per_cell)
   {
+    std::iota(all_local.begin(), all_local.end(), 0u);
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
     const auto              n_dofs = dof_handler.n_dofs();
     AssertThrow(epetra.StorageOptimized() && epetra.NumMyRows() == static_cast<int>(n_dofs),
@@ -136,9 +138,7 @@ namespace softchain::fem
     const unsigned int n = dofs.size();
     if (!free_cell[cell_index])
       {
-        std::vector<unsigned int> all(n);
-        std::iota(all.begin(), all.end(), 0u);
-        add(cell_index, dofs, all, cell_matrix, cell_rhs, matrix, rhs);
+        add(cell_index, dofs, all_local, cell_matrix, cell_rhs, matrix, rhs);
         return;
       }
     // No constrained DoF: the cell's entries in storage order.

@@ -131,7 +131,8 @@ namespace softchain::fem
     Vector<double>                       face_rhs;
     for_each_face(u, [&](const CavityFace &face, const auto &dofs, const auto &u_nodes) {
       const unsigned int n = face.nodes.size();
-      face_matrix.reinit(3 * n, 3 * n);
+      if (matrix)
+        face_matrix.reinit(3 * n, 3 * n);
       face_rhs.reinit(3 * n);
       for (unsigned int q = 0; q < points_per_face; ++q)
         {

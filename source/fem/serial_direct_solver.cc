@@ -234,9 +234,10 @@ namespace softchain::fem
   // digits, u_single = 6e-8: on the CalculiX bender's Q2 tangents the
   // backward error went 3e-8, 6e-11, 1e-12, 5e-14, 2e-15, 1e-16. The
   // solution is accepted at the bound of the double factors (1e-12, see
-  // solve_unpivoted()) or at the caller's relative residual (below). The refinement gives up when a step does not halve
-  // the backward error (kappa(K) u_single near 1, or a poor pivot of the
-  // unpivoted factors) and after six steps: a step is a pair of triangular
+  // solve_unpivoted()) or at the caller's relative residual (below). The
+  // refinement gives up when a step does not halve the backward error
+  // (kappa(K) u_single near 1, or a poor pivot of the unpivoted factors)
+  // and after six steps: a step is a pair of triangular
   // solves and a product with K (17 ms on the CalculiX bender's Q2 tangent,
   // 28K DoFs, against 0.14-0.18 s for its single and 0.26-0.29 s for its
   // double factorisation), so six cost about what the single factors save.

@@ -65,6 +65,7 @@ namespace softchain::fem
     std::vector<bool> constrained; // per DoF
     std::vector<bool> free_cell;   // per active cell: none of its DoFs constrained
     unsigned int      dofs_per_cell;
+    std::vector<unsigned int> all_local; // 0, 1, ..., dofs_per_cell - 1: a whole cell as a block
     // Per active cell, for its (i, j) in row-major order: the index of the
     // entry in the matrix's contiguous values (dofs_per_cell^2 per cell).
     std::vector<unsigned int> place;
