@@ -1,6 +1,7 @@
 #include <softchain/fem/adaptive_load_stepping.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace softchain::fem
 {
@@ -14,11 +15,14 @@ namespace softchain::fem
     return std::min(1.0, s + increment);
   }
 
+  // Crisfield's rule: the next increment is the last one times
+  // sqrt(I_d / I), I the Newton iterations the last step took and I_d the
+  // desired count, within [1/2, 2] of the last.
   void AdaptiveLoadStepping::converged(const unsigned int newton_iterations)
   {
     s = next();
-    if (3 * newton_iterations <= 2 * prm.max_newton_iterations)
-      increment = std::min(prm.max_load_step, 1.5 * increment);
+    const double factor = std::sqrt(desired_iterations / std::max(1u, newton_iterations));
+    increment           = std::min(prm.max_load_step, std::clamp(factor, 0.5, 2.0) * increment);
   }
 
   bool AdaptiveLoadStepping::failed()

@@ -1,11 +1,13 @@
 // AdaptiveLoadStepping on a model path whose Newton solves converge only in
-// steps of at most 0.3 and take 4 iterations (of 12 allowed) when they do:
-// the rules (grow by 1.5 after an easy step, a quarter after a failure,
-// give up below the minimum step) followed exactly.
+// steps of at most 0.3 and take 4 iterations when they do: the rules (the
+// next step scaled by sqrt(5 / I) within [1/2, 2] after a step of I
+// iterations, a quarter after a failure, give up below the minimum step)
+// followed exactly.
 #include <softchain/fem/adaptive_load_stepping.h>
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <vector>
 
 using namespace softchain::fem;
@@ -40,31 +42,35 @@ TEST_CASE("load steps grow after easy steps, are cut after failures and end at 1
         REQUIRE(path.failed());
         ++failures;
       }
-  // 1 fails -> 0.25 converges -> 0.375 fails -> 0.09375 converges ->
-  // 0.140625 converges -> 0.2109375 converges -> 0.31640625 fails -> ...:
-  // every accepted step is at most 0.3, the last one lands on 1 exactly.
-  REQUIRE(accepted.size() >= 2);
+  // 1 fails -> 0.25 converges -> 0.25 sqrt(5/4) = 0.2795 converges ->
+  // 0.3125 fails -> 0.078 converges -> ...: every accepted step is at most
+  // 0.3, the last one lands on 1 exactly.
+  REQUIRE(accepted.size() >= 3);
   CHECK(accepted[0] == 0.25);
-  CHECK(accepted[1] == 0.25 + 0.09375);
+  CHECK(accepted[1] == Approx(0.25 + 0.25 * std::sqrt(1.25)).epsilon(1e-14));
   CHECK(accepted.back() == 1.0);
   for (std::size_t k = 1; k < accepted.size(); ++k)
     CHECK(accepted[k] - accepted[k - 1] <= 0.3 + 1e-12);
   CHECK(failures >= 2);
 }
 
-TEST_CASE("a failed step is retried a quarter as long, a hard step does not grow the next",
+TEST_CASE("a failed step is retried a quarter as long, a hard step shrinks the next",
           "[fem][stepping]")
 {
   const SolverParameters prm = stepping(1e-4, 1.0);
   AdaptiveLoadStepping   path(prm, 0.25);
-  path.converged(4);
+  path.converged(5); // the desired count: the step stays
   CHECK(path.reached() == 0.25);
-  CHECK(path.step() == 0.375); // grown by 1.5 after 4 of 12 iterations
+  CHECK(path.step() == 0.25);
   path.failed();
   CHECK(path.reached() == 0.25); // from the last converged state
-  CHECK(path.next() == 0.25 + 0.375 / 4);
-  path.converged(12); // a hard step: the step does not grow
-  CHECK(path.step() == 0.375 / 4);
+  CHECK(path.next() == 0.25 + 0.25 / 4);
+  path.converged(20); // a hard step: sqrt(5/20) = 1/2
+  CHECK(path.step() == Approx(0.25 / 8).epsilon(1e-14));
+  path.converged(80); // sqrt(5/80) = 1/4, kept at 1/2
+  CHECK(path.step() == Approx(0.25 / 16).epsilon(1e-14));
+  path.converged(1); // sqrt(5) = 2.24, kept at 2
+  CHECK(path.step() == Approx(0.25 / 8).epsilon(1e-14));
 }
 
 TEST_CASE("a path whose every step fails is given up below the minimum step",
@@ -93,5 +99,5 @@ TEST_CASE("load steps never grow beyond the maximum load step", "[fem][stepping]
       CHECK(path.reached() - before <= 0.2 + 1e-12);
       ++steps;
     }
-  CHECK(steps == 6); // 0.125, then 0.1875, then 0.2 per step: 0.3125, 0.5125, 0.7125, 0.9125, 1
+  CHECK(steps == 6); // 0.125, then 0.2 per step (2 x 0.125, kept at 0.2): 0.325, ..., 0.925, 1
 }
