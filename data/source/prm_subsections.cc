@@ -17,6 +17,7 @@ namespace softchain::data
       {"Springs", "FEM", true},
       {"Solver", "FEM", true},
       {"Loads", "FEM (softchain solve)", false},
+      {"Contact", "geometry (obstacles) and FEM (contact law)", false},
       {"Output", "FEM", false},
       {"Finger design", "geometry", false},
       {"Samples", "FEM sample sweep", false},

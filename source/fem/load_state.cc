@@ -10,6 +10,7 @@ namespace softchain::fem
     state.pressure       = (1 - s) * start.pressure + s * target.pressure;
     state.gravity_factor = (1 - s) * start.gravity_factor + s * target.gravity_factor;
     state.tip_traction   = (1 - s) * start.tip_traction + s * target.tip_traction;
+    state.obstacle_motion = (1 - s) * start.obstacle_motion + s * target.obstacle_motion;
     if (target.tip_motion)
       {
         const TipMotion from = start.tip_motion.value_or(TipMotion());

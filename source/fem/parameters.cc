@@ -84,6 +84,23 @@ namespace softchain::fem
     }
 
     constexpr double unbounded = std::numeric_limits<double>::max();
+
+    // A tolerance: a real entry in (0, 1) (NaN refused, as every bound is).
+    double tolerance(const data::PrmSection &section, const std::string &name)
+    {
+      const double value = section.get_double(name);
+      section.require(value > 0 && value < 1, name, "must lie in (0, 1)");
+      return value;
+    }
+
+    // A load step, a fraction of the path: a real entry in (0, 1].
+    double load_step(const data::PrmSection &section, const std::string &name)
+    {
+      const double value = section.get_double(name);
+      section.require(value > 0 && value <= 1, name,
+                      "must lie in (0, 1]: a load step of 0 never reaches the target");
+      return value;
+    }
   } // namespace
 
   void MeshParameters::declare(data::PrmSection &section)
@@ -278,6 +295,10 @@ namespace softchain::fem
     section.declare("Initial load step", "0.125");
     section.declare("Minimum load step", "1e-4");
     section.declare("Maximum load step", "1");
+    section.declare("Maximum load step attempts", "1000",
+                    "Converged and failed load steps of one load path together; a path "
+                    "that needs more stops with a named failure.",
+                    false);
     section.declare("Linear solver", "auto",
                     "direct: see Direct solver package; iterative: GMRES + AMG; auto: direct "
                     "below 'Direct solver maximum DoFs'.");
@@ -301,16 +322,20 @@ namespace softchain::fem
 
   void SolverParameters::parse(const data::PrmSection &section)
   {
-    residual_tolerance     = bounded_double(section, "Residual tolerance", 0, unbounded);
-    displacement_tolerance = bounded_double(section, "Displacement tolerance", 0, unbounded);
-    intermediate_tolerance = std::max({bounded_double(section, "Intermediate tolerance", 0, unbounded),
+    residual_tolerance     = tolerance(section, "Residual tolerance");
+    displacement_tolerance = tolerance(section, "Displacement tolerance");
+    intermediate_tolerance = std::max({tolerance(section, "Intermediate tolerance"),
                                        residual_tolerance, displacement_tolerance});
     max_newton_iterations  = bounded_integer(section, "Maximum Newton iterations", 1, 100000);
-    initial_load_step      = bounded_double(section, "Initial load step", 0, 1);
-    min_load_step          = bounded_double(section, "Minimum load step", 0, 1);
-    max_load_step          = bounded_double(section, "Maximum load step", 0, 1);
+    initial_load_step      = load_step(section, "Initial load step");
+    min_load_step          = load_step(section, "Minimum load step");
+    max_load_step          = load_step(section, "Maximum load step");
     section.require(min_load_step <= initial_load_step, "Minimum load step",
                     "exceeds the initial load step");
+    section.require(initial_load_step <= max_load_step, "Initial load step",
+                    "exceeds the maximum load step");
+    max_load_step_attempts =
+      bounded_integer(section, "Maximum load step attempts", 1, std::numeric_limits<int>::max());
     linear_solver =
       section.get_enum<LinearSolver>("Linear solver", {{"auto", LinearSolver::automatic},
                                                        {"direct", LinearSolver::direct},
@@ -319,7 +344,7 @@ namespace softchain::fem
                                              std::numeric_limits<int>::max());
     direct_solver_package =
       section.get_selection("Direct solver package", {"UMFPACK", "Amesos_Mumps", "Amesos_Klu"});
-    krylov_tolerance = bounded_double(section, "Krylov tolerance", 0, unbounded);
+    krylov_tolerance = tolerance(section, "Krylov tolerance");
     line_search      = section.get_bool("Line search");
     secant_predictor = section.get_bool("Secant predictor");
     threads = bounded_integer(section, "Threads", 0, std::numeric_limits<int>::max());

@@ -1,6 +1,5 @@
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/data/input_error.h>
-#include <softchain/fem/adaptive_load_stepping.h>
 #include <softchain/fem/continuation_predictor.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/cell_conforming_polylines.h>
@@ -378,10 +377,25 @@ namespace softchain::fem
         du_ghosted = update;
         springs->prepare_link_updates(u_ghosted, du_ghosted);
       }
+    if (&update != &du)
+      du = update;
+    correction_taken = 1.0;
     u_owned += update;
     u_ghosted = u_owned;
     if (springs)
       springs->move_link_states(1.0);
+  }
+
+  // u = u_old + factor (u - u_old), the springs' link states moved along
+  // their Newton step by the same total fraction.
+  void QuasiStaticSolver::scale_correction(const double factor)
+  {
+    u_owned.add(factor - 1.0, du);
+    du *= factor;
+    correction_taken *= factor;
+    u_ghosted = u_owned;
+    if (springs)
+      springs->move_link_states(correction_taken);
   }
 
   double QuasiStaticSolver::residual_bound() const
@@ -389,57 +403,21 @@ namespace softchain::fem
     return rhs.l2_norm() + tension_mismatch;
   }
 
-  bool QuasiStaticSolver::residual_converged(const double residual, const bool final_state) const
+  // A solve whose loads may all be prescribed motion (f_ext = 0) measures
+  // its residual against the one right after the first step moved the tip.
+  void QuasiStaticSolver::first_residual(const double residual)
+  {
+    if (newton_target.tip_motion && motion_residual_scale == 0.0)
+      motion_residual_scale = residual;
+  }
+
+  bool QuasiStaticSolver::residual_converged(const double residual, const double tolerance) const
   {
     // The residual's scale: the external loads, a prescribed motion's first
     // residual, or (a scene with neither) the springs' rest tension.
     const double scale = std::max({f_ext_norm, motion_residual_scale,
                                    springs ? springs->rest_force() : 0.0, 1e-300});
-    return residual <= (final_state ? prm.solver.residual_tolerance : prm.solver.intermediate_tolerance) * scale;
-  }
-
-  bool QuasiStaticSolver::error_converged(const double error, const bool final_state) const
-  {
-    return error <= (final_state ? prm.solver.displacement_tolerance : prm.solver.intermediate_tolerance) *
-                      std::max(u_owned.l2_norm(), 1e-300);
-  }
-
-  // Line search on the energy along the Newton direction (Crisfield, Non-
-  // linear Finite Element Analysis of Solids and Structures, Sec. 9.3): with
-  // s(a) = du . R(u_old + a du), s(0) = -du.K du < 0. The full step is kept
-  // when |s(1)| <= 0.8 |s(0)| (the residual norm itself may grow in a good
-  // step of a nearly incompressible solid); otherwise the step goes to the
-  // zero of the secant of s, kept in [0.1, 1]. A step that inverts an element
-  // (`valid` false) is halved, the springs' link states moved along. On entry
-  // u = u_old + du and rhs = -R(u); returns false if no admissible step was
-  // found.
-  bool QuasiStaticSolver::line_search(const LoadState &state, const double s0, const bool valid)
-  {
-    double step = 1.0, total = 1.0; // this cut, and all so far (u - u_old = total du_Newton)
-    if (valid)
-      {
-        const double s1 = -(du * rhs);
-        if (std::abs(s1) <= 0.8 * std::abs(s0))
-          return true;
-        step = std::clamp(s0 / (s0 - s1), 0.1, 1.0);
-      }
-    else
-      step = 0.5;
-    for (unsigned int k = 0; k < 6; ++k)
-      {
-        u_owned.add(step - 1.0, du); // from u_old + du to u_old + step du
-        du *= step;
-        total *= step;
-        u_ghosted = u_owned;
-        if (springs)
-          springs->move_link_states(total);
-        if (prm.output.verbose)
-          log << "      line search: step " << step << '\n';
-        if (assemble(state, true))
-          return true;
-        step = 0.5;
-      }
-    return false;
+    return residual <= tolerance * scale;
   }
 
   void QuasiStaticSolver::anchor_tip_motion(const bool point_contact)
@@ -512,153 +490,87 @@ namespace softchain::fem
     return true;
   }
 
-  QuasiStaticSolver::NewtonOutcome QuasiStaticSolver::newton(const LoadState &state,
-                                                             Result          &result,
-                                                             const bool       final_state)
-  {
-    double       s0              = 0.0; // du . R before the step
-    unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
-    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
-      {
-        bool valid = assemble(state, true);
-        // A second full Newton step that inverts an element gives the load
-        // step up: it is too large for this mesh. Measured on P10 (Q2 hex,
-        // 40 kPa from rest): no load step that converged had one such step,
-        // while each that failed had them in 5-12 iterations, with 20-45
-        // halvings, a quarter of the solve's time.
-        if (it > 0 && !valid && ++inverting_steps == 2)
-          return {false, true, it};
-        // With springs the energy criterion is left out: their tensions are
-        // Newton unknowns whose own step the energy along du ignores, and it
-        // cut good steps to a tenth (the demo's sweep: 1917 against 1519
-        // Newton iterations); without springs it pays (the CalculiX bender,
-        // Q2 at 3 kPa in one step: 10 against 16). docs/results.md, "Link
-        // tensions as Newton unknowns".
-        if (it > 0 && prm.solver.line_search && (!valid || !springs))
-          valid = line_search(state, s0, valid);
-        if (!valid)
-          return {false, true, it};
-        const double residual = residual_bound();
-        if (it == 0 && state.tip_motion && motion_residual_scale == 0.0)
-          motion_residual_scale = residual;
-        result.residual_history.push_back(residual);
-        if (!std::isfinite(residual))
-          return {false, false, it};
-        if (residual == 0.0)
-          return {true, false, it};
-        bool newton_step_ready = false;
-        if (it > 0 && residual_converged(residual, final_state))
-          {
-            // The displacement's error |u* - u|: the last update bounds it
-            // (quadratic convergence leaves far less); else it is estimated
-            // by the simplified Newton correction K(u_prev)^-1 R(u) with the
-            // last factorisation, one pair of triangular solves (Deuflhard,
-            // Newton Methods for Nonlinear Problems, 2004, Sec. 2.1: the
-            // error-oriented termination of NLEQ-ERR), instead of a new
-            // factorisation whose update would then be applied and checked.
-            // Without kept factors the correction is Newton's own step.
-            if (error_converged(du.l2_norm(), final_state))
-              return {true, false, it};
-            if (!solve_tangent(rhs, du, true))
-              return {false, false, it};
-            if (prm.output.verbose)
-              log << "      error estimate |K^-1 R| = " << std::scientific << std::setprecision(3)
-                  << du.l2_norm() << std::defaultfloat << '\n';
-            if (error_converged(du.l2_norm(), final_state))
-              return {true, false, it};
-            newton_step_ready = !keeps_factorisation();
-          }
-        if (it == prm.solver.max_newton_iterations)
-          break;
-        if (!newton_step_ready && !solve_tangent(rhs, du))
-          return {false, false, it};
-        s0 = -(du * rhs);
-        if (prm.output.verbose)
-          log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
-              << std::setprecision(3) << residual << "  |du| = " << du.l2_norm()
-              << std::defaultfloat << '\n';
-        apply_update(du);
-      }
-    return {false, false, prm.solver.max_newton_iterations};
-  }
-
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target)
   {
     return solve(target, prm.solver.initial_load_step);
   }
+
+  // The straight load path from the solver's state at s = 0 to `target` at
+  // s = 1. Each step starts from the extrapolation of the last converged
+  // states (ContinuationPredictor: the secant, or the parabola through
+  // three), which leaves Newton only the correction; a failed step returns
+  // to the last converged state and its link states.
+  // Measured on P10 (Q2 hex, 40 kPa from rest): a retry without the
+  // predictor started from a residual of a few tenths of a newton with a
+  // Newton update of 0.1-0.15 m and crept along it with line-search steps of
+  // 0.1 for 5-7 iterations; with it, 1-2 iterations.
+  class QuasiStaticSolver::StraightPath : public LoadPathProblem
+  {
+  public:
+    StraightPath(QuasiStaticSolver &solver, const LoadState &target)
+      : solver(solver)
+      , start(solver.load)
+      , target(target)
+      , predictor(solver.u_owned)
+      , links_converged(solver.link_states())
+      , pv{{start.pressure, solver.pressure->cavity_volume(solver.u_ghosted)}}
+    {}
+
+    NewtonSystem &begin_step(const double s) override
+    {
+      const LoadState state = LoadState::interpolate(start, target, s);
+      const bool predicted = solver.prm.solver.secant_predictor && predictor.predict(s, solver.u_owned);
+      solver.u_ghosted     = solver.u_owned;
+      // The tip where the motion puts it, held there by Newton; without
+      // the path's history the body first follows it linearly.
+      if (state.tip_motion && (predicted || !solver.predict_tip_motion(state)))
+        {
+          solver.prescribed_tip->apply(*state.tip_motion, solver.u_owned);
+          solver.u_ghosted = solver.u_owned;
+        }
+      solver.aim_newton_at(state);
+      return solver;
+    }
+
+    void accept_step(const double s) override
+    {
+      predictor.converged(s, solver.u_owned);
+      solver.load     = solver.newton_target;
+      links_converged = solver.link_states();
+      pv.emplace_back(solver.load.pressure, solver.pressure->cavity_volume(solver.u_ghosted));
+    }
+
+    void reject_step() override { solver.restore(predictor.last(), links_converged); }
+
+    // (pressure, cavity volume) of the converged states, to tell a limit point.
+    const std::vector<std::pair<double, double>> &pressure_volume() const { return pv; }
+
+  private:
+    QuasiStaticSolver                     &solver;
+    const LoadState                        start;
+    const LoadState                        target;
+    ContinuationPredictor                  predictor;
+    std::vector<TensionOnlyLaw::State>     links_converged;
+    std::vector<std::pair<double, double>> pv;
+  };
 
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target, const double first_step)
   {
     if (target.pressure != 0.0 && !pressure->has_cavity())
       throw data::InputError("a pressure of " + std::to_string(target.pressure) +
                              " Pa needs the mesh's physical group 'cavity'; this mesh has none");
-    return solve_path(target, first_step);
-  }
-
-  // Load stepping along s in [0, 1] from the current state to `target`
-  // (AdaptiveLoadStepping). Each step starts from the extrapolation of the
-  // last converged states (ContinuationPredictor: the secant, or the
-  // parabola through three), which leaves Newton only the correction; a
-  // failed step is retried, shorter, from the last converged state and its
-  // link states.
-  // Measured on P10 (Q2 hex, 40 kPa from rest): a retry without the
-  // predictor started from a residual of a few tenths of a newton with a
-  // Newton update of 0.1-0.15 m and crept along it with line-search steps of
-  // 0.1 for 5-7 iterations; with it, 1-2 iterations.
-  QuasiStaticSolver::Result QuasiStaticSolver::solve_path(const LoadState &target, const double first_step)
-  {
     const auto start_time = std::chrono::steady_clock::now();
-    Result     result;
-    const LoadState start = load;
     prepare_tip_motion(target);
-    AdaptiveLoadStepping path(prm.solver, first_step);
-    bool                 last_inverted = false;
-    // (pressure, cavity volume) of converged states, to tell a limit point.
-    std::vector<std::pair<double, double>> pv{{start.pressure, pressure->cavity_volume(u_ghosted)}};
-    ContinuationPredictor                  predictor(u_owned);
-    std::vector<TensionOnlyLaw::State>     links_converged = link_states();
-    while (!path.finished())
-      {
-        const double    s_try = path.next();
-        const LoadState state = LoadState::interpolate(start, target, s_try);
-        const bool predicted = prm.solver.secant_predictor && predictor.predict(s_try, u_owned);
-        u_ghosted            = u_owned;
-        // The tip where the motion puts it, held there by Newton; without
-        // the path's history the body first follows it linearly.
-        if (state.tip_motion && (predicted || !predict_tip_motion(state)))
-          {
-            prescribed_tip->apply(*state.tip_motion, u_owned);
-            u_ghosted = u_owned;
-          }
-        const auto outcome = newton(state, result, s_try >= 1.0);
-        result.newton_iterations += outcome.iterations;
-        if (outcome.converged)
-          {
-            path.converged(outcome.iterations);
-            predictor.converged(path.reached(), u_owned);
-            load = state;
-            links_converged = link_states();
-            ++result.load_steps;
-            pv.emplace_back(state.pressure, pressure->cavity_volume(u_ghosted));
-            log << "    load step " << result.load_steps << ": factor " << path.reached() << ", "
-                << outcome.iterations << " Newton iterations\n";
-            continue;
-          }
-        restore(predictor.last(), links_converged);
-        last_inverted   = outcome.inverted;
-        const bool more = path.failed();
-        log << "    load factor " << s_try << " failed ("
-            << (outcome.inverted ? "an element inverted, J <= 0" : "Newton did not converge")
-            << "); cutting the step to " << path.step() << '\n';
-        if (!more)
-          {
-            classify_failure(pv, last_inverted, result);
-            break;
-          }
-      }
+    Result       result;
+    StraightPath problem(*this, target);
+    const auto   path = LoadPath(prm, first_step, "load factor", log).follow(problem, &result.residual_history);
     result.converged           = path.finished();
-    result.load_factor_reached = path.reached();
-    result.wall_time           = seconds_since(start_time);
+    result.load_factor_reached = path.reached;
+    result.newton_iterations   = path.newton_iterations;
+    result.load_steps          = path.load_steps;
+    if (!path.finished())
+      classify_failure(problem.pressure_volume(), path, result);
+    result.wall_time = seconds_since(start_time);
     return result;
   }
 
@@ -666,10 +578,20 @@ namespace softchain::fem
   // reached a limit point (balloon instability, dp/dV -> 0): a physical end
   // of pressure control, not a numerical failure.
   void QuasiStaticSolver::classify_failure(const std::vector<std::pair<double, double>> &pv,
-                                           const bool inverted, Result &result) const
+                                           const LoadPath::Result &path, Result &result) const
   {
     std::ostringstream why;
     const double       p_last = pv.back().first;
+    if (path.stop == LoadPath::Stop::too_many_attempts)
+      {
+        why << "gave up after " << path.attempts << " load step attempts (Solver/Maximum load "
+            << "step attempts) at load factor " << path.reached << " (last converged pressure "
+            << p_last << " Pa)";
+        result.failure = Failure::too_many_attempts;
+        result.reason  = why.str();
+        return;
+      }
+    const bool inverted = path.last_failure == NewtonSolver::Status::inverted;
     if (pv.size() >= 3 && p_last != 0.0)
       {
         const auto   slope = [&](std::size_t k) {

@@ -1,5 +1,4 @@
-#include <softchain/fem/adaptive_load_stepping.h>
-#include <softchain/fem/continuation_predictor.h>
+#include <softchain/data/content_hash.h>
 #include <softchain/fem/volume_controlled_inflation.h>
 
 #include <algorithm>
@@ -47,80 +46,101 @@ namespace softchain::fem
     return state;
   }
 
-  bool VolumeControlledInflation::newton(const double target_volume, Result &result, const bool final_state)
+  bool VolumeControlledInflation::assemble(const bool with_matrix)
   {
-    const FiniteElementSpace &s = solver.space();
-    for (unsigned int it = 0; it <= prm.solver.max_newton_iterations; ++it)
-      {
-        if (!solver.assemble(pressure_state(), true))
-          return false; // J <= 0 somewhere
-        const TrilinosWrappers::MPI::Vector g        = unit_pressure_load();
-        const double                        residual = solver.residual_bound();
-        const double                        misfit   = target_volume - volume();
-        // A step short of the target is a stepping stone, its residual
-        // converged to the intermediate tolerance as under pressure control;
-        // its volume is always the one asked for (the bordered Newton step
-        // meets the linearised constraint, so the misfit falls quadratically).
-        const double tolerance =
-          final_state ? prm.solver.residual_tolerance : prm.solver.intermediate_tolerance;
-        if (residual <= tolerance * std::max(std::abs(p) * g.l2_norm(), 1e-300) &&
-            std::abs(misfit) <= prm.solver.residual_tolerance * target_volume)
-          return true;
-        if (it == prm.solver.max_newton_iterations)
-          break;
-        ++result.newton_iterations;
+    if (!solver.assemble(pressure_state(), with_matrix))
+      return false; // J <= 0 somewhere
+    g      = unit_pressure_load();
+    misfit = v_target - volume();
+    return true;
+  }
 
-        TrilinosWrappers::MPI::Vector a(s.owned_dofs, s.communicator), b(a);
-        if (!solver.solve_tangent(solver.negative_residual(), a) || !solver.solve_tangent(g, b, true))
-          return false;
-        const double dp = (misfit - g * a) / (g * b);
-        a.add(dp, b);
-        if (!std::isfinite(a.l2_norm()) || !std::isfinite(dp))
-          return false;
-        solver.apply_update(a);
-        p += dp;
-      }
-    return false;
+  // A step short of the target is a stepping stone, its residual converged
+  // to the intermediate tolerance as under pressure control; its volume is
+  // always the one asked for (the bordered Newton step meets the linearised
+  // constraint, so the misfit falls quadratically).
+  bool VolumeControlledInflation::residual_converged(const double residual, const double tolerance) const
+  {
+    return residual <= tolerance * std::max(std::abs(p) * g.l2_norm(), 1e-300) &&
+           std::abs(misfit) <= prm.solver.residual_tolerance * v_target;
+  }
+
+  bool VolumeControlledInflation::solve_correction(const bool same_tangent)
+  {
+    const FiniteElementSpace     &s = solver.space();
+    TrilinosWrappers::MPI::Vector b(s.owned_dofs, s.communicator);
+    du.reinit(b);
+    if (!solver.solve_tangent(solver.negative_residual(), du, same_tangent) ||
+        !solver.solve_tangent(g, b, true))
+      return false;
+    dp = (misfit - g * du) / (g * b);
+    du.add(dp, b);
+    return std::isfinite(du.l2_norm()) && std::isfinite(dp);
+  }
+
+  void VolumeControlledInflation::apply_correction()
+  {
+    solver.apply_update(du);
+    p += dp;
+  }
+
+  void VolumeControlledInflation::scale_correction(const double factor)
+  {
+    solver.scale_correction(factor);
+    du *= factor;
+    p += (factor - 1.0) * dp;
+    dp *= factor;
+  }
+
+  NewtonSystem &VolumeControlledInflation::begin_step(const double s)
+  {
+    TrilinosWrappers::MPI::Vector u_predicted(predictor->last());
+    if (prm.solver.secant_predictor && predictor->predict(s, u_predicted, &p))
+      solver.move_to(u_predicted);
+    v_target = v_start + s * (v_end - v_start);
+    return *this;
+  }
+
+  void VolumeControlledInflation::accept_step(const double s)
+  {
+    predictor->converged(s, owned_displacement(), p);
+    links_converged = solver.link_states();
+    curve->push_back({volume(), p});
+  }
+
+  // Back to the last converged state (the curve's last point).
+  void VolumeControlledInflation::reject_step()
+  {
+    solver.restore(predictor->last(), links_converged);
+    p = curve->back().pressure;
   }
 
   VolumeControlledInflation::Result VolumeControlledInflation::solve(const double target_volume)
   {
-    Result               result;
-    const double         v_start = volume();
-    AdaptiveLoadStepping path(prm.solver, prm.solver.initial_load_step);
-    ContinuationPredictor predictor(owned_displacement(), p);
-    std::vector<TensionOnlyLaw::State> links_converged = solver.link_states();
+    Result result;
+    v_start         = volume();
+    v_end           = target_volume;
+    predictor       = std::make_unique<ContinuationPredictor>(owned_displacement(), p);
+    links_converged = solver.link_states();
+    curve           = &result.curve;
     result.curve.push_back({v_start, p});
-    while (!path.finished())
+    std::ostringstream log;
+    const auto         path =
+      LoadPath(prm, prm.solver.initial_load_step, "volume factor", log).follow(*this);
+    result.newton_iterations = path.newton_iterations;
+    result.converged         = path.finished();
+    if (!result.converged)
       {
-        const unsigned int            before = result.newton_iterations;
-        TrilinosWrappers::MPI::Vector u_predicted(predictor.last());
-        if (prm.solver.secant_predictor && predictor.predict(path.next(), u_predicted, &p))
-          solver.move_to(u_predicted);
-        if (newton(v_start + path.next() * (target_volume - v_start), result, path.next() >= 1.0))
-          {
-            path.converged(result.newton_iterations - before);
-            predictor.converged(path.reached(), owned_displacement(), p);
-            links_converged = solver.link_states();
-            result.curve.push_back({volume(), p});
-            continue;
-          }
-        // Back to the last converged state (the curve's last point).
-        solver.restore(predictor.last(), links_converged);
-        p = result.curve.back().pressure;
-        if (!path.failed())
-          {
-            std::ostringstream why;
-            why << "volume control did not converge even with volume steps below "
-                << prm.solver.min_load_step << " (last converged V = " << result.curve.back().volume
-                << " m^3, p = " << p << " Pa)";
-            result.reason = why.str();
-            solver.set_state(predictor.last(), pressure_state());
-            return result;
-          }
+        std::ostringstream why;
+        why << "volume control did not converge "
+            << (path.stop == LoadPath::Stop::too_many_attempts ?
+                  "in " + std::to_string(path.attempts) + " volume steps (Solver/Maximum load step attempts)" :
+                  "even with volume steps below " + data::canonical(prm.solver.min_load_step))
+            << " (last converged V = " << result.curve.back().volume << " m^3, p = " << p << " Pa)";
+        result.reason = why.str();
       }
-    result.converged = true;
-    solver.set_state(owned_displacement(), pressure_state());
+    solver.set_state(predictor->last(), pressure_state());
+    curve = nullptr;
     return result;
   }
 } // namespace softchain::fem

@@ -19,6 +19,9 @@ namespace softchain::fem
     dealii::Tensor<1, 3>           tip_traction;         // dead traction on `tip`, N/m^2
     // A rigid motion of the tip face (PrescribedTip) instead of a free tip.
     std::optional<TipMotion> tip_motion;
+    // How far the contact obstacles have moved along their Motion
+    // (ContactScene): 0 at rest, 1 the whole translation.
+    double                 obstacle_motion = 0.0;
 
     // (1 - s) * start + s * target, the point loads matched by position; a
     // tip motion blends from the start's (none: at rest) to the target's, and

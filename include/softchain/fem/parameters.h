@@ -125,6 +125,8 @@ namespace softchain::fem
     double       initial_load_step;
     double       min_load_step;
     double       max_load_step;
+    // Converged and failed load steps of one path together: every path ends.
+    unsigned int max_load_step_attempts = 1000;
     LinearSolver linear_solver = LinearSolver::automatic;
     unsigned int direct_solver_max_dofs;
     std::string  direct_solver_package; // UMFPACK or a Trilinos Amesos solver name

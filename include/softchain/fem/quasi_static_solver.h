@@ -3,10 +3,10 @@
 // equilibrium of a hyperelastic body with a follower cavity pressure,
 // embedded tension-only springs and point loads:
 //     R(u) = f_int(u) + f_springs(u) - f_pressure(u) - f_points = 0,
-// solved by Newton-Raphson with the exact tangent K = dR/du, adaptive load
-// stepping (cut on divergence or J <= 0, grow after easy steps) and a line
-// search (on the energy without springs; with them, a step that inverts an
-// element is halved). The cells (HyperelasticCell) and the springs inside
+// the operator of a NewtonSolver (residual, exact tangent K = dR/du, linear
+// solve), driven along a straight load path in adaptive steps (LoadPath).
+// The line search is on the energy without springs; with them, a step that
+// inverts an element is halved. The cells (HyperelasticCell) and the springs inside
 // them are assembled together, cell by cell; the springs' tensions are
 // Newton unknowns of their own, condensed per link (EmbeddedSpringNetwork).
 #include <softchain/fem/cell_matrix_scatter.h>
@@ -16,7 +16,9 @@
 #include <softchain/fem/finite_element_space.h>
 #include <softchain/fem/follower_pressure.h>
 #include <softchain/fem/hyperelastic_material.h>
+#include <softchain/fem/load_path.h>
 #include <softchain/fem/load_state.h>
+#include <softchain/fem/newton_solver.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/prescribed_tip.h>
 #include <softchain/fem/serial_direct_solver.h>
@@ -32,7 +34,7 @@
 
 namespace softchain::fem
 {
-  class QuasiStaticSolver
+  class QuasiStaticSolver : public NewtonSystem
   {
   public:
     // Why a solve stopped short of its target.
@@ -41,7 +43,8 @@ namespace softchain::fem
       none,
       not_converged, // Newton failed even at the smallest load step
       inverted,      // elements inverted (J <= 0) even at the smallest load step
-      limit_point    // pressure control passed a physical limit point (dp/dV -> 0)
+      limit_point,   // pressure control passed a physical limit point (dp/dV -> 0)
+      too_many_attempts // Solver/Maximum load step attempts used up
     };
 
     struct Result
@@ -126,10 +129,30 @@ namespace softchain::fem
     // DoFs); it keeps its factorisation between calls (one rank, SoftChain's
     // own MUMPS/UMFPACK solver rather than Trilinos' Amesos).
     bool uses_direct_solver() const;
-    bool keeps_factorisation() const;
     // A Newton update: u += update, and the springs' link states take their
-    // Newton step for it.
+    // Newton step for it; scale_correction() shortens it.
     void apply_update(const dealii::TrilinosWrappers::MPI::Vector &update);
+
+    // The NewtonSystem at the load state set by aim_newton_at().
+    void   aim_newton_at(const LoadState &state) { newton_target = state; }
+    bool   assemble(bool with_matrix) override { return assemble(newton_target, with_matrix); }
+    double residual_norm() const override { return residual_bound(); }
+    void   first_residual(double residual) override;
+    bool   residual_converged(double residual, double tolerance) const override;
+    double solution_norm() const override { return u_owned.l2_norm(); }
+    bool   solve_correction(bool same_tangent) override { return solve_tangent(rhs, du, same_tangent); }
+    bool   keeps_factorisation() const override;
+    double correction_norm() const override { return du.l2_norm(); }
+    double correction_slope() const override { return -(du * rhs); }
+    void   apply_correction() override { apply_update(du); }
+    void   scale_correction(double factor) override;
+    // With springs the energy criterion is left out: their tensions are
+    // Newton unknowns whose own step the energy along du ignores, and it
+    // cut good steps to a tenth (the demo's sweep: 1917 against 1519
+    // Newton iterations); without springs it pays (the CalculiX bender,
+    // Q2 at 3 kPa in one step: 10 against 16). docs/results.md, "Link
+    // tensions as Newton unknowns".
+    bool   energy_line_search() const override { return !springs; }
     const FollowerPressure              &pressure_load() const { return *pressure; }
     const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
     const HyperelasticMaterial &material(dealii::types::material_id id) const { return *materials.at(id); }
@@ -181,27 +204,16 @@ namespace softchain::fem
     bool by_places(const dealii::AffineConstraints<double> &constraints) const;
     void assemble_point_loads(const std::vector<PointLoad>         &point_loads,
                               const dealii::AffineConstraints<double> &constraints);
-    // Along the straight load path from the current state to `target`.
-    Result solve_path(const LoadState &target, double first_step);
+    LoadState                      newton_target; // the state Newton iterates towards
+    double                         correction_taken = 1.0; // of the last Newton update (line search)
 
-    struct NewtonOutcome
-    {
-      bool         converged;
-      bool         inverted;
-      unsigned int iterations;
-    };
-    // Newton at `state`, to the final tolerances or (an intermediate load
-    // step) to Solver/Intermediate tolerance.
-    NewtonOutcome newton(const LoadState &state, Result &result, bool final_state = true);
+    // The straight load path from the current state to a target (a
+    // LoadPathProblem).
+    class StraightPath;
     void          prepare_tip_motion(const LoadState &target);
     bool          predict_tip_motion(const LoadState &state);
-    // Newton's two tests: |R| <= tol |external load| and |u* - u| <= tol |u|,
-    // the error estimated (in newton()) by `error`.
-    bool          residual_converged(double residual, bool final_state) const;
-    bool          error_converged(double error, bool final_state) const;
-    bool          line_search(const LoadState &state, double s0, bool valid);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,
-                                   bool inverted, Result &result) const;
+                                   const LoadPath::Result &path, Result &result) const;
   };
 } // namespace softchain::fem

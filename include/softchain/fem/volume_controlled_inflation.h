@@ -10,7 +10,10 @@
 // is solved by the solver's configured linear solver, two solves of one
 // factorisation of K (K a = -R, K b = g, dp = (V_target - V - g.a) / g.b,
 // du = a + dp b); du is a Newton update of the solver's, springs' link
-// states included. Each volume step starts from the extrapolated u and p
+// states included. The bordered system is a NewtonSystem (NewtonSolver
+// iterates on it, with the same tests and the halving of a step that
+// inverts an element as pressure control) and the volume's path a
+// LoadPathProblem (LoadPath steps along it). Each volume step starts from the extrapolated u and p
 // with the links' states of the last converged step (their own Newton steps
 // take them onward), and a failed step returns to that state, links and
 // all, as pressure control does. The volume rises
@@ -18,14 +21,18 @@
 // equilibrium beyond the peak (Crisfield, Non-linear Finite Element Analysis
 // of Solids and Structures, Vol. 1, Sec. 9.5, displacement control as the
 // simplest way past a load maximum).
+#include <softchain/fem/continuation_predictor.h>
+#include <softchain/fem/load_path.h>
+#include <softchain/fem/newton_solver.h>
 #include <softchain/fem/quasi_static_solver.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace softchain::fem
 {
-  class VolumeControlledInflation
+  class VolumeControlledInflation : public NewtonSystem, public LoadPathProblem
   {
   public:
     struct PressureVolumePoint
@@ -57,15 +64,42 @@ namespace softchain::fem
     // state, with its load the pressure there.
     Result solve(double target_volume);
 
+    // The bordered system at the volume of the current step.
+    bool   assemble(bool with_matrix) override;
+    double residual_norm() const override { return solver.residual_bound(); }
+    // |R| <= tol |p g| and |V_target - V| <= Residual tolerance V_target.
+    bool   residual_converged(double residual, double tolerance) const override;
+    double solution_norm() const override { return solver.solution_norm(); }
+    bool   solve_correction(bool same_tangent) override;
+    bool   keeps_factorisation() const override { return solver.keeps_factorisation(); }
+    double correction_norm() const override { return du.l2_norm(); }
+    double correction_slope() const override { return -(du * solver.negative_residual()); }
+    void   apply_correction() override;
+    void   scale_correction(double factor) override;
+    // The energy along du ignores the constraint: only a step that inverts
+    // an element is shortened.
+    bool   energy_line_search() const override { return false; }
+
+    // The volume path's steps.
+    NewtonSystem &begin_step(double s) override;
+    void          accept_step(double s) override;
+    void          reject_step() override;
+
   private:
     QuasiStaticSolver &solver;
     const Parameters  &prm;
     double             p;
+    // The path of the current solve(): its start, the volume aimed at, the
+    // converged states and the bordered system's unknowns.
+    double                                v_start = 0, v_end = 0, v_target = 0;
+    std::unique_ptr<ContinuationPredictor> predictor;
+    std::vector<TensionOnlyLaw::State>    links_converged;
+    std::vector<PressureVolumePoint>     *curve = nullptr;
+    dealii::TrilinosWrappers::MPI::Vector g;  // dV/du at the iterate
+    double                                misfit = 0; // V_target - V at the iterate
+    dealii::TrilinosWrappers::MPI::Vector du; // the bordered step's displacement ...
+    double                                dp = 0; // ... and pressure
 
-    // Newton at a fixed volume, to the final tolerances if `final_state`,
-    // else to the intermediate one (a stepping stone); false if it fails
-    // (state restored by the caller).
-    bool newton(double target_volume, Result &result, bool final_state);
     dealii::TrilinosWrappers::MPI::Vector owned_displacement() const;
     LoadState                             pressure_state() const; // the load p alone
   };

@@ -1,0 +1,58 @@
+#pragma once
+// ContactScene: the .prm subsection "Contact", checked: the rigid obstacles
+// the finger may touch (each a nested subsection, named by the user), the
+// boundary groups that may touch them and the constants of the contact law.
+//
+//   subsection Contact
+//     set Surfaces = all           # or boundary groups: tip, outer, cavity
+//     subsection table
+//       set Shape    = plane       # plane | sphere | cylinder | box
+//       set Position = 0, -0.02, 0 # a point of the plane, a centre, a point of the axis
+//       set Normal   = 0, 1, 0     # plane
+//       set Motion   = 0, 0.005, 0 # translation along the load path, m
+//     end
+//   end
+#include <softchain/geometry/rigid_obstacle.h>
+
+#include <softchain/data/prm_file.h>
+
+#include <Eigen/Dense>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace softchain::geometry
+{
+  struct Obstacle
+  {
+    std::string                          name;
+    std::shared_ptr<const RigidObstacle> body;
+    double                               friction = 0; // Coulomb coefficient
+    // The translation of the obstacle at the end of a load path (linear in
+    // the path parameter from its rest pose), m.
+    Eigen::Vector3d                      motion = Eigen::Vector3d::Zero();
+  };
+
+  struct ContactScene
+  {
+    std::vector<Obstacle> obstacles; // none: no contact
+    // Boundary groups that may touch: "all" (every boundary face but the
+    // clamped base) or names among tip, outer, cavity.
+    std::vector<std::string> surfaces{"all"};
+    // The penalty per quadrature point, epsilon = factor E / h (E the
+    // element's Young's modulus, h its face size): the penetration is then
+    // t_N h / (factor E) of h.
+    double penalty_factor = 100;
+    // A converged state whose deepest penetration exceeds this fraction of
+    // the local face size takes augmented-Lagrangian (Uzawa) updates.
+    double penetration_tolerance = 0.01;
+    unsigned int max_augmentations = 10;
+
+    bool empty() const { return obstacles.empty(); }
+
+    // Reads the subsection "Contact" (absent: no obstacles). Throws
+    // InputError naming file, line and parameter.
+    static ContactScene read(const data::PrmFile &file);
+  };
+} // namespace softchain::geometry

@@ -1,0 +1,96 @@
+#pragma once
+// RigidObstacle: a rigid body the finger may touch, described by the signed
+// distance of a point to its surface,
+//     g(x) = d(x - c),   n(x) = grad g,   H(x) = grad grad g,
+// in its rest pose shifted by a prescribed translation c. g > 0 is the gap
+// outside the obstacle, g < 0 the penetration inside it; n is the unit
+// outward normal at the closest surface point and H the curvature of the
+// level set (zero on flat parts). The FEM's contact (PenaltyContact) needs
+// g and n for its residual and H for its consistent tangent. The shapes are
+// analytic (Hart, "Sphere tracing", The Visual Computer 12, 1996, lists the
+// distance functions); no mesh of the obstacle is needed.
+#include <Eigen/Dense>
+
+#include <string>
+
+namespace softchain::geometry
+{
+  struct SignedDistance
+  {
+    double          gap;
+    Eigen::Vector3d normal;
+    Eigen::Matrix3d hessian;
+  };
+
+  class RigidObstacle
+  {
+  public:
+    virtual ~RigidObstacle() = default;
+    // At x, with the obstacle translated by `offset` from its rest pose.
+    SignedDistance distance(const Eigen::Vector3d &x,
+                            const Eigen::Vector3d &offset = Eigen::Vector3d::Zero()) const
+    {
+      return distance_at_rest(x - offset);
+    }
+    virtual SignedDistance distance_at_rest(const Eigen::Vector3d &x) const = 0;
+    // "plane", "sphere", "cylinder" or "box".
+    virtual std::string shape() const = 0;
+  };
+
+  // The half-space below a plane: g = (x - p) . n, n the plane's unit normal
+  // pointing out of the obstacle.
+  class PlaneObstacle : public RigidObstacle
+  {
+  public:
+    PlaneObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &normal);
+    SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    std::string    shape() const override { return "plane"; }
+
+  private:
+    Eigen::Vector3d point, normal;
+  };
+
+  // g = |x - c| - R, n = (x - c) / |x - c|, H = (I - n n^T) / |x - c|.
+  class SphereObstacle : public RigidObstacle
+  {
+  public:
+    SphereObstacle(const Eigen::Vector3d &center, double radius);
+    SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    std::string    shape() const override { return "sphere"; }
+
+  private:
+    Eigen::Vector3d center;
+    double          radius;
+  };
+
+  // An infinite circular cylinder about the axis through `point` along the
+  // unit `axis`: with w the part of x - point normal to the axis,
+  // g = |w| - R, n = w / |w|, H = (I - a a^T - n n^T) / |w|.
+  class CylinderObstacle : public RigidObstacle
+  {
+  public:
+    CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis, double radius);
+    SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    std::string    shape() const override { return "cylinder"; }
+
+  private:
+    Eigen::Vector3d point, axis;
+    double          radius;
+  };
+
+  // A box with the given center and half sizes along the coordinate axes.
+  // Outside, with q the closest point (x clamped to the box) and o_i = 1 for
+  // the components clamped: g = |x - q|, n = (x - q) / g,
+  // H = (diag(o) - n n^T) / g (flat against a face, a cylinder's about an
+  // edge, a sphere's about a corner). Inside, the nearest face's plane.
+  class BoxObstacle : public RigidObstacle
+  {
+  public:
+    BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes);
+    SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    std::string    shape() const override { return "box"; }
+
+  private:
+    Eigen::Vector3d center, half_sizes;
+  };
+} // namespace softchain::geometry

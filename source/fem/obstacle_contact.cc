@@ -1,0 +1,270 @@
+#include <softchain/data/input_error.h>
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/obstacle_contact.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace softchain::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    Eigen::Vector3d eigen(const Point<3> &x) { return {x[0], x[1], x[2]}; }
+  } // namespace
+
+  ObstacleContact::ObstacleContact(const FiniteElementSpace &space, const geometry::ContactScene &scene,
+                                   const std::vector<double> &youngs_modulus)
+    : space(space)
+    , scene(scene)
+    , node_dofs(node_dof_table(*space.fe))
+  {
+    if (scene.empty())
+      return;
+    FEFaceValues<3> fe_face(*space.mapping, *space.fe, space.face_quadrature,
+                            update_values | update_JxW_values | update_quadrature_points);
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto face : cell->face_indices())
+          if (cell->face(face)->at_boundary() && touches(cell->face(face)->boundary_id()))
+            {
+              fe_face.reinit(cell, face);
+              add_face(fe_face, cell, youngs_modulus.at(cell->material_id()));
+            }
+    lambda.assign(points.size() * scene.obstacles.size(), 0.0);
+  }
+
+  // "all": every boundary face but the clamped base and the symmetry planes.
+  bool ObstacleContact::touches(const types::boundary_id id) const
+  {
+    for (const auto &s : scene.surfaces)
+      if ((s == "all" && id != boundary::base && id != boundary::fixed_x && id != boundary::fixed_y &&
+           id != boundary::fixed_z) ||
+          (s == "tip" && id == boundary::tip) || (s == "outer" && id == boundary::other) ||
+          (s == "cavity" && id == boundary::cavity))
+        return true;
+    return false;
+  }
+
+  // The face's points and the values of the nodes on it (a node off the
+  // face has phi = 0 there, up to round-off: kept where |phi| > 1e-10).
+  void ObstacleContact::add_face(const FEFaceValues<3> &fe_face,
+                                 const DoFHandler<3>::active_cell_iterator &cell,
+                                 const double youngs_modulus)
+  {
+    const unsigned int n_q = fe_face.n_quadrature_points;
+    ContactFace        face{cell, {}, points.size(), values.size()};
+    double             area = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      area += fe_face.JxW(q);
+    const double h = std::sqrt(area);
+    for (unsigned int q = 0; q < n_q; ++q)
+      points.push_back({fe_face.quadrature_point(q), fe_face.JxW(q), h,
+                        scene.penalty_factor * youngs_modulus / h});
+    for (unsigned int a = 0; a < node_dofs.size(); ++a)
+      for (unsigned int q = 0; q < n_q; ++q)
+        if (std::abs(fe_face.shape_value(node_dofs[a][0], q)) > 1e-10)
+          {
+            face.nodes.push_back(a);
+            break;
+          }
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (const unsigned int a : face.nodes)
+        values.push_back(fe_face.shape_value(node_dofs[a][0], q));
+    faces.push_back(std::move(face));
+  }
+
+  template <typename FaceStart, typename AtPoint>
+  void ObstacleContact::for_each_point(const TrilinosWrappers::MPI::Vector &u, FaceStart g, AtPoint f) const
+  {
+    std::vector<types::global_dof_index> dofs(space.fe->n_dofs_per_cell());
+    const unsigned int                   n_q = space.face_quadrature.size();
+    for (const ContactFace &face : faces)
+      {
+        face.cell->get_dof_indices(dofs);
+        g(face, dofs);
+        const std::size_t n = face.nodes.size();
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const std::size_t point = face.first_point + q;
+            Point<3>          x     = points[point].X;
+            for (std::size_t b = 0; b < n; ++b)
+              for (unsigned int c = 0; c < 3; ++c)
+                x[c] += values[face.first_value + q * n + b] * u(dofs[node_dofs[face.nodes[b]][c]]);
+            f(face, q, point, x);
+          }
+      }
+  }
+
+  ObstacleContact::PointContact ObstacleContact::contact(const std::size_t point, const unsigned int k,
+                                                         const Point<3> &x, const double motion) const
+  {
+    const auto  &o = scene.obstacles[k];
+    PointContact c{o.body->distance(eigen(x), motion * o.motion), 0.0};
+    c.pressure = std::max(0.0, lambda[point * scene.obstacles.size() + k] - points[point].epsilon * c.distance.gap);
+    return c;
+  }
+
+  void ObstacleContact::assemble(const TrilinosWrappers::MPI::Vector &u, const double motion,
+                                 const AffineConstraints<double> &constraints,
+                                 TrilinosWrappers::SparseMatrix *matrix,
+                                 TrilinosWrappers::MPI::Vector  &rhs) const
+  {
+    std::vector<types::global_dof_index>        dofs; // the face nodes' DoFs
+    FullMatrix<double>                          K;
+    Vector<double>                              f;
+    bool                                        touched = false;
+    const auto flush = [&]() {
+      if (!touched)
+        return;
+      if (matrix)
+        constraints.distribute_local_to_global(K, f, dofs, *matrix, rhs);
+      else
+        constraints.distribute_local_to_global(f, dofs, rhs);
+    };
+    const auto face_start = [&](const ContactFace &face, const std::vector<types::global_dof_index> &d) {
+      flush();
+      touched = false;
+      const std::size_t n = 3 * face.nodes.size();
+      dofs.resize(n);
+      for (std::size_t b = 0; b < face.nodes.size(); ++b)
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs[3 * b + c] = d[node_dofs[face.nodes[b]][c]];
+      f.reinit(n);
+      if (matrix)
+        K.reinit(n, n);
+    };
+    const auto at_point = [&](const ContactFace &face, const unsigned int q, const std::size_t point,
+                              const Point<3> &x) {
+      const std::size_t n   = face.nodes.size();
+      const double     *phi = &values[face.first_value + q * n];
+      const double      dA  = points[point].dA;
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        {
+          const PointContact c = contact(point, k, x, motion);
+          if (c.pressure <= 0)
+            continue;
+          touched                 = true;
+          const Eigen::Vector3d t = c.pressure * c.distance.normal;
+          // -d(t_N n)/dx = epsilon n n^T - t_N H (t_N > 0).
+          const Eigen::Matrix3d D = points[point].epsilon * c.distance.normal * c.distance.normal.transpose() -
+                                    c.pressure * c.distance.hessian;
+          for (std::size_t a = 0; a < n; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                f(3 * a + i) += phi[a] * t[i] * dA;
+                if (matrix)
+                  for (std::size_t b = 0; b < n; ++b)
+                    for (unsigned int j = 0; j < 3; ++j)
+                      K(3 * a + i, 3 * b + j) += phi[a] * phi[b] * D(i, j) * dA;
+              }
+        }
+    };
+    for_each_point(u, face_start, at_point);
+    flush();
+  }
+
+  double ObstacleContact::deepest_penetration(const TrilinosWrappers::MPI::Vector &u, const double motion) const
+  {
+    double deepest = 0;
+    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
+                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
+                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+                       deepest = std::max(deepest, -contact(point, k, x, motion).distance.gap / points[point].h);
+                   });
+    return Utilities::MPI::max(deepest, space.communicator);
+  }
+
+  bool ObstacleContact::augment(const TrilinosWrappers::MPI::Vector &u, const double motion)
+  {
+    if (deepest_penetration(u, motion) <= scene.penetration_tolerance)
+      return false;
+    std::vector<double> updated(lambda.size());
+    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
+                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
+                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+                       updated[point * scene.obstacles.size() + k] = contact(point, k, x, motion).pressure;
+                   });
+    lambda = std::move(updated);
+    return true;
+  }
+
+  void ObstacleContact::reset_multipliers()
+  {
+    std::fill(lambda.begin(), lambda.end(), 0.0);
+  }
+
+  std::vector<ObstacleContact::Wrench> ObstacleContact::obstacle_wrenches(const TrilinosWrappers::MPI::Vector &u,
+                                                                          const double motion) const
+  {
+    std::vector<Wrench> w(scene.obstacles.size());
+    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
+                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
+                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+                       {
+                         const PointContact c = contact(point, k, x, motion);
+                         Tensor<1, 3>       on_obstacle;
+                         for (unsigned int i = 0; i < 3; ++i)
+                           on_obstacle[i] = -c.pressure * c.distance.normal[i] * points[point].dA;
+                         w[k].force += on_obstacle;
+                         w[k].moment += cross_product_3d(Tensor<1, 3>(x), on_obstacle);
+                       }
+                   });
+    for (auto &wrench : w)
+      {
+        wrench.force  = Utilities::MPI::sum(wrench.force, space.communicator);
+        wrench.moment = Utilities::MPI::sum(wrench.moment, space.communicator);
+      }
+    return w;
+  }
+
+  std::vector<ObstacleContact::PointState> ObstacleContact::point_states(const TrilinosWrappers::MPI::Vector &u,
+                                                                         const double motion) const
+  {
+    std::vector<PointState> states;
+    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
+                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
+                     PointState s{points[point].X, std::numeric_limits<double>::infinity(), 0.0, 0};
+                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+                       {
+                         const PointContact c = contact(point, k, x, motion);
+                         s.pressure += c.pressure;
+                         if (c.distance.gap < s.gap)
+                           {
+                             s.gap      = c.distance.gap;
+                             s.obstacle = k;
+                           }
+                       }
+                     states.push_back(s);
+                   });
+    return states;
+  }
+
+  // An obstacle that already cuts into the body at rest would throw it out
+  // with the full penalty force in the first step: refused as input.
+  void ObstacleContact::check_rest_state() const
+  {
+    std::vector<double> deepest(scene.obstacles.size(), 0.0);
+    for (std::size_t point = 0; point < points.size(); ++point)
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        deepest[k] = std::max(deepest[k], -scene.obstacles[k].body->distance(eigen(points[point].X)).gap);
+    for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+      {
+        const double d = Utilities::MPI::max(deepest[k], space.communicator);
+        if (d > 0)
+          {
+            std::ostringstream why;
+            why << "parameter 'Contact/" << scene.obstacles[k].name << "': the " << scene.obstacles[k].body->shape()
+                << " intersects the finger at rest (it reaches " << d
+                << " m into the body); place it outside and bring it in with Motion";
+            throw data::InputError(why.str());
+          }
+      }
+  }
+} // namespace softchain::fem

@@ -1,0 +1,109 @@
+#include <softchain/geometry/rigid_obstacle.h>
+
+#include <softchain/data/input_error.h>
+
+#include <cmath>
+
+namespace softchain::geometry
+{
+  namespace
+  {
+    Eigen::Vector3d unit(const Eigen::Vector3d &v, const std::string &what)
+    {
+      if (!(v.norm() > 0))
+        throw data::InputError(what + " must be a nonzero vector");
+      return v.normalized();
+    }
+
+    void check_positive(const double value, const std::string &what)
+    {
+      if (!(value > 0))
+        throw data::InputError(what + " must be > 0");
+    }
+
+    // The distance's derivatives where it is |w| - R about a centre line or
+    // point: n = w / |w| and H = (P - n n^T) / |w|, P the projection onto
+    // the directions w may take. At |w| = 0 (on the axis or at the centre)
+    // the normal is undefined; a fixed direction keeps g finite there.
+    SignedDistance radial(const Eigen::Vector3d &w, const double radius, const Eigen::Matrix3d &P)
+    {
+      const double r = w.norm();
+      if (r == 0)
+        return {-radius, P.col(0).normalized(), Eigen::Matrix3d::Zero()};
+      const Eigen::Vector3d n = w / r;
+      return {r - radius, n, (P - n * n.transpose()) / r};
+    }
+  } // namespace
+
+  PlaneObstacle::PlaneObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &normal)
+    : point(point)
+    , normal(unit(normal, "a plane's normal"))
+  {}
+
+  SignedDistance PlaneObstacle::distance_at_rest(const Eigen::Vector3d &x) const
+  {
+    return {(x - point).dot(normal), normal, Eigen::Matrix3d::Zero()};
+  }
+
+  SphereObstacle::SphereObstacle(const Eigen::Vector3d &center, const double radius)
+    : center(center)
+    , radius(radius)
+  {
+    check_positive(radius, "a sphere's radius");
+  }
+
+  SignedDistance SphereObstacle::distance_at_rest(const Eigen::Vector3d &x) const
+  {
+    return radial(x - center, radius, Eigen::Matrix3d::Identity());
+  }
+
+  CylinderObstacle::CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis,
+                                     const double radius)
+    : point(point)
+    , axis(unit(axis, "a cylinder's axis"))
+    , radius(radius)
+  {
+    check_positive(radius, "a cylinder's radius");
+  }
+
+  SignedDistance CylinderObstacle::distance_at_rest(const Eigen::Vector3d &x) const
+  {
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - axis * axis.transpose();
+    return radial(P * (x - point), radius, P);
+  }
+
+  BoxObstacle::BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes)
+    : center(center)
+    , half_sizes(half_sizes)
+  {
+    for (int i = 0; i < 3; ++i)
+      check_positive(half_sizes[i], "a box's half sizes");
+  }
+
+  SignedDistance BoxObstacle::distance_at_rest(const Eigen::Vector3d &x) const
+  {
+    const Eigen::Vector3d y = x - center;
+    const Eigen::Vector3d q = y.cwiseMax(-half_sizes).cwiseMin(half_sizes);
+    const Eigen::Vector3d d = y - q;
+    if (d.norm() > 0)
+      {
+        Eigen::Matrix3d clamped = Eigen::Matrix3d::Zero();
+        for (int i = 0; i < 3; ++i)
+          if (d[i] != 0)
+            clamped(i, i) = 1;
+        return radial(d, 0.0, clamped);
+      }
+    // Inside: the face the point is closest to.
+    int    k     = 0;
+    double depth = half_sizes[0] - std::abs(y[0]);
+    for (int i = 1; i < 3; ++i)
+      if (half_sizes[i] - std::abs(y[i]) < depth)
+        {
+          k     = i;
+          depth = half_sizes[i] - std::abs(y[i]);
+        }
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    n[k]              = y[k] < 0 ? -1 : 1;
+    return {-depth, n, Eigen::Matrix3d::Zero()};
+  }
+} // namespace softchain::geometry

@@ -1,0 +1,217 @@
+// Contact with rigid obstacles (ObstacleContact) against what no one here
+// wrote:
+//  - its tangent against finite differences of its residual, on every
+//    obstacle shape and on both branches (points open and pressed);
+//  - the frictionless patch test: a block pressed by a rigid plane is in
+//    homogeneous uniaxial stress, so the contact pressure is uniform and
+//    the force is the closed-form neo-Hookean one at the block's stretch;
+//  - the augmented Lagrangian: with a soft penalty, Uzawa's updates take
+//    the penetration below its tolerance and the force to the one of the
+//    prescribed compression.
+#include "fem_test_tools.h"
+
+#include <softchain/fem/boundary_ids.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace dealii;
+using namespace softchain;
+using namespace softchain::fem;
+
+namespace
+{
+  std::string obstacle(const std::string &name, const std::string &settings)
+  {
+    return "  subsection " + name + "\n" + settings + "  end\n";
+  }
+
+  std::string contact_section(const std::string &obstacles, const std::string &law = "")
+  {
+    return "subsection Contact\n" + law + obstacles + "end\n";
+  }
+
+  // |K v - FD| / |K v| at a deformed state of the demo bender (Q2, 4 cells,
+  // [0, 0.08] x [0, 0.012] x [0, 0.018]) whose bottom face y = 0 the
+  // obstacle cuts, so that some contact points are pressed and others open
+  // (both counted).
+  double contact_tangent_error(const std::string &contact, unsigned int &pressed, unsigned int &open)
+  {
+    test::SolverFixture f(test::parameters_from_text(
+      "contact_tangent", test::bender_prm("Q2", 4, "subsection Springs\n  set Generate for bender = false\nend\n" +
+                                                     contact)));
+    QuasiStaticSolver &solver = *f.solver;
+    const auto         u      = test::smooth_displacement(solver, 2e-3, 0.05, 1);
+    const auto         v      = test::smooth_displacement(solver, 1.0, 1.0, 2);
+    solver.set_displacement(u);
+    pressed = open = 0;
+    for (const auto &p : solver.obstacle_contact()->point_states(solver.displacement(), 0.0))
+      ++(p.pressure > 0 ? pressed : open);
+    const LoadState load;
+    REQUIRE(solver.assemble(load, true));
+    TrilinosWrappers::MPI::Vector Kv(v);
+    solver.tangent().vmult(Kv, v);
+    // Central differences as in tangent_test.cc: step h = 1e-8 along a v of
+    // unit-size entries, truncation and round-off ~1e-9 relative; no
+    // contact point lies within 1e-8 m of its kink (g = 0) for this field.
+    const double                  h = 1e-8;
+    TrilinosWrappers::MPI::Vector plus(u), minus(u);
+    plus.add(h, v);
+    minus.add(-h, v);
+    solver.set_displacement(plus);
+    REQUIRE(solver.assemble(load, false));
+    TrilinosWrappers::MPI::Vector fd(solver.negative_residual());
+    solver.set_displacement(minus);
+    REQUIRE(solver.assemble(load, false));
+    fd -= solver.negative_residual();
+    fd *= -1.0 / (2 * h);
+    solver.space().fixed_dofs.set_zero(fd);
+    solver.space().fixed_dofs.set_zero(Kv);
+    fd -= Kv;
+    return fd.l2_norm() / Kv.l2_norm();
+  }
+
+  // The patch test's block: edge `edge`, 2^3 cells with interior vertices
+  // moved at random (its faces stay flat), on the symmetry planes x = 0,
+  // y = 0, z = 0; the top z = edge free to meet the plane.
+  constexpr double edge = 0.01;
+  void symmetric_block(Triangulation<3> &mesh)
+  {
+    GridGenerator::subdivided_hyper_rectangle(mesh, {2, 2, 2}, Point<3>(), Point<3>(edge, edge, edge));
+    GridTools::distort_random(0.2, mesh, /*keep_boundary*/ true, /*seed*/ 3);
+    for (const auto &face : mesh.active_face_iterators())
+      if (face->at_boundary())
+        {
+          const Point<3> c = face->center();
+          face->set_boundary_id(c[0] < 1e-9 ? boundary::fixed_x :
+                                c[1] < 1e-9 ? boundary::fixed_y :
+                                c[2] < 1e-9 ? boundary::fixed_z :
+                                              boundary::other);
+        }
+  }
+
+  // The log neo-Hookean W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2 in
+  // uniaxial stress with axial stretch a: the lateral stretch b solves
+  // mu (b^2 - 1) + lambda ln(a b^2) = 0 (zero lateral Cauchy stress), and
+  // the axial force on the reference area A0 is
+  //     N = (mu (a^2 - 1) + lambda ln J) / J * b^2 A0,   J = a b^2.
+  double uniaxial_force(const double E, const double nu, const double a, const double A0)
+  {
+    const double mu = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    double       b  = 1;
+    for (int k = 0; k < 50; ++k) // Newton on b
+      b -= (mu * (b * b - 1) + lambda * std::log(a * b * b)) / (2 * mu * b + 2 * lambda / b);
+    const double J = a * b * b;
+    return (mu * (a * a - 1) + lambda * std::log(J)) / J * b * b * A0;
+  }
+
+  const std::string pressing_plane =
+    obstacle("press", "    set Shape = plane\n    set Position = 0, 0, 0.01\n    set Normal = 0, 0, -1\n"
+                      "    set Motion = 0, 0, -0.001\n");
+} // namespace
+
+TEST_CASE("the contact tangent matches finite differences on every obstacle shape", "[fem][contact][tangent]")
+{
+  const std::vector<std::pair<std::string, std::string>> shapes{
+    {"plane", "    set Shape = plane\n    set Position = 0, 0.0002, 0\n    set Normal = 0, 1, 0\n"},
+    {"sphere", "    set Shape = sphere\n    set Position = 0.06, -0.0095, 0.009\n    set Radius = 0.01\n"},
+    {"cylinder", "    set Shape = cylinder\n    set Position = 0.05, -0.0096, 0\n    set Axis = 0, 0, 1\n"
+                 "    set Radius = 0.01\n"},
+    {"box", "    set Shape = box\n    set Position = 0.07, -0.0098, 0.009\n"
+            "    set Half sizes = 0.005, 0.01, 0.005\n"}};
+  for (const auto &[shape, settings] : shapes)
+    {
+      INFO(shape);
+      unsigned int pressed = 0, open = 0;
+      const double error   = contact_tangent_error(contact_section(obstacle("obstacle", settings)), pressed, open);
+      CHECK(pressed > 0);
+      CHECK(open > 0);
+      CHECK(error < 1e-6);
+    }
+}
+
+TEST_CASE("a block pressed by a rigid plane: uniform contact pressure, the closed-form force",
+          "[fem][contact][patch]")
+{
+  const double     E = 2.6e5, nu = 0.3;
+  Triangulation<3> mesh;
+  symmetric_block(mesh);
+  test::MeshSolverFixture f(
+    test::parameters_from_text("contact_patch",
+                               test::solid_prm("Q2", "log", E, nu,
+                                               "subsection Solver\n  set Residual tolerance = 1e-10\n"
+                                               "  set Displacement tolerance = 1e-10\nend\n" +
+                                                 contact_section(pressing_plane))),
+    mesh);
+  QuasiStaticSolver &solver = *f.solver;
+  LoadState          pressed;
+  pressed.obstacle_motion = 1;
+  const auto result       = solver.solve(pressed);
+  REQUIRE(result.converged);
+
+  const auto   states = solver.obstacle_contact()->point_states(solver.displacement(), 1.0);
+  double       low = 1e300, high = 0;
+  unsigned int n = 0;
+  for (const auto &p : states)
+    if (p.pressure > 0)
+      {
+        low  = std::min(low, p.pressure);
+        high = std::max(high, p.pressure);
+        ++n;
+        CHECK(std::abs(p.reference[2] - edge) < 1e-12); // only the top touches
+      }
+  // Every top point (2 x 2 faces, 3 x 3 points each) is pressed, all alike:
+  // a homogeneous state is exact in the element space, so the spread is
+  // Newton's tolerance (1e-10) at most.
+  CHECK(n == 36);
+  CHECK((high - low) / high < 1e-8);
+
+  // The force the plane receives against the closed form at the stretch the
+  // top reached (a little short of the plane's, by the penalty's penetration).
+  const double a     = 1 + test::displacement_at(solver, Point<3>(edge, edge, edge))[2] / edge;
+  const auto   force = solver.obstacle_contact()->obstacle_wrenches(solver.displacement(), 1.0)[0].force;
+  CHECK(a > 0.9);
+  CHECK(a < 0.91);
+  CHECK(force[2] == Approx(-uniaxial_force(E, nu, a, edge * edge)).epsilon(1e-7));
+  CHECK(std::abs(force[0]) < 1e-9 * force[2]);
+  CHECK(std::abs(force[1]) < 1e-9 * force[2]);
+}
+
+TEST_CASE("Uzawa's updates take a soft penalty's penetration below its tolerance",
+          "[fem][contact][augmented]")
+{
+  // Penalty factor 1: the penalty alone leaves a penetration of t_N / E of
+  // the face size, several per cent here (t_N ~ 0.05 E); the tolerance asks
+  // for 1e-4. Each update shrinks it by about (E/L) / (E/L + E/h) = 1/3
+  // (the block's stiffness per area against the penalty's).
+  const double     E = 2.6e5, nu = 0.3;
+  Triangulation<3> mesh;
+  symmetric_block(mesh);
+  test::MeshSolverFixture f(
+    test::parameters_from_text(
+      "contact_uzawa",
+      test::solid_prm("Q2", "log", E, nu,
+                      "subsection Solver\n  set Residual tolerance = 1e-10\n"
+                      "  set Displacement tolerance = 1e-10\nend\n" +
+                        contact_section(pressing_plane, "  set Penalty factor = 1\n"
+                                                        "  set Penetration tolerance = 1e-4\n"
+                                                        "  set Maximum augmentations = 30\n"))),
+    mesh);
+  QuasiStaticSolver &solver = *f.solver;
+  LoadState          pressed;
+  pressed.obstacle_motion = 1;
+  REQUIRE(solver.solve(pressed).converged);
+  const double penetration = solver.obstacle_contact()->deepest_penetration(solver.displacement(), 1.0);
+  CHECK(penetration <= 1e-4);
+  // The top at the plane to within that penetration (1e-4 of h = 5e-3 m is
+  // 5e-7 m, 5e-5 of the edge): the force of a 10 % compression.
+  const double a     = 1 + test::displacement_at(solver, Point<3>(edge, edge, edge))[2] / edge;
+  CHECK(a == Approx(0.9).margin(5.1e-5));
+  const auto force = solver.obstacle_contact()->obstacle_wrenches(solver.displacement(), 1.0)[0].force;
+  CHECK(force[2] == Approx(-uniaxial_force(E, nu, 0.9, edge * edge)).epsilon(1e-3));
+}
