@@ -30,19 +30,32 @@ namespace softchain::app
     // machine-readable result that tests compare between runs.
     void write_summary(const std::string &directory, const QuasiStaticSolver::Result &result,
                        const Tensor<1, 3> &tip, const double cavity_volume,
-                       const BaseReaction::Wrench &base, const double cavity_pressure)
+                       const BaseReaction::Wrench &base, const double cavity_pressure,
+                       const std::vector<std::string>            &obstacle_names,
+                       const std::vector<ObstacleContact::Wrench> &obstacles)
     {
-      data::CsvTable summary({"converged", "load_factor", "newton_iterations", "load_steps",
-                              "tip_displacement_x", "tip_displacement_y", "tip_displacement_z",
-                              "cavity_volume", "base_force_x", "base_force_y", "base_force_z",
-                              "base_moment_x", "base_moment_y", "base_moment_z",
-                              "cavity_pressure"});
-      summary.add_row(std::vector<double>{double(result.converged), result.load_factor_reached,
-                                          double(result.newton_iterations),
-                                          double(result.load_steps), tip[0], tip[1], tip[2],
-                                          cavity_volume, base.force[0], base.force[1],
-                                          base.force[2], base.moment[0], base.moment[1],
-                                          base.moment[2], cavity_pressure});
+      std::vector<std::string> columns{"converged", "load_factor", "newton_iterations", "load_steps",
+                                       "tip_displacement_x", "tip_displacement_y", "tip_displacement_z",
+                                       "cavity_volume", "base_force_x", "base_force_y", "base_force_z",
+                                       "base_moment_x", "base_moment_y", "base_moment_z",
+                                       "cavity_pressure"};
+      std::vector<double> row{double(result.converged), result.load_factor_reached,
+                              double(result.newton_iterations),
+                              double(result.load_steps), tip[0], tip[1], tip[2],
+                              cavity_volume, base.force[0], base.force[1],
+                              base.force[2], base.moment[0], base.moment[1],
+                              base.moment[2], cavity_pressure};
+      // Per obstacle: the force and the moment about the origin it receives.
+      for (std::size_t k = 0; k < obstacles.size(); ++k)
+        for (const auto &[quantity, value] : {std::pair{"force", obstacles[k].force},
+                                              std::pair{"moment", obstacles[k].moment}})
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              columns.push_back(obstacle_names[k] + "_" + quantity + "_" + "xyz"[i]);
+              row.push_back(value[i]);
+            }
+      data::CsvTable summary(columns);
+      summary.add_row(row);
       summary.write(directory + "/solve_summary.csv");
     }
 
@@ -81,6 +94,7 @@ namespace softchain::app
                                           std::ostream &out)
     {
       LoadState target;
+      target.obstacle_motion = 1.0;
       target.pressure       = prm.loads.pressure;
       target.point_loads    = prm.loads.point_loads;
       target.gravity_factor = prm.loads.gravity ? 1.0 : 0.0;
@@ -121,6 +135,8 @@ namespace softchain::app
         << " cells, " << solver.space().dof_handler.n_dofs() << " DoFs, "
         << Utilities::MPI::n_mpi_processes(comm) << " rank(s)\n";
 
+    if (solver.obstacle_contact())
+      solver.obstacle_contact()->check_rest_state(prm.file);
     const bool by_volume = prm.loads.control == LoadParameters::Control::volume;
     if ((prm.loads.pressure != 0.0 || by_volume) && !solver.pressure_load().has_cavity())
       throw data::InputError(prm.file + ": parameter '" + (by_volume ? "Control" : "Pressure") +
@@ -147,9 +163,24 @@ namespace softchain::app
     const BaseReaction::Wrench wrench = base.wrench(solver.support_forces());
     out << "base wrench (on the support, about the base centroid " << base.centroid()
         << "): force [N] " << wrench.force << ", moment [N m] " << wrench.moment << '\n';
+    std::vector<std::string>             obstacle_names;
+    std::vector<ObstacleContact::Wrench> obstacles;
+    if (const ObstacleContact *contact = solver.obstacle_contact())
+      {
+        obstacles = contact->obstacle_wrenches(solver.displacement(), solver.load_state().obstacle_motion);
+        for (std::size_t k = 0; k < obstacles.size(); ++k)
+          {
+            obstacle_names.push_back(prm.contact.obstacles[k].name);
+            out << "obstacle " << obstacle_names[k] << " receives force [N] " << obstacles[k].force
+                << ", moment about the origin [N m] " << obstacles[k].moment << '\n';
+          }
+        out << "deepest contact penetration: "
+            << contact->deepest_penetration(solver.displacement(), solver.load_state().obstacle_motion)
+            << " of the local face size\n";
+      }
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       write_summary(prm.design.output_directory, result, tip, cavity_volume, wrench,
-                    cavity_pressure);
+                    cavity_pressure, obstacle_names, obstacles);
     if (prm.output.write_vtu)
       {
         TimerOutput::Scope timer_section(solver.timer(), "output");

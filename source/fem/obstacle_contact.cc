@@ -248,7 +248,7 @@ namespace softchain::fem
 
   // An obstacle that already cuts into the body at rest would throw it out
   // with the full penalty force in the first step: refused as input.
-  void ObstacleContact::check_rest_state() const
+  void ObstacleContact::check_rest_state(const std::string &file) const
   {
     std::vector<double> deepest(scene.obstacles.size(), 0.0);
     for (std::size_t point = 0; point < points.size(); ++point)
@@ -260,7 +260,7 @@ namespace softchain::fem
         if (d > 0)
           {
             std::ostringstream why;
-            why << "parameter 'Contact/" << scene.obstacles[k].name << "': the " << scene.obstacles[k].body->shape()
+            why << file << ": subsection 'Contact/" << scene.obstacles[k].name << "': the " << scene.obstacles[k].body->shape()
                 << " intersects the finger at rest (it reaches " << d
                 << " m into the body); place it outside and bring it in with Motion";
             throw data::InputError(why.str());

@@ -435,6 +435,7 @@ namespace softchain::fem
                  [&](const data::PrmSection &s) { p.output.parse(s); });
     if (p.mesh.source == MeshParameters::Source::finger_design)
       p.finger_design = geometry::FingerDesign::read(file);
+    p.contact = geometry::ContactScene::read(file);
     check_mesh_files(p);
     return p;
   }

@@ -102,6 +102,13 @@ namespace softchain::fem
                                                            *fe_space->mapping),
                                                          prm.springs.axial_rigidity,
                                                          prm.springs.smoothing_strain);
+    if (!prm.contact.empty())
+      {
+        std::vector<double> youngs_modulus;
+        for (const auto &name : material_names)
+          youngs_modulus.push_back(prm.materials.regions.at(name).youngs_modulus);
+        contact = std::make_unique<ObstacleContact>(*fe_space, prm.contact, youngs_modulus);
+      }
     setup_system();
   }
 
@@ -282,6 +289,11 @@ namespace softchain::fem
       assemble_point_loads(state.point_loads, constraints);
     if (state.tip_traction.norm() > 0)
       tip_traction->assemble(state.tip_traction, constraints, rhs);
+    // The obstacles' contact forces count among the external loads (their
+    // norm scales the convergence test where they are the only load).
+    if (contact)
+      contact->assemble(u_ghosted, state.obstacle_motion, constraints,
+                        with_matrix ? &matrix : nullptr, rhs);
     rhs.compress(VectorOperation::add);
     f_ext_norm = rhs.l2_norm();
 
@@ -513,6 +525,7 @@ namespace softchain::fem
       , target(target)
       , predictor(solver.u_owned)
       , links_converged(solver.link_states())
+      , multipliers_converged(solver.contact ? solver.contact->multipliers() : std::vector<double>())
       , pv{{start.pressure, solver.pressure->cavity_volume(solver.u_ghosted)}}
     {}
 
@@ -529,7 +542,20 @@ namespace softchain::fem
           solver.u_ghosted = solver.u_owned;
         }
       solver.aim_newton_at(state);
+      augmentations = 0;
       return solver;
+    }
+
+    // Uzawa's update of the contact pressures where a converged state
+    // penetrates deeper than Contact/Penetration tolerance, at most
+    // Contact/Maximum augmentations times per step.
+    bool augment() override
+    {
+      if (!solver.contact || augmentations == solver.prm.contact.max_augmentations ||
+          !solver.contact->augment(solver.u_ghosted, solver.newton_target.obstacle_motion))
+        return false;
+      ++augmentations;
+      return true;
     }
 
     void accept_step(const double s) override
@@ -537,10 +563,17 @@ namespace softchain::fem
       predictor.converged(s, solver.u_owned);
       solver.load     = solver.newton_target;
       links_converged = solver.link_states();
+      if (solver.contact)
+        multipliers_converged = solver.contact->multipliers();
       pv.emplace_back(solver.load.pressure, solver.pressure->cavity_volume(solver.u_ghosted));
     }
 
-    void reject_step() override { solver.restore(predictor.last(), links_converged); }
+    void reject_step() override
+    {
+      solver.restore(predictor.last(), links_converged);
+      if (solver.contact)
+        solver.contact->restore_multipliers(multipliers_converged);
+    }
 
     // (pressure, cavity volume) of the converged states, to tell a limit point.
     const std::vector<std::pair<double, double>> &pressure_volume() const { return pv; }
@@ -551,6 +584,8 @@ namespace softchain::fem
     const LoadState                        target;
     ContinuationPredictor                  predictor;
     std::vector<TensionOnlyLaw::State>     links_converged;
+    std::vector<double>                    multipliers_converged; // the contact's
+    unsigned int                           augmentations = 0;     // in this step
     std::vector<std::pair<double, double>> pv;
   };
 

@@ -72,8 +72,9 @@ namespace softchain::fem
     std::vector<Wrench> obstacle_wrenches(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
                                           double motion) const;
 
-    // Throws InputError naming the obstacle if it penetrates the body at rest.
-    void check_rest_state() const;
+    // Throws InputError naming `file` and the obstacle if it penetrates the
+    // body at rest.
+    void check_rest_state(const std::string &file) const;
 
     // The contact state at one point, for output.
     struct PointState

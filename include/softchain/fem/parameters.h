@@ -8,6 +8,7 @@
 #include <softchain/data/prm_file.h>
 #include <softchain/fem/element_type.h>
 #include <softchain/fem/hyperelastic_material.h>
+#include <softchain/geometry/contact_scene.h>
 #include <softchain/geometry/finger_design.h>
 
 #include <deal.II/base/point.h>
@@ -163,6 +164,7 @@ namespace softchain::fem
     // subsection "Finger design", parsed by the geometry module when
     // Mesh/Source = finger design.
     std::optional<geometry::FingerDesign> finger_design;
+    geometry::ContactScene                contact; // subsection Contact: no obstacles by default
     // The parsed values of the subsections that define the design
     // (data::defines_design), in canonical form: the .prm's part of the
     // design hash.

@@ -19,6 +19,7 @@
 #include <softchain/fem/load_path.h>
 #include <softchain/fem/load_state.h>
 #include <softchain/fem/newton_solver.h>
+#include <softchain/fem/obstacle_contact.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/prescribed_tip.h>
 #include <softchain/fem/serial_direct_solver.h>
@@ -154,6 +155,8 @@ namespace softchain::fem
     // tensions as Newton unknowns".
     bool   energy_line_search() const override { return !springs; }
     const FollowerPressure              &pressure_load() const { return *pressure; }
+    // The contact with the obstacles of subsection Contact (none: nullptr).
+    const ObstacleContact               *obstacle_contact() const { return contact.get(); }
     const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
     const HyperelasticMaterial &material(dealii::types::material_id id) const { return *materials.at(id); }
     // Deformed positions of `points` (reference, inside the body).
@@ -168,6 +171,7 @@ namespace softchain::fem
     std::unique_ptr<FollowerPressure>                   pressure;
     std::unique_ptr<DeadSurfaceTraction>                tip_traction;
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
+    std::unique_ptr<ObstacleContact>                    contact;
     dealii::TimerOutput                                         computing_timer;
     std::unique_ptr<SerialDirectSolver>                 serial_direct; // LDL^T or LU, one rank
     // The cells' places in `matrix` for fe_space->fixed_dofs on one rank.
