@@ -189,7 +189,7 @@ namespace softchain::fem
   // branch of equilibria than a load path from rest); the path from there
   // ramps the pressure from p_0 to p and the forces from zero. The
   // equilibrium is the same; the demo's sweep took 827 Newton iterations
-  // instead of 1341 (docs/results.md, "Force chains start inflated"). Rank 0
+  // instead of 1341 (docs/history.md, "Force chains start inflated"). Rank 0
   // holds every record and chooses; every rank gets the choice and the records.
   void SampleSweep::start_chains_from_inflations(const std::vector<std::size_t> &indices,
                                                  Records                        &known)

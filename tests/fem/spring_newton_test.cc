@@ -5,7 +5,7 @@
 // Methods for Linear and Nonlinear Equations, SIAM 1995, Thm. 5.1.2). Newton
 // on the law alone (the tension a function of the displacement) converged
 // linearly on this finger, the residual falling by a factor of about 4 per
-// iteration (docs/results.md, "Newton with the tension-only springs").
+// iteration (docs/history.md, "Newton with the tension-only springs").
 #include "fem_test_tools.h"
 
 #include <catch2/catch.hpp>

@@ -11,7 +11,7 @@
 // OPENBLAS_CORETYPE, read at load time: so a program that finds OpenBLAS
 // on Prescott on a CPU with AVX-512 (or AVX2 and FMA) sets it to SkylakeX
 // (or Haswell) and starts itself again. The P10 sample's linear solve went from
-// 12.6 to 8.0 s with SkylakeX (docs/results.md, "The BLAS kernel for this CPU").
+// 12.6 to 8.0 s with SkylakeX (docs/history.md, "The BLAS kernel for this CPU").
 //
 // A user's own OPENBLAS_CORETYPE is left alone, as is any other BLAS.
 

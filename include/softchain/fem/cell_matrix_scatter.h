@@ -7,7 +7,7 @@
 // matrix looks up every entry's column in its row (Epetra's binary search and
 // index maps) on every assembly: on P10's P2 tetrahedra that was as much CPU
 // time as the cell kernel, and it runs in the serial copier of the
-// WorkStream, where it limits the second thread (docs/results.md). For the
+// WorkStream, where it limits the second thread (docs/history.md). For the
 // constraints of a Newton update without a tip motion -- homogeneous
 // Dirichlet lines u_i = 0 only (clamped base, symmetry faces) -- the same
 // sums are formed here from stored places: a constrained row and column are

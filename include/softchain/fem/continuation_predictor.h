@@ -11,7 +11,7 @@
 // it would have predicted u_0 closer than the secant through u_1, u_2 did.
 // Measured on P10 from rest to 40 kPa (Q2 hexahedra, 5.5 mm): 58 Newton
 // iterations in 10 load steps against 73 in 15 with the secant alone
-// (docs/results.md, "A second-order predictor"). A scalar unknown of the
+// (docs/history.md, "A second-order predictor"). A scalar unknown of the
 // path (volume control's pressure) is carried along with u.
 #include <deal.II/lac/trilinos_vector.h>
 

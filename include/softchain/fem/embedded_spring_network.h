@@ -19,7 +19,7 @@
 // link takes its own Newton step in (t, g) inside t, g > 0. A link that is
 // taut at an iterate but slack at the solution then sheds its tension at
 // once, where Newton on the law t(eps(u)) alone halves its strain per
-// iteration (docs/results.md, "Link tensions as Newton unknowns").
+// iteration (docs/history.md, "Link tensions as Newton unknowns").
 #include <softchain/fem/embedded_points.h>
 #include <softchain/fem/spring_polyline.h>
 #include <softchain/fem/tension_only_law.h>

@@ -4,7 +4,7 @@
 // reach. Debian's OpenMPI then still loads its UCX transport, which probes
 // the machine's network devices while MPI starts: 0.2 s of the 0.84 s that
 // `softchain` took to start and stop on this project's machines (median of
-// five, docs/results.md, "Starting a process"). Such a process has no use for a network
+// five, docs/history.md, "Starting a process"). Such a process has no use for a network
 // transport, so it asks OpenMPI for its ob1 layer (shared memory and self)
 // instead, unless the user set a transport (OMPI_MCA_pml) of their own. A
 // process a launcher started keeps OpenMPI's choice: on a cluster that is

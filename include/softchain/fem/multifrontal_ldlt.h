@@ -19,7 +19,7 @@
 // stable state but indefinite in the first Newton iterations of a large load
 // step, past a limit point or while the finger buckles; LDL^T factorises
 // both alike, where a Cholesky factorisation would have to give up and hand
-// the tangent to an LU factorisation (docs/results.md).
+// the tangent to an LU factorisation (docs/history.md).
 //
 // The fill-reducing ordering (approximate minimum fill, MUMPS's AMF: the
 // fewest flops of MUMPS's orderings on P10's tangent) and the elimination

@@ -24,7 +24,7 @@
 // pivots need a search (a zero or tiny pivot in the ordering's sequence,
 // possible only where K is indefinite) is then factorised with threshold
 // pivoting. Each step is taken only where the one before does not meet the
-// bound (docs/results.md, "LDL^T without pivoting first" and "Factors in
+// bound (docs/history.md, "LDL^T without pivoting first" and "Factors in
 // single precision, Newton's error estimate").
 //
 // The tangent's sparsity pattern never changes during a solve, so the work

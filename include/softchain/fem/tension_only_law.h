@@ -78,7 +78,7 @@ namespace softchain::fem
     // the law at the linearised strain eps + d_eps instead: it stays inside
     // t, g > 0, as interior-point methods keep their iterates, and arrives
     // where its strain puts it rather than a fixed fraction of the way
-    // (docs/results.md, "Link tensions as Newton unknowns").
+    // (docs/history.md, "Link tensions as Newton unknowns").
     State increment(const State &s, double eps, double d_eps) const
     {
       const double r  = s.gap - s.tension + eps;
