@@ -37,19 +37,57 @@ namespace softchain::fem
               fe_face.reinit(cell, face);
               add_face(fe_face, cell, youngs_modulus.at(cell->material_id()));
             }
-    lambda.assign(points.size() * scene.obstacles.size(), 0.0);
+    check_surfaces();
+    reset();
+  }
+
+  // Each named boundary group must have faces in this mesh.
+  void ObstacleContact::check_surfaces() const
+  {
+    for (const auto &s : scene.surfaces)
+      {
+        unsigned long n = 0;
+        for (const auto &face : faces)
+          for (const auto f : face.cell->face_indices())
+            if (face.cell->face(f)->at_boundary() && in_group(s, face.cell->face(f)->boundary_id()))
+              ++n;
+        if (Utilities::MPI::sum(n, space.communicator) == 0)
+          throw data::InputError(scene.file + ": parameter 'Surfaces' in subsection 'Contact': the mesh "
+                                 "has no boundary faces in '" + s + "'");
+      }
+  }
+
+  // No multipliers; every anchor at its point at rest.
+  void ObstacleContact::reset()
+  {
+    const std::size_t n = points.size() * scene.obstacles.size();
+    state.lambda.assign(n, 0.0);
+    state.anchor.resize(n);
+    for (std::size_t point = 0; point < points.size(); ++point)
+      for (std::size_t k = 0; k < scene.obstacles.size(); ++k)
+        state.anchor[point * scene.obstacles.size() + k] = eigen(points[point].X);
+  }
+
+  bool ObstacleContact::has_friction() const
+  {
+    return std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
+                       [](const geometry::Obstacle &o) { return o.friction > 0; });
   }
 
   // "all": every boundary face but the clamped base and the symmetry planes.
   bool ObstacleContact::touches(const types::boundary_id id) const
   {
-    for (const auto &s : scene.surfaces)
-      if ((s == "all" && id != boundary::base && id != boundary::fixed_x && id != boundary::fixed_y &&
-           id != boundary::fixed_z) ||
-          (s == "tip" && id == boundary::tip) || (s == "outer" && id == boundary::other) ||
-          (s == "cavity" && id == boundary::cavity))
-        return true;
-    return false;
+    return std::any_of(scene.surfaces.begin(), scene.surfaces.end(),
+                       [id](const std::string &s) { return in_group(s, id); });
+  }
+
+  bool ObstacleContact::in_group(const std::string &group, const types::boundary_id id)
+  {
+    if (group == "all")
+      return id != boundary::base && id != boundary::fixed_x && id != boundary::fixed_y &&
+             id != boundary::fixed_z;
+    return (group == "tip" && id == boundary::tip) || (group == "outer" && id == boundary::other) ||
+           (group == "cavity" && id == boundary::cavity);
   }
 
   // The face's points and the values of the nodes on it (a node off the
@@ -102,12 +140,55 @@ namespace softchain::fem
       }
   }
 
+  template <typename AtPoint>
+  void ObstacleContact::for_each_point(const TrilinosWrappers::MPI::Vector &u, AtPoint at_point) const
+  {
+    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
+                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
+                     at_point(point, x);
+                   });
+  }
+
+  // The normal law, then the tangential return mapping (the header's
+  // equations).
   ObstacleContact::PointContact ObstacleContact::contact(const std::size_t point, const unsigned int k,
                                                          const Point<3> &x, const double motion) const
   {
-    const auto  &o = scene.obstacles[k];
-    PointContact c{o.body->distance(eigen(x), motion * o.motion), 0.0};
-    c.pressure = std::max(0.0, lambda[point * scene.obstacles.size() + k] - points[point].epsilon * c.distance.gap);
+    const auto       &o       = scene.obstacles[k];
+    const std::size_t index   = point * scene.obstacles.size() + k;
+    const double      epsilon = points[point].epsilon;
+    PointContact      c;
+    c.y          = eigen(x) - motion * o.motion;
+    c.distance   = o.body->distance_at_rest(c.y);
+    c.pressure   = std::max(0.0, state.lambda[index] - epsilon * c.distance.gap);
+    c.tangential = Eigen::Vector3d::Zero();
+    c.stiffness  = Eigen::Matrix3d::Zero();
+    c.status     = Status::open;
+    if (c.pressure <= 0)
+      return c;
+    const Eigen::Vector3d &n = c.distance.normal;
+    const Eigen::Matrix3d &H = c.distance.hessian;
+    c.stiffness              = epsilon * n * n.transpose() - c.pressure * H;
+    c.status                 = Status::slip;
+    if (o.friction == 0)
+      return c;
+    const Eigen::Vector3d z     = c.y - state.anchor[index];
+    const Eigen::Matrix3d P     = Eigen::Matrix3d::Identity() - n * n.transpose();
+    const Eigen::Vector3d trial = -epsilon * P * z;
+    const Eigen::Matrix3d dtrial =
+      -epsilon * (P - n.dot(z) * H - n * (H * z).transpose());
+    const double bound = o.friction * c.pressure, size = trial.norm();
+    if (size <= bound)
+      {
+        c.status     = Status::stick;
+        c.tangential = trial;
+        c.stiffness -= dtrial;
+        return c;
+      }
+    const Eigen::Vector3d tau = trial / size;
+    c.tangential              = bound * tau;
+    c.stiffness -= bound / size * (Eigen::Matrix3d::Identity() - tau * tau.transpose()) * dtrial -
+                   o.friction * epsilon * tau * n.transpose();
     return c;
   }
 
@@ -148,13 +229,11 @@ namespace softchain::fem
       for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
         {
           const PointContact c = contact(point, k, x, motion);
-          if (c.pressure <= 0)
+          if (c.status == Status::open)
             continue;
           touched                 = true;
-          const Eigen::Vector3d t = c.pressure * c.distance.normal;
-          // -d(t_N n)/dx = epsilon n n^T - t_N H (t_N > 0).
-          const Eigen::Matrix3d D = points[point].epsilon * c.distance.normal * c.distance.normal.transpose() -
-                                    c.pressure * c.distance.hessian;
+          const Eigen::Vector3d t = c.pressure * c.distance.normal + c.tangential;
+          const Eigen::Matrix3d &D = c.stiffness;
           for (std::size_t a = 0; a < n; ++a)
             for (unsigned int i = 0; i < 3; ++i)
               {
@@ -173,11 +252,10 @@ namespace softchain::fem
   double ObstacleContact::deepest_penetration(const TrilinosWrappers::MPI::Vector &u, const double motion) const
   {
     double deepest = 0;
-    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
-                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
-                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
-                       deepest = std::max(deepest, -contact(point, k, x, motion).distance.gap / points[point].h);
-                   });
+    for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        deepest = std::max(deepest, -contact(point, k, x, motion).distance.gap / points[point].h);
+    });
     return Utilities::MPI::max(deepest, space.communicator);
   }
 
@@ -185,37 +263,48 @@ namespace softchain::fem
   {
     if (deepest_penetration(u, motion) <= scene.penetration_tolerance)
       return false;
-    std::vector<double> updated(lambda.size());
-    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
-                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
-                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
-                       updated[point * scene.obstacles.size() + k] = contact(point, k, x, motion).pressure;
-                   });
-    lambda = std::move(updated);
+    std::vector<double> updated(state.lambda.size());
+    for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        updated[point * scene.obstacles.size() + k] = contact(point, k, x, motion).pressure;
+    });
+    state.lambda = std::move(updated);
     return true;
   }
 
-  void ObstacleContact::reset_multipliers()
+  void ObstacleContact::commit(const TrilinosWrappers::MPI::Vector &u, const double motion)
   {
-    std::fill(lambda.begin(), lambda.end(), 0.0);
+    std::vector<Eigen::Vector3d> anchor = state.anchor;
+    for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        {
+          const PointContact c = contact(point, k, x, motion);
+          const std::size_t  i = point * scene.obstacles.size() + k;
+          if (c.status == Status::open)
+            anchor[i] = c.y;
+          else if (c.status == Status::slip)
+            anchor[i] = c.y + c.tangential / points[point].epsilon;
+        }
+    });
+    state.anchor = std::move(anchor);
   }
 
   std::vector<ObstacleContact::Wrench> ObstacleContact::obstacle_wrenches(const TrilinosWrappers::MPI::Vector &u,
                                                                           const double motion) const
   {
     std::vector<Wrench> w(scene.obstacles.size());
-    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
-                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
-                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
-                       {
-                         const PointContact c = contact(point, k, x, motion);
-                         Tensor<1, 3>       on_obstacle;
-                         for (unsigned int i = 0; i < 3; ++i)
-                           on_obstacle[i] = -c.pressure * c.distance.normal[i] * points[point].dA;
-                         w[k].force += on_obstacle;
-                         w[k].moment += cross_product_3d(Tensor<1, 3>(x), on_obstacle);
-                       }
-                   });
+    for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        {
+          const PointContact    c = contact(point, k, x, motion);
+          const Eigen::Vector3d t = c.pressure * c.distance.normal + c.tangential;
+          Tensor<1, 3>          on_obstacle;
+          for (unsigned int i = 0; i < 3; ++i)
+            on_obstacle[i] = -t[i] * points[point].dA;
+          w[k].force += on_obstacle;
+          w[k].moment += cross_product_3d(Tensor<1, 3>(x), on_obstacle);
+        }
+    });
     for (auto &wrench : w)
       {
         wrench.force  = Utilities::MPI::sum(wrench.force, space.communicator);
@@ -228,21 +317,22 @@ namespace softchain::fem
                                                                          const double motion) const
   {
     std::vector<PointState> states;
-    for_each_point(u, [](const ContactFace &, const std::vector<types::global_dof_index> &) {},
-                   [&](const ContactFace &, unsigned int, const std::size_t point, const Point<3> &x) {
-                     PointState s{points[point].X, std::numeric_limits<double>::infinity(), 0.0, 0};
-                     for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
-                       {
-                         const PointContact c = contact(point, k, x, motion);
-                         s.pressure += c.pressure;
-                         if (c.distance.gap < s.gap)
-                           {
-                             s.gap      = c.distance.gap;
-                             s.obstacle = k;
-                           }
-                       }
-                     states.push_back(s);
-                   });
+    for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
+      PointState s{points[point].X, std::numeric_limits<double>::infinity(), 0.0, Tensor<1, 3>(), Status::open};
+      for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
+        {
+          const PointContact c = contact(point, k, x, motion);
+          s.pressure += c.pressure;
+          for (unsigned int i = 0; i < 3; ++i)
+            s.tangential[i] += c.tangential[i];
+          if (c.distance.gap < s.gap)
+            {
+              s.gap    = c.distance.gap;
+              s.status = c.status;
+            }
+        }
+      states.push_back(s);
+    });
     return states;
   }
 

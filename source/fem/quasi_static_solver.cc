@@ -153,6 +153,8 @@ namespace softchain::fem
     u_owned = 0;
     set_displacement(u_owned);
     load = LoadState();
+    if (contact)
+      contact->reset();
   }
 
   void QuasiStaticSolver::set_displacement(const TrilinosWrappers::MPI::Vector &owned_u)
@@ -468,7 +470,7 @@ namespace softchain::fem
   // the tip DoFs' move, u += d + v where K v = -R(u) - K d on the free DoFs
   // (K and R at u, the tip held). Moving the tip DoFs alone shears the
   // elements at the tip face, and the first steps of a motion inverted them
-  // until cut to a hundredth (docs/results.md, "A tip motion's first step").
+  // until cut to a hundredth (docs/history.md, "A tip motion's first step").
   // K d is the directional derivative of the residual, by a forward
   // difference along d with step h = 1e-3 (relative error of order h times
   // the residual's curvature along d, well within Newton's tolerance: the
@@ -525,7 +527,7 @@ namespace softchain::fem
       , target(target)
       , predictor(solver.u_owned)
       , links_converged(solver.link_states())
-      , multipliers_converged(solver.contact ? solver.contact->multipliers() : std::vector<double>())
+      , contact_converged(solver.contact ? solver.contact->history() : ObstacleContact::History())
       , pv{{start.pressure, solver.pressure->cavity_volume(solver.u_ghosted)}}
     {}
 
@@ -564,7 +566,10 @@ namespace softchain::fem
       solver.load     = solver.newton_target;
       links_converged = solver.link_states();
       if (solver.contact)
-        multipliers_converged = solver.contact->multipliers();
+        {
+          solver.contact->commit(solver.u_ghosted, solver.load.obstacle_motion);
+          contact_converged = solver.contact->history();
+        }
       pv.emplace_back(solver.load.pressure, solver.pressure->cavity_volume(solver.u_ghosted));
     }
 
@@ -572,7 +577,7 @@ namespace softchain::fem
     {
       solver.restore(predictor.last(), links_converged);
       if (solver.contact)
-        solver.contact->restore_multipliers(multipliers_converged);
+        solver.contact->restore(contact_converged);
     }
 
     // (pressure, cavity volume) of the converged states, to tell a limit point.
@@ -584,7 +589,7 @@ namespace softchain::fem
     const LoadState                        target;
     ContinuationPredictor                  predictor;
     std::vector<TensionOnlyLaw::State>     links_converged;
-    std::vector<double>                    multipliers_converged; // the contact's
+    ObstacleContact::History               contact_converged; // multipliers and stick anchors
     unsigned int                           augmentations = 0;     // in this step
     std::vector<std::pair<double, double>> pv;
   };

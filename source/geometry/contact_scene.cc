@@ -75,7 +75,7 @@ namespace softchain::geometry
     section.declare("Surfaces", "all",
                     "all: every boundary face but the clamped base; else a list of the "
                     "boundary groups tip, outer, cavity");
-    section.declare("Penalty factor", "100",
+    section.declare("Penalty factor", "10",
                     "epsilon = factor E / h per unit reference area; the penetration is "
                     "t_N / (factor E) of the face size h");
     section.declare("Penetration tolerance", "0.01",
@@ -88,6 +88,7 @@ namespace softchain::geometry
     file.parse_section("Contact", section);
 
     ContactScene scene;
+    scene.file     = file.path();
     scene.surfaces = section.get_list("Surfaces");
     section.require(!scene.surfaces.empty(), "Surfaces", "names no boundary group");
     for (const auto &s : scene.surfaces)

@@ -1,28 +1,39 @@
 #pragma once
-// ObstacleContact: frictionless contact of the body's boundary with rigid
-// obstacles (ContactScene), enforced at the boundary faces' quadrature
-// points -- not at nodes, whose Q2/P2 face weights may be negative -- by an
-// augmented Lagrangian (Wriggers, Computational Contact Mechanics, 2nd ed.,
-// 2006, Sec. 6.3). At a point X of a contact face, deformed to
-// x = X + u(X), each obstacle's signed distance g(x) with normal n and
-// curvature H (RigidObstacle) gives the contact pressure per unit
-// reference area
-//     t_N = max(0, lambda - epsilon g),
-// lambda the point's multiplier and epsilon = Penalty factor E / h (E the
-// cell's Young's modulus, h the face's size). The obstacle pushes the body
-// with t_N n: node a of the face receives
-//     f_a = int phi_a t_N n dA0,
-// and where t_N > 0 its derivative along the displacement of node b is
-//     df_a/du_b = -int phi_a phi_b (epsilon n n^T - t_N H) dA0,
-// the second term the turning of the normal on a curved obstacle. For fixed
-// multipliers f derives from the potential
-//     Pi = int 1/(2 epsilon) (max(0, lambda - epsilon g)^2 - lambda^2) dA0,
-// so the tangent is symmetric and Newton's energy line search holds. With
-// lambda = 0 this is the penalty method, whose penetration -g = t_N /
-// epsilon is t_N / (factor E) of h; where a converged state penetrates
-// deeper than Penetration tolerance h, Uzawa's update lambda <- t_N and a
-// new Newton solve follow (augment()), which drives the penetration to zero
-// at a fixed epsilon.
+// ObstacleContact: contact of the body's boundary with rigid obstacles
+// (ContactScene), with Coulomb friction, enforced at the boundary faces'
+// quadrature points -- not at nodes, whose Q2/P2 face weights may be
+// negative -- by an augmented Lagrangian in the normal direction and a
+// penalty-regularised return mapping in the tangential one (Wriggers,
+// Computational Contact Mechanics, 2nd ed., 2006, Secs. 5.2 and 6.3).
+//
+// At a point X of a contact face, deformed to x = X + u(X), an obstacle
+// translated by c has the signed distance g(y), normal n(y) and curvature
+// H(y) at y = x - c (RigidObstacle). Per unit reference area:
+//  - normal: t_N = max(0, lambda - epsilon g), lambda the point's
+//    multiplier, epsilon = Penalty factor E / h (E the cell's Young's
+//    modulus, h the face's size);
+//  - tangential: with y_s the point's stick anchor (its history) and
+//    z = y - y_s, the trial traction t* = -epsilon P z, P = I - n n^T.
+//    Stick where |t*| <= mu t_N: t_T = t*; slip otherwise:
+//    t_T = mu t_N t* / |t*|. A converged state moves the anchor of a
+//    slipping point to y + t_T / epsilon, of an open point to y.
+// The obstacle pushes the body with t = t_N n + t_T: node a of the face
+// receives f_a = int phi_a t dA0, and df_a/du_b = int phi_a phi_b dt/dx dA0
+// with
+//     d(t_N n)/dx = -epsilon n n^T + t_N H,
+//     dt*/dx      = -epsilon (P - (n.z) H - n (H z)^T),
+//     dt_T/dx     = dt*/dx (stick),
+//                   mu t_N (I - tau tau^T) / |t*| dt*/dx - mu epsilon tau n^T (slip),
+// tau = t* / |t*|. Without friction the tangent is symmetric (f derives
+// from Pi = int (max(0, lambda - epsilon g)^2 - lambda^2) / (2 epsilon) dA0
+// at fixed multipliers) and Newton's energy line search holds; with it, the
+// slip branch makes it non-symmetric.
+//
+// With lambda = 0 this is the penalty method, whose penetration -g =
+// t_N / epsilon is t_N / (factor E) of h; where a converged state
+// penetrates deeper than Penetration tolerance h, Uzawa's update
+// lambda <- t_N and a new Newton solve follow (augment()), which drives the
+// penetration to zero at a fixed epsilon.
 #include <softchain/fem/finite_element_space.h>
 
 #include <softchain/geometry/contact_scene.h>
@@ -43,7 +54,7 @@ namespace softchain::fem
     ObstacleContact(const FiniteElementSpace &space, const geometry::ContactScene &scene,
                     const std::vector<double> &youngs_modulus);
 
-    bool active() const { return !scene.empty(); }
+    bool has_friction() const;
 
     // rhs += f (the contact forces on the body), matrix -= df/du (if given),
     // with the obstacles moved by `motion` times their Motion.
@@ -58,10 +69,19 @@ namespace softchain::fem
     // Uzawa's update lambda <- t_N if the deepest penetration exceeds the
     // tolerance; returns whether it did (a new Newton solve is due).
     bool augment(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double motion);
-    // Back to the penalty method (all multipliers zero).
-    void reset_multipliers();
-    const std::vector<double> &multipliers() const { return lambda; }
-    void restore_multipliers(const std::vector<double> &saved) { lambda = saved; }
+
+    // The history of the contact points: multipliers and stick anchors.
+    struct History
+    {
+      std::vector<double>          lambda; // per point and obstacle
+      std::vector<Eigen::Vector3d> anchor; // y_s per point and obstacle
+    };
+    const History &history() const { return state; }
+    // The history of the body at rest.
+    void           reset();
+    void           restore(const History &saved) { state = saved; }
+    // A converged state: the anchors of slipping and open points move.
+    void           commit(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double motion);
 
     // The force and the moment about the origin that each obstacle receives
     // from the body (the negative of what it exerts), on every rank.
@@ -76,13 +96,20 @@ namespace softchain::fem
     // body at rest.
     void check_rest_state(const std::string &file) const;
 
-    // The contact state at one point, for output.
+    enum class Status
+    {
+      open,
+      stick,
+      slip // also every pressed point without friction
+    };
+    // The contact state at one point of this rank, for output.
     struct PointState
     {
-      dealii::Point<3> reference;
-      double           gap;      // of the closest obstacle, m
-      double           pressure; // t_N per reference area, Pa
-      unsigned int     obstacle; // index of the closest obstacle
+      dealii::Point<3>     reference;
+      double               gap;        // to the closest obstacle, m
+      double               pressure;   // t_N per reference area, Pa
+      dealii::Tensor<1, 3> tangential; // t_T per reference area, Pa
+      Status               status;     // of the closest obstacle
     };
     std::vector<PointState> point_states(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
                                          double motion) const;
@@ -110,7 +137,11 @@ namespace softchain::fem
     struct PointContact
     {
       geometry::SignedDistance distance;
-      double                   pressure; // t_N
+      Eigen::Vector3d          y;          // x - c, the point in the obstacle's rest frame
+      double                   pressure;   // t_N
+      Eigen::Vector3d          tangential; // t_T
+      Eigen::Matrix3d          stiffness;  // -dt/dx, t = t_N n + t_T
+      Status                   status;
     };
 
     const FiniteElementSpace               &space;
@@ -119,15 +150,23 @@ namespace softchain::fem
     std::vector<ContactFace>                faces;
     std::vector<ReferencePoint>             points;
     std::vector<double>                     values; // phi_a at the points
-    std::vector<double>                     lambda; // per point and obstacle
+    History                                 state;
 
+    // Whether a face of boundary id `id` may touch (Surfaces), and whether it
+    // belongs to the boundary group `group` ("all": any but base and symmetry).
     bool         touches(dealii::types::boundary_id id) const;
+    static bool  in_group(const std::string &group, dealii::types::boundary_id id);
+    void         check_surfaces() const;
     void         add_face(const dealii::FEFaceValues<3> &fe_face,
                           const dealii::DoFHandler<3>::active_cell_iterator &cell, double youngs_modulus);
-    // Calls f(face, q, point index, x) for each contact point with its
-    // deformed position x, and (per face) before it g(face, dofs).
+    // Calls face_start(face, dofs) per face and at_point(face, q, point, x)
+    // for each of its points with its deformed position x.
     template <typename FaceStart, typename AtPoint>
-    void         for_each_point(const dealii::TrilinosWrappers::MPI::Vector &u, FaceStart g, AtPoint f) const;
+    void         for_each_point(const dealii::TrilinosWrappers::MPI::Vector &u, FaceStart face_start,
+                                AtPoint at_point) const;
+    // Calls at_point(point, x) for each contact point of this rank.
+    template <typename AtPoint>
+    void         for_each_point(const dealii::TrilinosWrappers::MPI::Vector &u, AtPoint at_point) const;
     PointContact contact(std::size_t point, unsigned int obstacle, const dealii::Point<3> &x,
                          double motion) const;
   };

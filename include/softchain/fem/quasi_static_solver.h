@@ -151,9 +151,12 @@ namespace softchain::fem
     // Newton unknowns whose own step the energy along du ignores, and it
     // cut good steps to a tenth (the demo's sweep: 1917 against 1519
     // Newton iterations); without springs it pays (the CalculiX bender,
-    // Q2 at 3 kPa in one step: 10 against 16). docs/results.md, "Link
-    // tensions as Newton unknowns".
-    bool   energy_line_search() const override { return !springs; }
+    // Q2 at 3 kPa in one step: 10 against 16). docs/history.md, "Link
+    // tensions as Newton unknowns". Friction has no energy either.
+    bool   energy_line_search() const override
+    {
+      return !springs && !(contact && contact->has_friction());
+    }
     const FollowerPressure              &pressure_load() const { return *pressure; }
     // The contact with the obstacles of subsection Contact (none: nullptr).
     const ObstacleContact               *obstacle_contact() const { return contact.get(); }
