@@ -175,6 +175,25 @@ namespace softchain::fem
     return springs ? springs->link_states() : std::vector<TensionOnlyLaw::State>();
   }
 
+  ObstacleContact::History QuasiStaticSolver::accept_contact_state(const double obstacle_motion)
+  {
+    if (!contact)
+      return {};
+    contact->commit(u_ghosted, obstacle_motion);
+    return contact->history();
+  }
+
+  bool QuasiStaticSolver::augment_contact(const double obstacle_motion)
+  {
+    return contact && contact->augment(u_ghosted, obstacle_motion);
+  }
+
+  void QuasiStaticSolver::restore_contact(const ObstacleContact::History &history)
+  {
+    if (contact)
+      contact->restore(history);
+  }
+
   void QuasiStaticSolver::restore(const TrilinosWrappers::MPI::Vector      &owned_u,
                                   const std::vector<TensionOnlyLaw::State> &links)
   {
@@ -553,8 +572,8 @@ namespace softchain::fem
     // Contact/Maximum augmentations times per step.
     bool augment() override
     {
-      if (!solver.contact || augmentations == solver.prm.contact.max_augmentations ||
-          !solver.contact->augment(solver.u_ghosted, solver.newton_target.obstacle_motion))
+      if (augmentations == solver.prm.contact.max_augmentations ||
+          !solver.augment_contact(solver.newton_target.obstacle_motion))
         return false;
       ++augmentations;
       return true;
@@ -565,19 +584,14 @@ namespace softchain::fem
       predictor.converged(s, solver.u_owned);
       solver.load     = solver.newton_target;
       links_converged = solver.link_states();
-      if (solver.contact)
-        {
-          solver.contact->commit(solver.u_ghosted, solver.load.obstacle_motion);
-          contact_converged = solver.contact->history();
-        }
+      contact_converged = solver.accept_contact_state(solver.load.obstacle_motion);
       pv.emplace_back(solver.load.pressure, solver.pressure->cavity_volume(solver.u_ghosted));
     }
 
     void reject_step() override
     {
       solver.restore(predictor.last(), links_converged);
-      if (solver.contact)
-        solver.contact->restore(contact_converged);
+      solver.restore_contact(contact_converged);
     }
 
     // (pressure, cavity volume) of the converged states, to tell a limit point.

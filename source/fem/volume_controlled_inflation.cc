@@ -15,6 +15,7 @@ namespace softchain::fem
     : solver(solver)
     , prm(prm)
     , p(start_pressure)
+    , obstacle_motion(solver.load_state().obstacle_motion)
   {}
 
   double VolumeControlledInflation::volume() const
@@ -42,7 +43,8 @@ namespace softchain::fem
   LoadState VolumeControlledInflation::pressure_state() const
   {
     LoadState state;
-    state.pressure = p;
+    state.pressure        = p;
+    state.obstacle_motion = obstacle_motion;
     return state;
   }
 
@@ -97,7 +99,8 @@ namespace softchain::fem
     TrilinosWrappers::MPI::Vector u_predicted(predictor->last());
     if (prm.solver.secant_predictor && predictor->predict(s, u_predicted, &p))
       solver.move_to(u_predicted);
-    v_target = v_start + s * (v_end - v_start);
+    v_target      = v_start + s * (v_end - v_start);
+    augmentations = 0;
     return *this;
   }
 
@@ -105,13 +108,23 @@ namespace softchain::fem
   {
     predictor->converged(s, owned_displacement(), p);
     links_converged = solver.link_states();
+    contact_converged = solver.accept_contact_state(obstacle_motion);
     curve->push_back({volume(), p});
+  }
+
+  bool VolumeControlledInflation::augment()
+  {
+    if (augmentations == prm.contact.max_augmentations || !solver.augment_contact(obstacle_motion))
+      return false;
+    ++augmentations;
+    return true;
   }
 
   // Back to the last converged state (the curve's last point).
   void VolumeControlledInflation::reject_step()
   {
     solver.restore(predictor->last(), links_converged);
+    solver.restore_contact(contact_converged);
     p = curve->back().pressure;
   }
 
@@ -122,6 +135,8 @@ namespace softchain::fem
     v_end           = target_volume;
     predictor       = std::make_unique<ContinuationPredictor>(owned_displacement(), p);
     links_converged = solver.link_states();
+    if (solver.obstacle_contact())
+      contact_converged = solver.obstacle_contact()->history();
     curve           = &result.curve;
     result.curve.push_back({v_start, p});
     std::ostringstream log;

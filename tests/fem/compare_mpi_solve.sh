@@ -8,6 +8,8 @@
 # runs), the base force and moment to 1e-8 of their length plus 1e-9 N
 # (N m): under pressure alone they are round-off, ~1e-12 (one code path in
 # serial and in parallel), and the cavity pressure to 1e-8 of (|p| + 1 Pa).
+# With contact, each obstacle's force and moment (three columns each, after
+# the fifteen) to 1e-8 of their length plus 1e-9 N (N m), as the base's.
 set -eu
 mpiexec=$1 softchain=$2 prm=$3
 for n in 1 2; do
@@ -25,7 +27,7 @@ awk -F, 'function abs(x) { return x < 0 ? -x : x }
          }
          NR == 2 { for (i = 1; i <= NF; ++i) a[i] = $i }
          NR == 4 {
-           if (NF != 15) { print "expected 15 columns, got " NF; exit 1 }
+           if (NF < 15 || (NF - 15) % 3 != 0) { print "expected 15 + 3k columns, got " NF; exit 1 }
            bad = ($1 != a[1] || $3 != a[3] || $4 != a[4])
            if (bad) print "converged flag or counts differ"
            tip = sqrt(a[5] ^ 2 + a[6] ^ 2 + a[7] ^ 2)
@@ -36,6 +38,10 @@ awk -F, 'function abs(x) { return x < 0 ? -x : x }
            for (i = 9; i <= 11; ++i) bad += differs(i, force)
            for (i = 12; i <= 14; ++i) bad += differs(i, moment)
            bad += differs(15, abs(a[15]) + 1)
+           for (j = 16; j < NF; j += 3) {
+             size = sqrt(a[j] ^ 2 + a[j + 1] ^ 2 + a[j + 2] ^ 2) + 0.1
+             for (i = j; i < j + 3; ++i) bad += differs(i, size)
+           }
            exit bad > 0
          }
          END { if (NR != 4) { print "expected a header and a row in each file"; exit 1 } }' \

@@ -15,6 +15,7 @@
 #include "fem_test_tools.h"
 
 #include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/volume_controlled_inflation.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -325,4 +326,40 @@ TEST_CASE("a pressed block sticks below mu N and slips at mu N", "[fem][contact]
     CHECK(slip > 0);
     CHECK(-force[0] / force[2] == Approx(mu).epsilon(0.01));
   }
+}
+
+// Contact works under every load control: the demo bender inflated by
+// volume against a plane below it (pressure control: the tests above).
+TEST_CASE("contact under volume control", "[fem][contact]")
+{
+  const std::string table = contact_section(
+    obstacle("table", "    set Shape = plane\n    set Position = 0, -0.004, 0\n    set Normal = 0, 1, 0\n"
+                      "    set Friction coefficient = 0.5\n"));
+  test::SolverFixture f(test::parameters_from_text("contact_controls", test::bender_prm("Q2", 8, table)));
+  QuasiStaticSolver &solver = *f.solver;
+  {
+    VolumeControlledInflation inflation(solver, f.prm);
+    const auto                result = inflation.solve(1.3 * inflation.volume());
+    REQUIRE(result.converged);
+    const auto force = solver.obstacle_contact()->obstacle_wrenches(solver.displacement(), 0.0)[0].force;
+    INFO("pressure " << inflation.pressure() << " Pa, table force " << force);
+    CHECK(force[1] < -0.01); // pressed down
+    CHECK(std::abs(force[0]) <= 0.5 * std::abs(force[1]) * (1 + 1e-9)); // within the friction cone
+  }
+}
+
+TEST_CASE("contact under a prescribed tip motion", "[fem][contact]")
+{
+  // The tip moved 8 mm down, its face held parallel: the middle of the
+  // bender comes down onto a sphere whose top is 2 mm below it.
+  const std::string ball = contact_section(
+    obstacle("ball", "    set Shape = sphere\n    set Position = 0.04, -0.012, 0.009\n    set Radius = 0.01\n"
+                     "    set Friction coefficient = 0.5\n"));
+  test::SolverFixture f(test::parameters_from_text("contact_tip_motion", test::bender_prm("Q2", 8, ball)));
+  LoadState           moved;
+  moved.tip_motion = TipMotion{Tensor<1, 3>({0, -0.008, 0}), Tensor<1, 3>(), false};
+  REQUIRE(f.solver->solve(moved).converged);
+  const auto force = f.solver->obstacle_contact()->obstacle_wrenches(f.solver->displacement(), 0.0)[0].force;
+  INFO("ball force " << force);
+  CHECK(force[1] < -0.1);
 }

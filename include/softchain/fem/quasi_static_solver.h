@@ -160,6 +160,15 @@ namespace softchain::fem
     const FollowerPressure              &pressure_load() const { return *pressure; }
     // The contact with the obstacles of subsection Contact (none: nullptr).
     const ObstacleContact               *obstacle_contact() const { return contact.get(); }
+    // The current state, with the obstacles moved by `obstacle_motion`, is
+    // a converged one: the contact's stick anchors follow it
+    // (ObstacleContact::commit). Returns the contact's history there, to
+    // return to with restore_contact() after a failed step.
+    ObstacleContact::History             accept_contact_state(double obstacle_motion);
+    void                                 restore_contact(const ObstacleContact::History &history);
+    // Uzawa's update of the contact pressures at the current state
+    // (ObstacleContact::augment); false without contact.
+    bool                                 augment_contact(double obstacle_motion);
     const EmbeddedSpringNetwork         *spring_network() const { return springs.get(); }
     const HyperelasticMaterial &material(dealii::types::material_id id) const { return *materials.at(id); }
     // Deformed positions of `points` (reference, inside the body).

@@ -49,7 +49,8 @@ namespace softchain::fem
     };
 
     // Drives `solver` (its current state: at rest, or a converged state at
-    // pressure `start_pressure`); no other loads are applied.
+    // pressure `start_pressure`); no other loads are applied, and contact
+    // obstacles stay where the start state has them.
     VolumeControlledInflation(QuasiStaticSolver &solver, const Parameters &prm,
                               double start_pressure = 0.0);
 
@@ -84,16 +85,20 @@ namespace softchain::fem
     NewtonSystem &begin_step(double s) override;
     void          accept_step(double s) override;
     void          reject_step() override;
+    bool          augment() override; // the contact's Uzawa updates
 
   private:
     QuasiStaticSolver &solver;
     const Parameters  &prm;
     double             p;
+    double             obstacle_motion; // the obstacles stay where the start state has them
     // The path of the current solve(): its start, the volume aimed at, the
     // converged states and the bordered system's unknowns.
     double                                v_start = 0, v_end = 0, v_target = 0;
     std::unique_ptr<ContinuationPredictor> predictor;
     std::vector<TensionOnlyLaw::State>    links_converged;
+    ObstacleContact::History              contact_converged;
+    unsigned int                          augmentations = 0; // in the current step
     std::vector<PressureVolumePoint>     *curve = nullptr;
     dealii::TrilinosWrappers::MPI::Vector g;  // dV/du at the iterate
     double                                misfit = 0; // V_target - V at the iterate
