@@ -318,7 +318,7 @@ namespace softchain::fem
   {
     std::vector<PointState> states;
     for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
-      PointState s{points[point].X, std::numeric_limits<double>::infinity(), 0.0, Tensor<1, 3>(), Status::open};
+      PointState s{points[point].X, x, std::numeric_limits<double>::infinity(), 0.0, Tensor<1, 3>(), Status::open};
       for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
         {
           const PointContact c = contact(point, k, x, motion);

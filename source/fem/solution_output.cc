@@ -56,6 +56,51 @@ namespace softchain::fem
       std::ofstream out(file);
       DataOutBase::write_pvd_record(out, series);
     }
+
+    // A cell data array of an ASCII VTU: `components` values per cell.
+    struct CellArray
+    {
+      std::string         name;
+      std::string         type; // Float64 or Int32
+      unsigned int        components;
+      std::vector<double> values;
+    };
+
+    // An ASCII VTU of cells with `per_cell` points each (consecutive in
+    // `connectivity`), all of VTK type `vtk_type` (1 vertex, 3 line).
+    void write_cells_vtu(const std::string &file, const std::vector<Point<3>> &points,
+                         const std::vector<unsigned int> &connectivity, const unsigned int per_cell,
+                         const unsigned int vtk_type, const std::vector<CellArray> &arrays)
+    {
+      const std::size_t n_cells = connectivity.size() / per_cell;
+      std::ofstream     out(file);
+      out << std::setprecision(10)
+          << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+          << "<UnstructuredGrid><Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\""
+          << n_cells << "\">\n<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto &p : points)
+        out << p << '\n';
+      out << "</DataArray></Points>\n<Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (std::size_t k = 0; k < connectivity.size(); ++k)
+        out << connectivity[k] << ((k + 1) % per_cell == 0 ? '\n' : ' ');
+      out << "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+      for (std::size_t k = 0; k < n_cells; ++k)
+        out << per_cell * (k + 1) << '\n';
+      out << "</DataArray><DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (std::size_t k = 0; k < n_cells; ++k)
+        out << vtk_type << '\n';
+      out << "</DataArray></Cells>\n<CellData Scalars=\"" << arrays.front().name << "\">";
+      for (const auto &a : arrays)
+        {
+          out << "<DataArray type=\"" << a.type << "\" Name=\"" << a.name << "\""
+              << (a.components > 1 ? " NumberOfComponents=\"" + std::to_string(a.components) + "\"" : "")
+              << " format=\"ascii\">\n";
+          for (std::size_t k = 0; k < a.values.size(); ++k)
+            out << a.values[k] << ((k + 1) % a.components == 0 ? '\n' : ' ');
+          out << "</DataArray>";
+        }
+      out << "</CellData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+    }
   } // namespace
 
   SolutionOutput::SolutionOutput(const std::string &dir, const unsigned int subdivisions)
@@ -97,19 +142,30 @@ namespace softchain::fem
       write_pvd(directory + "/" + name + ".pvd", body_series);
 
     if (solver.spring_network())
-      {
-        std::ostringstream springs;
-        springs << name << "_springs_" << std::setw(4) << std::setfill('0') << counter << ".vtu";
-        write_springs(solver, springs.str());
-        spring_series.emplace_back(time, springs.str());
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
-          write_pvd(directory + "/" + name + "_springs.pvd", spring_series);
-      }
+      write_series_part(solver, name, "springs", time, spring_series,
+                        [this](const QuasiStaticSolver &s, const std::string &f) { write_springs(s, f); });
+    if (solver.obstacle_contact())
+      write_series_part(solver, name, "contact", time, contact_series,
+                        [this](const QuasiStaticSolver &s, const std::string &f) { write_contact(s, f); });
     ++counter;
     return body;
   }
 
-  // The spring network as VTK line cells (ASCII VTU), written by rank 0.
+  template <typename WritePart>
+  void SolutionOutput::write_series_part(const QuasiStaticSolver &solver, const std::string &name,
+                                         const std::string &part, const double time,
+                                         std::vector<std::pair<double, std::string>> &series,
+                                         WritePart write_part)
+  {
+    std::ostringstream file;
+    file << name << "_" << part << "_" << std::setw(4) << std::setfill('0') << counter << ".vtu";
+    write_part(solver, file.str());
+    series.emplace_back(time, file.str());
+    if (Utilities::MPI::this_mpi_process(solver.space().communicator) == 0)
+      write_pvd(directory + "/" + name + "_" + part + ".pvd", series);
+  }
+
+  // The spring network as VTK line cells, written by rank 0.
   void SolutionOutput::write_springs(const QuasiStaticSolver &solver, const std::string &file) const
   {
     const auto &network  = *solver.spring_network();
@@ -117,30 +173,55 @@ namespace softchain::fem
     const auto  tensions = network.tensions(solver.displacement());
     if (Utilities::MPI::this_mpi_process(solver.space().communicator) != 0)
       return;
-    const auto   &links = network.all_links();
-    std::ofstream out(directory + "/" + file);
-    out << std::setprecision(10)
-        << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-        << "<UnstructuredGrid><Piece NumberOfPoints=\"" << x.size() << "\" NumberOfCells=\""
-        << links.size() << "\">\n<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &p : x)
-      out << p << '\n';
-    out << "</DataArray></Points>\n<Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    const auto               &links = network.all_links();
+    std::vector<unsigned int> ends;
+    std::vector<double>       networks;
     for (const auto &l : links)
-      out << l.a << ' ' << l.b << '\n';
-    out << "</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (std::size_t k = 0; k < links.size(); ++k)
-      out << 2 * (k + 1) << '\n';
-    out << "</DataArray><DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t k = 0; k < links.size(); ++k)
-      out << "3\n";
-    out << "</DataArray></Cells>\n<CellData Scalars=\"tension\">"
-        << "<DataArray type=\"Float64\" Name=\"tension\" format=\"ascii\">\n";
-    for (const double t : tensions)
-      out << t << '\n';
-    out << "</DataArray><DataArray type=\"Int32\" Name=\"network\" format=\"ascii\">\n";
-    for (const auto &l : links)
-      out << l.network << '\n';
-    out << "</DataArray></CellData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+      {
+        ends.insert(ends.end(), {l.a, l.b});
+        networks.push_back(l.network);
+      }
+    write_cells_vtu(directory + "/" + file, x, ends, 2, 3,
+                    {{"tension", "Float64", 1, tensions}, {"network", "Int32", 1, networks}});
+  }
+
+  // The contact quadrature points of all ranks as VTK vertices at their
+  // deformed places, written by rank 0.
+  void SolutionOutput::write_contact(const QuasiStaticSolver &solver, const std::string &file) const
+  {
+    const auto &contact = *solver.obstacle_contact();
+    const auto  states  = contact.point_states(solver.displacement(), solver.load_state().obstacle_motion);
+    std::vector<double> local; // per point: x (3), pressure, t_T (3), gap, status
+    for (const auto &s : states)
+      {
+        for (unsigned int i = 0; i < 3; ++i)
+          local.push_back(s.deformed[i]);
+        local.push_back(s.pressure);
+        for (unsigned int i = 0; i < 3; ++i)
+          local.push_back(s.tangential[i]);
+        local.push_back(s.gap);
+        local.push_back(static_cast<double>(s.status));
+      }
+    const auto all = Utilities::MPI::gather(solver.space().communicator, local, 0);
+    if (Utilities::MPI::this_mpi_process(solver.space().communicator) != 0)
+      return;
+    std::vector<Point<3>>     x;
+    std::vector<double>       pressure, tangential, gap, status;
+    std::vector<unsigned int> vertices;
+    for (const auto &rank : all)
+      for (std::size_t k = 0; k + 9 <= rank.size(); k += 9)
+        {
+          vertices.push_back(x.size());
+          x.emplace_back(rank[k], rank[k + 1], rank[k + 2]);
+          pressure.push_back(rank[k + 3]);
+          tangential.insert(tangential.end(), {rank[k + 4], rank[k + 5], rank[k + 6]});
+          gap.push_back(rank[k + 7]);
+          status.push_back(rank[k + 8]);
+        }
+    write_cells_vtu(directory + "/" + file, x, vertices, 1, 1,
+                    {{"contact_pressure", "Float64", 1, pressure},
+                     {"tangential_traction", "Float64", 3, tangential},
+                     {"gap", "Float64", 1, gap},
+                     {"contact_status", "Int32", 1, status}});
   }
 } // namespace softchain::fem

@@ -120,8 +120,9 @@ namespace
     return largest;
   }
 
-  // Length of the mean tip displacement in solve_summary.csv.
-  double summary_tip_displacement(const std::string &file)
+  // The data row of solve_summary.csv: 15 columns and 6 per obstacle
+  // (docs/conventions.md, "CSV files").
+  std::vector<double> summary_row(const std::string &file, const unsigned int obstacles)
   {
     std::istringstream in(file_text(file));
     std::string        header, row;
@@ -131,8 +132,8 @@ namespace
     std::istringstream  cells(row);
     for (std::string cell; std::getline(cells, cell, ',');)
       columns.push_back(std::stod(cell));
-    REQUIRE(columns.size() == 15); // docs/conventions.md, "CSV files"
-    return std::hypot(columns[4], columns[5], columns[6]);
+    REQUIRE(columns.size() == 15 + 6 * obstacles);
+    return columns;
   }
 
   // The body's fields: all present, with one value per point (three for
@@ -166,6 +167,9 @@ TEST_CASE("solve writes VTU files that read back with all fields", "[fem][output
     "vtu_output", test::bender_prm("Q1", 4,
                                    "subsection Output\n  set Write VTU = true\nend\n"
                                    "subsection Loads\n  set Pressure = 5000\nend\n"
+                                   "subsection Contact\n  subsection table\n    set Shape = plane\n"
+                                   "    set Position = 0, -0.0005, 0\n    set Friction coefficient = 0.5\n"
+                                   "  end\nend\n"
                                    "subsection Design\n  set Output directory = " +
                                      directory + "\nend\n"));
   REQUIRE(softchain::app::solve_command(data::PrmFile::read(prm)) == 0);
@@ -180,7 +184,12 @@ TEST_CASE("solve writes VTU files that read back with all fields", "[fem][output
   // The mean of u over the tip face is a convex combination of nodal values
   // (Q1), so it cannot exceed the largest nodal |u| (up to the float32
   // rounding of the VTU, 6e-8 relative).
-  const double tip = summary_tip_displacement(directory + "/solve_summary.csv");
+  const auto   summary = summary_row(directory + "/solve_summary.csv", 1);
+  const double tip     = std::hypot(summary[4], summary[5], summary[6]);
+  // The body's balance: the support's and the table's reactions cancel (a
+  // closed cavity's pressure has no resultant), to the solve's tolerance.
+  for (unsigned int i = 0; i < 3; ++i)
+    CHECK(summary[8 + i] + summary[15 + i] == Approx(0).margin(1e-6 * std::hypot(summary[8], summary[9])));
   CHECK(tip > 0);
   CHECK(largest >= tip * (1 - 1e-6));
 
@@ -189,4 +198,20 @@ TEST_CASE("solve writes VTU files that read back with all fields", "[fem][output
   CHECK(tensions.size() == std::stoul(attribute_values(springs, "NumberOfCells").at(0)));
   CHECK(*std::min_element(tensions.begin(), tensions.end()) >= 0);
   CHECK(*std::max_element(tensions.begin(), tensions.end()) > 0);
+
+  // The contact points: a pressure >= 0, somewhere > 0 (the bent tip on the
+  // table 0.5 mm below it), a 3-vector of tangential traction each, a
+  // status among open (0), stick (1) and slip (2).
+  const std::string  contact  = file_text(vtu + "solution_contact_0000.vtu");
+  const unsigned int points   = std::stoul(attribute_values(contact, "NumberOfCells").at(0));
+  const auto         pressure = ascii_array(contact, "contact_pressure");
+  const auto         status   = ascii_array(contact, "contact_status");
+  CHECK(points > 0);
+  CHECK(pressure.size() == points);
+  CHECK(ascii_array(contact, "tangential_traction").size() == 3 * points);
+  CHECK(ascii_array(contact, "gap").size() == points);
+  CHECK(*std::min_element(pressure.begin(), pressure.end()) >= 0);
+  CHECK(*std::max_element(pressure.begin(), pressure.end()) > 0);
+  CHECK(std::all_of(status.begin(), status.end(), [](double s) { return s == 0 || s == 1 || s == 2; }));
+  CHECK(std::count(status.begin(), status.end(), 0.0) < static_cast<long>(points));
 }

@@ -106,6 +106,7 @@ namespace softchain::fem
     struct PointState
     {
       dealii::Point<3>     reference;
+      dealii::Point<3>     deformed;
       double               gap;        // to the closest obstacle, m
       double               pressure;   // t_N per reference area, Pa
       dealii::Tensor<1, 3> tangential; // t_T per reference area, Pa
