@@ -25,12 +25,13 @@ namespace softchain::fem
           }
         ++result.attempts;
         const double  s          = path.next();
+        const bool    final      = s >= 1.0 || problem.path_dependent();
         NewtonSystem &system     = problem.begin_step(s);
-        auto          outcome    = newton.solve(system, s >= 1.0, history);
+        auto          outcome    = newton.solve(system, final, history);
         unsigned int  iterations = outcome.iterations;
         while (outcome.converged() && problem.augment())
           {
-            outcome = newton.solve(system, s >= 1.0, history);
+            outcome = newton.solve(system, final, history);
             iterations += outcome.iterations;
             ++result.augmentations;
           }

@@ -36,6 +36,10 @@ namespace softchain::fem
     // augmented Lagrangian's Uzawa step) and returns true if Newton must
     // solve the step again with them; false when the state is accepted.
     virtual bool augment() { return false; }
+    // A problem with history (friction's stick anchors) commits it at every
+    // converged step, so that every step converges to the final tolerances,
+    // not to Solver/Intermediate tolerance.
+    virtual bool path_dependent() const { return false; }
   };
 
   class LoadPath

@@ -86,6 +86,10 @@ namespace softchain::fem
     void          accept_step(double s) override;
     void          reject_step() override;
     bool          augment() override; // the contact's Uzawa updates
+    bool          path_dependent() const override
+    {
+      return solver.obstacle_contact() && solver.obstacle_contact()->has_friction();
+    }
 
   private:
     QuasiStaticSolver &solver;
