@@ -5,6 +5,7 @@
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/prm_file.h>
+#include <softchain/data/text.h>
 #include <softchain/data/prm_subsections.h>
 
 #include <algorithm>
@@ -20,14 +21,6 @@ namespace softchain::data
   {
     using Statement = PrmFile::Statement;
     using Kind      = Statement::Kind;
-
-    std::string trim(const std::string &s)
-    {
-      const auto first = s.find_first_not_of(" \t\r");
-      if (first == std::string::npos)
-        return "";
-      return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-    }
 
     std::string where(const std::string &path, int line)
     {

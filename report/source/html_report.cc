@@ -1,6 +1,7 @@
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
+#include <softchain/report/report_numbers.h>
 #include <softchain/report/base64.h>
 #include <softchain/report/html_report.h>
 #include <softchain/report/paper_claims.h>
@@ -31,13 +32,6 @@ namespace softchain::report
       return bytes.str();
     }
 
-    std::string fmt(const double value, const int digits = 3)
-    {
-      std::ostringstream text;
-      text.precision(digits);
-      text << value;
-      return text.str();
-    }
 
     // Throws the InputError of a missing input, naming the command that
     // writes it.
@@ -48,15 +42,6 @@ namespace softchain::report
                                "`; run it, or `softchain run`, first)");
     }
 
-    // Median of `values` (NaN when empty).
-    double median(std::vector<double> values)
-    {
-      if (values.empty())
-        return NAN;
-      std::sort(values.begin(), values.end());
-      const std::size_t n = values.size();
-      return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    }
 
     // The largest point force [N]: the tip force of a lateral sample, each
     // force of a torsion couple (whose sum is zero).

@@ -1,6 +1,7 @@
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
+#include <softchain/report/report_numbers.h>
 #include <softchain/report/paper_claims.h>
 
 #include <algorithm>
@@ -42,13 +43,6 @@ namespace softchain::report
     // the forces up to buckling by more than this fraction.
     constexpr double departure = 0.2;
 
-    std::string fmt(const double value, const int digits = 3)
-    {
-      std::ostringstream text;
-      text.precision(digits);
-      text << value;
-      return text.str();
-    }
 
     // A fraction in percent, without exponents: 240 %, 4.8 %.
     std::string percent(const double fraction)
@@ -89,12 +83,6 @@ namespace softchain::report
       return v.empty() ? NAN : sum / v.size();
     }
 
-    double median(std::vector<double> v)
-    {
-      std::sort(v.begin(), v.end());
-      const std::size_t n = v.size();
-      return n == 0 ? NAN : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    }
 
     // Least-squares slope of y over x.
     double slope(const std::vector<double> &x, const std::vector<double> &y)

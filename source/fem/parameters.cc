@@ -1,5 +1,6 @@
 // Declaration and parsing of the FEM tier's .prm subsections.
 #include <softchain/data/input_error.h>
+#include <softchain/data/text.h>
 #include <softchain/data/prm_subsections.h>
 #include <softchain/fem/parameters.h>
 
@@ -16,12 +17,7 @@ namespace softchain::fem
 
   namespace
   {
-    std::string trim(const std::string &s)
-    {
-      const auto first = s.find_first_not_of(" \t");
-      return first == std::string::npos ? "" :
-                                          s.substr(first, s.find_last_not_of(" \t") - first + 1);
-    }
+    using data::trim;
 
     // "x,y,z" -> three numbers; `where` names the entry in errors.
     Tensor<1, 3> parse_triple(const std::string &text, const std::string &where)

@@ -11,10 +11,7 @@
 #include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
-#include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
@@ -82,6 +79,7 @@ namespace softchain::fem
     , fe_space(std::make_unique<FiniteElementSpace>(serial_mesh, parameters.mesh.element_type,
                                                     communicator))
     , computing_timer(communicator, log_stream, TimerOutput::never, TimerOutput::wall_times)
+    , tangent_solver(TangentSolver::create(parameters.solver, *fe_space, log_stream))
   {
     for (const auto &name : material_names)
       {
@@ -140,7 +138,7 @@ namespace softchain::fem
                                                writable_dofs);
     matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
     rhs.reinit(s.owned_dofs, writable_dofs, s.communicator, true);
-    serial_direct.reset(); // its symbolic analysis is of the old pattern
+    tangent_solver->pattern_changed();
     // The places need a pattern of the Dirichlet constraints alone (a point
     // contact's pattern drops the tip rows it condenses).
     scatter.reset();
@@ -325,18 +323,9 @@ namespace softchain::fem
     return valid;
   }
 
-  bool QuasiStaticSolver::uses_direct_solver() const
-  {
-    using LinearSolver = SolverParameters::LinearSolver;
-    return prm.solver.linear_solver == LinearSolver::direct ||
-           (prm.solver.linear_solver == LinearSolver::automatic &&
-            fe_space->dof_handler.n_dofs() <= prm.solver.direct_solver_max_dofs);
-  }
-
   bool QuasiStaticSolver::keeps_factorisation() const
   {
-    return uses_direct_solver() && prm.solver.direct_solver_package == "UMFPACK" &&
-           Utilities::MPI::n_mpi_processes(fe_space->communicator) == 1;
+    return tangent_solver->keeps_factorisation();
   }
 
   bool QuasiStaticSolver::solve_tangent(const TrilinosWrappers::MPI::Vector &b,
@@ -344,62 +333,10 @@ namespace softchain::fem
                                         const bool                           same_tangent)
   {
     TimerOutput::Scope timer_section(computing_timer, "linear solve");
-    const FiniteElementSpace &s = *fe_space;
-    SolverControl control(1000, prm.solver.krylov_tolerance * b.l2_norm());
     x = 0;
-    if (keeps_factorisation())
-      {
-        // The linear residual Newton's steps may leave: at most a hundredth
-        // of the residual tolerance relative to |R|, so that near the
-        // solution (|R| <= |f|) it is a hundredth of what the final test
-        // allows (SerialDirectSolver::refine()).
-        if (!serial_direct)
-          serial_direct = std::make_unique<SerialDirectSolver>(matrix, prm.solver.residual_tolerance / 100);
-        if (same_tangent)
-          serial_direct->solve_again(x, b);
-        // A singular tangent fails the Newton iteration, as a GMRES that does
-        // not converge does: the load step is cut.
-        else if (!serial_direct->solve(matrix, x, b))
-          {
-            log << "      the tangent is singular\n";
-            return false;
-          }
-      }
-    else if (uses_direct_solver())
-      {
-        const std::string package = prm.solver.direct_solver_package == "UMFPACK" ?
-                                      std::string("Amesos_Mumps") :
-                                      prm.solver.direct_solver_package;
-        TrilinosWrappers::SolverDirect solver(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false, package));
-        solver.solve(matrix, x, b);
-      }
-    else
-      {
-        TrilinosWrappers::PreconditionAMG::AdditionalData amg;
-        DoFTools::extract_constant_modes(s.dof_handler, ComponentMask(3, true),
-                                         amg.constant_modes);
-        amg.elliptic              = true;
-        amg.higher_order_elements = s.degree > 1;
-        amg.smoother_sweeps       = 2;
-        amg.aggregation_threshold = 0.02;
-        TrilinosWrappers::PreconditionAMG preconditioner;
-        preconditioner.initialize(matrix, amg);
-        TrilinosWrappers::SolverGMRES solver(
-          control, TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
-        try
-          {
-            solver.solve(matrix, x, b, preconditioner);
-          }
-        catch (const SolverControl::NoConvergence &failure)
-          {
-            log << "      GMRES did not converge in " << failure.last_step
-                << " iterations (residual " << failure.last_residual << ")\n";
-            return false;
-          }
-      }
-    (active_constraints ? *active_constraints : s.fixed_dofs).distribute(x);
+    if (!tangent_solver->solve(matrix, b, x, same_tangent))
+      return false;
+    (active_constraints ? *active_constraints : fe_space->fixed_dofs).distribute(x);
     return std::isfinite(x.l2_norm());
   }
 

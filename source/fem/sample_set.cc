@@ -1,5 +1,6 @@
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/text.h>
 #include <softchain/fem/sample_set.h>
 
 #include <algorithm>
@@ -11,6 +12,8 @@ namespace softchain::fem
 {
   namespace
   {
+    using data::trim;
+
     void declare(data::PrmSection &section)
     {
       section.declare("Pressure sweep", "", "Pa, pressure-only samples (role pressure)");
@@ -38,13 +41,6 @@ namespace softchain::fem
                       "force point) or tip+arm, tip-arm (the torsion couple's points)");
       section.declare("Sample groups", "1", "MPI sample groups solving samples in parallel");
       section.declare("Continuation", "true", "start each sample from its converged neighbour");
-    }
-
-    std::string trim(const std::string &s)
-    {
-      const auto first = s.find_first_not_of(" \t");
-      return first == std::string::npos ? "" :
-                                          s.substr(first, s.find_last_not_of(" \t") - first + 1);
     }
 
     std::vector<std::string> split(const std::string &text, const char separator)

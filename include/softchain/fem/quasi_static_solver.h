@@ -22,7 +22,7 @@
 #include <softchain/fem/obstacle_contact.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/prescribed_tip.h>
-#include <softchain/fem/serial_direct_solver.h>
+#include <softchain/fem/tangent_solver.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -126,10 +126,6 @@ namespace softchain::fem
     bool solve_tangent(const dealii::TrilinosWrappers::MPI::Vector &b,
                        dealii::TrilinosWrappers::MPI::Vector       &x,
                        bool                                         same_tangent = false);
-    // The linear solver is direct (Solver/Linear solver, direct solver max
-    // DoFs); it keeps its factorisation between calls (one rank, SoftChain's
-    // own MUMPS/UMFPACK solver rather than Trilinos' Amesos).
-    bool uses_direct_solver() const;
     // A Newton update: u += update, and the springs' link states take their
     // Newton step for it; scale_correction() shortens it.
     void apply_update(const dealii::TrilinosWrappers::MPI::Vector &update);
@@ -185,7 +181,7 @@ namespace softchain::fem
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     std::unique_ptr<ObstacleContact>                    contact;
     dealii::TimerOutput                                         computing_timer;
-    std::unique_ptr<SerialDirectSolver>                 serial_direct; // LDL^T or LU, one rank
+    std::unique_ptr<TangentSolver>                      tangent_solver; // TangentSolver::create()
     // The cells' places in `matrix` for fe_space->fixed_dofs on one rank.
     std::unique_ptr<CellMatrixScatter>                  scatter;
     std::unique_ptr<PrescribedTip>                      prescribed_tip; // built at the first tip motion
