@@ -41,32 +41,6 @@ namespace
     return "subsection Contact\n" + law + obstacles + "end\n";
   }
 
-  // K v and its central difference (R(u + h v) - R(u - h v)) / (2h) at u.
-  std::pair<TrilinosWrappers::MPI::Vector, TrilinosWrappers::MPI::Vector>
-  tangent_and_difference(QuasiStaticSolver &solver, const TrilinosWrappers::MPI::Vector &u,
-                         const TrilinosWrappers::MPI::Vector &v)
-  {
-    const LoadState load;
-    solver.set_displacement(u);
-    REQUIRE(solver.assemble(load, true));
-    TrilinosWrappers::MPI::Vector Kv(v);
-    solver.tangent().vmult(Kv, v);
-    const double                  h = 1e-8;
-    TrilinosWrappers::MPI::Vector plus(u), minus(u);
-    plus.add(h, v);
-    minus.add(-h, v);
-    solver.set_displacement(plus);
-    REQUIRE(solver.assemble(load, false));
-    TrilinosWrappers::MPI::Vector fd(solver.negative_residual());
-    solver.set_displacement(minus);
-    REQUIRE(solver.assemble(load, false));
-    fd -= solver.negative_residual();
-    fd *= -1.0 / (2 * h); // K = dR/du = -d(rhs)/du
-    solver.space().fixed_dofs.set_zero(fd);
-    solver.space().fixed_dofs.set_zero(Kv);
-    return {Kv, fd};
-  }
-
   // The contact's own tangent error |K_c v - FD_c| / |K_c v| at a deformed
   // state of the demo bender (Q2, 4 cells, [0, 0.08] x [0, 0.012] x
   // [0, 0.018]) whose bottom face y = 0 the obstacle cuts, so that some
@@ -95,8 +69,8 @@ namespace
     // truncation ~h^2 and round-off ~1e-16 |R| / h, both below 1e-7 of
     // K_c v here (measured: 1e-8 to 1e-9); no contact point lies within
     // 1e-8 m of its kink (g = 0) for this field.
-    auto [Kv, fd]         = tangent_and_difference(*with.solver, u, v);
-    const auto [Kv0, fd0] = tangent_and_difference(*without.solver, u, v);
+    auto [Kv, fd]         = test::tangent_and_difference(*with.solver, LoadState(), u, v, 1e-8);
+    const auto [Kv0, fd0] = test::tangent_and_difference(*without.solver, LoadState(), u, v, 1e-8);
     Kv -= Kv0;
     fd -= fd0;
     fd -= Kv;

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <random>
+#include <stdexcept>
 
 namespace softchain::fem::test
 {
@@ -76,6 +77,34 @@ namespace softchain::fem::test
   Tensor<1, 3> displacement_at(const QuasiStaticSolver &solver, const Point<3> &p)
   {
     return solver.deformed_points({p})[0] - p;
+  }
+
+  std::pair<TrilinosWrappers::MPI::Vector, TrilinosWrappers::MPI::Vector>
+  tangent_and_difference(QuasiStaticSolver &solver, const LoadState &load,
+                         const TrilinosWrappers::MPI::Vector &u, const TrilinosWrappers::MPI::Vector &v,
+                         const double h)
+  {
+    const auto assemble = [&](const bool with_matrix) {
+      if (!solver.assemble(load, with_matrix))
+        throw std::runtime_error("tangent_and_difference: an element is inverted (J <= 0)");
+    };
+    solver.set_displacement(u);
+    assemble(true);
+    TrilinosWrappers::MPI::Vector Kv(v);
+    solver.tangent().vmult(Kv, v);
+    TrilinosWrappers::MPI::Vector plus(u), minus(u);
+    plus.add(h, v);
+    minus.add(-h, v);
+    solver.set_displacement(plus);
+    assemble(false);
+    TrilinosWrappers::MPI::Vector fd(solver.negative_residual());
+    solver.set_displacement(minus);
+    assemble(false);
+    fd -= solver.negative_residual();
+    fd *= -1.0 / (2 * h); // K = dR/du = -d(rhs)/du
+    solver.space().fixed_dofs.set_zero(fd);
+    solver.space().fixed_dofs.set_zero(Kv);
+    return {Kv, fd};
   }
 
   SolverFixture::SolverFixture(const Parameters &p)

@@ -60,6 +60,14 @@ namespace softchain::fem::test
     std::unique_ptr<QuasiStaticSolver> solver;
   };
 
+  // K v at u and the central difference (R(u + h v) - R(u - h v)) / (2h)
+  // of the residual (K = dR/du), both under `load` and zero at the fixed
+  // DoFs; the solver is left at u - h v.
+  std::pair<dealii::TrilinosWrappers::MPI::Vector, dealii::TrilinosWrappers::MPI::Vector>
+  tangent_and_difference(QuasiStaticSolver &solver, const LoadState &load,
+                         const dealii::TrilinosWrappers::MPI::Vector &u,
+                         const dealii::TrilinosWrappers::MPI::Vector &v, double h);
+
   // A smooth displacement field (a bend plus a twist plus a stretch of
   // amplitude `scale`) plus seeded noise of relative size `noise`, zero on the
   // clamped base.

@@ -43,26 +43,10 @@ namespace
     solver.set_displacement(u);
     if (branches)
       *branches = links_per_branch(solver, f.prm.springs.smoothing_strain);
-    REQUIRE(solver.assemble(load, true));
-    TrilinosWrappers::MPI::Vector Kv(v);
-    solver.tangent().vmult(Kv, v);
-
     // Central difference of -R with a step h |v| ~ 1e-7 |u|-scale: the
     // truncation error O(h^2) and the round-off O(eps/h) are both ~1e-9
     // relative, well below the 1e-6 bound.
-    const double                  h = 1e-8;
-    TrilinosWrappers::MPI::Vector plus(u), minus(u);
-    plus.add(h, v);
-    minus.add(-h, v);
-    solver.set_displacement(plus);
-    REQUIRE(solver.assemble(load, false));
-    TrilinosWrappers::MPI::Vector fd(solver.negative_residual());
-    solver.set_displacement(minus);
-    REQUIRE(solver.assemble(load, false));
-    fd -= solver.negative_residual();
-    fd *= -1.0 / (2 * h); // K = dR/du = -d(rhs)/du
-    f.solver->space().fixed_dofs.set_zero(fd);
-    f.solver->space().fixed_dofs.set_zero(Kv);
+    auto [Kv, fd] = test::tangent_and_difference(solver, load, u, v, 1e-8);
     fd -= Kv;
     return fd.l2_norm() / Kv.l2_norm();
   }
