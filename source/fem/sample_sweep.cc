@@ -101,6 +101,12 @@ namespace softchain::fem
     , prm_file(file)
     , database_path(prm.design.database_path())
   {
+    // The database's samples are free fingers: their cache keys know no
+    // obstacles, so a sweep with them would mix scenes under one key.
+    if (!prm.contact.empty())
+      throw data::InputError(prm.file + ": subsection 'Contact' is read by `softchain solve` only; the "
+                             "sample sweep does not take contact samples yet (remove it for `sweep` "
+                             "and `run`)");
     if (prm.solver.threads > 0)
       MultithreadInfo::set_thread_limit(prm.solver.threads);
     FingerMesh::build(prm, mesh);
