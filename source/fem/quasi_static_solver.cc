@@ -18,7 +18,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <iomanip>
+#include <sstream>
 
 namespace softchain::fem
 {
