@@ -98,6 +98,77 @@ namespace softchain::data
       return mesh;
     }
 
+    // A contact sample's obstacles, each a group obstacles/<name> holding
+    // its description and the wrench it receives.
+    void write_obstacles(hid_t group, const SampleRecord &sample, const std::string &path)
+    {
+      const auto &obstacles = sample.actuation.obstacles;
+      if (obstacles.empty())
+        return;
+      write_attribute(group, "contact_law", sample.actuation.contact_law, path);
+      Handle all = create_group(group, "obstacles", path);
+      for (std::size_t k = 0; k < obstacles.size(); ++k)
+        {
+          const ObstacleRecord &o = obstacles[k];
+          Handle                g = create_group(all, o.name, path);
+          write_attribute(g, "shape", o.shape, path);
+          write_attribute(g, "order", static_cast<int>(k), path);
+          write_attribute(g, "radius", o.radius, path);
+          write_attribute(g, "friction", o.friction, path);
+          write_points(g, "position", {o.position}, path);
+          write_points(g, "direction", {o.direction}, path);
+          write_points(g, "half_sizes", {o.half_sizes}, path);
+          write_points(g, "motion", {o.motion}, path);
+          const ObstacleWrench w = k < sample.obstacle_wrenches.size() ?
+                                     sample.obstacle_wrenches[k] :
+                                     ObstacleWrench{{{NAN, NAN, NAN}}, {{NAN, NAN, NAN}}};
+          write_points(g, "wrench", {w.force, w.moment}, path);
+        }
+    }
+
+    // One (1,3) dataset of an obstacle's group.
+    Point3 read_point(hid_t group, const std::string &name, const std::string &where,
+                      const std::string &path)
+    {
+      const auto rows = read_points(group, name, path);
+      require(rows.size() == 1, path, where + ": '" + name + "' needs 1 row");
+      return rows.front();
+    }
+
+    // The obstacles of a contact sample, in their order, and their wrenches.
+    void read_obstacles(hid_t group, const std::string &id, Actuation &actuation,
+                        std::vector<ObstacleWrench> &wrenches, const std::string &path)
+    {
+      if (H5Lexists(group, "obstacles", H5P_DEFAULT) <= 0)
+        return;
+      actuation.contact_law = read_string_attribute(group, "contact_law", path);
+      Handle     all   = open_group(group, "obstacles", path);
+      const auto names = group_members(all);
+      actuation.obstacles.resize(names.size());
+      wrenches.resize(names.size());
+      for (const auto &name : names)
+        {
+          Handle            g     = open_group(all, name, path);
+          const std::string where = "sample '" + id + "', obstacle '" + name + "'";
+          const int         k     = read_int_attribute(g, "order", path);
+          require(k >= 0 && static_cast<std::size_t>(k) < names.size() &&
+                    actuation.obstacles[k].name.empty(),
+                  path, where + ": 'order' is not a free place in 0.." + std::to_string(names.size() - 1));
+          ObstacleRecord &o = actuation.obstacles[k];
+          o.name            = name;
+          o.shape           = read_string_attribute(g, "shape", path);
+          o.radius          = read_double_attribute(g, "radius", path);
+          o.friction        = read_double_attribute(g, "friction", path);
+          o.position        = read_point(g, "position", where, path);
+          o.direction       = read_point(g, "direction", where, path);
+          o.half_sizes      = read_point(g, "half_sizes", where, path);
+          o.motion          = read_point(g, "motion", where, path);
+          const auto wrench = read_points(g, "wrench", path);
+          require(wrench.size() == 2, path, where + ": 'wrench' needs 2 rows");
+          wrenches[k] = {wrench[0], wrench[1]};
+        }
+    }
+
     // The sample's attributes and datasets in `group` (a sample file's root).
     void write_sample(hid_t group, const SampleRecord &sample, const std::string &path)
     {
@@ -128,6 +199,7 @@ namespace softchain::data
         }
       if (const auto &ratio = sample.actuation.cavity_volume_ratio)
         write_attribute(group, "cavity_volume_ratio", *ratio, path);
+      write_obstacles(group, sample, path);
     }
 
     Actuation read_actuation(hid_t group, const std::string &id, const std::string &path)
@@ -179,6 +251,7 @@ namespace softchain::data
       sample.wall_time             = read_double_attribute(group, "wall_time", path);
       sample.force_points_deformed = read_points(group, "force_points_deformed", path);
       sample.x                     = read_points(group, "x", path);
+      read_obstacles(group, id, sample.actuation, sample.obstacle_wrenches, path);
       if (H5Lexists(group, "base_wrench", H5P_DEFAULT) > 0)
         {
           const auto wrench = read_points(group, "base_wrench", path);
@@ -268,7 +341,22 @@ namespace softchain::data
             text += " " + canonical(c);
         text += "\n";
       }
+    if (!obstacles.empty()) // absent: the text (and so the id) of a free finger as before
+      {
+        text += "contact " + contact_law + "\n";
+        for (const auto &o : obstacles)
+          text += o.canonical_text();
+      }
     return text;
+  }
+
+  std::string ObstacleRecord::canonical_text() const
+  {
+    std::string text = "obstacle " + name + " " + shape;
+    for (const auto &v : {position, direction, half_sizes, motion})
+      for (const double c : v)
+        text += " " + canonical(c);
+    return text + " " + canonical(radius) + " " + canonical(friction) + "\n";
   }
 
   std::string sample_id(const std::string &design_hash, const Actuation &actuation)

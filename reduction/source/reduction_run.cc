@@ -1,5 +1,6 @@
 // ReductionRun: parameters + database -> stiffness CSV files and plots.
 #include <softchain/data/actuation_database.h>
+#include <softchain/reduction/contact_force_table.h>
 #include <softchain/reduction/joint_layout.h>
 #include <softchain/reduction/method_reduction.h>
 #include <softchain/reduction/neutral_layer.h>
@@ -18,15 +19,19 @@ namespace softchain::reduction
 {
   namespace
   {
-    // The converged samples; failed ones are skipped with a warning.
+    // The converged samples but the contact samples (ContactForceTable
+    // takes those); failed ones are skipped with a warning.
     std::vector<data::SampleRecord> converged_samples(const data::ActuationDatabase &database,
-                                                      int                           &n_failed)
+                                                      int                           &n_failed,
+                                                      std::vector<data::SampleRecord> &contact)
     {
       std::vector<data::SampleRecord> converged;
       for (const auto &id : database.sample_ids())
         {
           data::SampleRecord sample = database.read_sample(id);
-          if (sample.converged())
+          if (ContactForceTable::is_contact(sample))
+            contact.push_back(std::move(sample));
+          else if (sample.converged())
             converged.push_back(std::move(sample));
           else
             {
@@ -163,8 +168,10 @@ namespace softchain::reduction
     const JointLayout layout(database.mesh().X, parameters.joint_spacing, parameters.n_joints,
                              database_path_);
     ReductionSummary summary;
-    const auto       samples = converged_samples(database, summary.n_failed_skipped);
-    summary.n_samples_used   = static_cast<int>(samples.size());
+    std::vector<data::SampleRecord> contact;
+    const auto samples     = converged_samples(database, summary.n_failed_skipped, contact);
+    summary.n_samples_used = static_cast<int>(samples.size());
+    ContactForceTable(contact, database.mesh(), database_path_).write(output_dir_ + "/contact");
     const std::string directory = output_dir_ + "/stiffness";
     std::filesystem::create_directories(directory);
     const GeometryFactory geometry(parameters, layout, database.mesh(), samples, database_path_);

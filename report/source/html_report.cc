@@ -7,6 +7,8 @@
 #include <softchain/report/paper_claims.h>
 #include <softchain/report/pressure_snapshots.h>
 #include <softchain/report/surface_mesh.h>
+#include <softchain/report/obstacle_outline.h>
+#include <softchain/report/svg_curve_plot.h>
 #include <softchain/report/svg_finger_renderer.h>
 
 #include <algorithm>
@@ -324,9 +326,86 @@ namespace softchain::report
                    "failed).");
   }
 
+  // The contact samples (contact/contact_forces.csv, ContactForceTable):
+  // the force each obstacle receives against the pressure, the table of it,
+  // and the finger against each obstacle at its highest converged pressure.
+  void HtmlReport::contact_section(HtmlDocument &page) const
+  {
+    page.heading("6. Contact: blocked force and grasp");
+    const std::string file = "contact/contact_forces.csv";
+    if (!fs::exists(output(file)))
+      {
+        page.paragraph("No contact samples: the design lists none (subsection Samples, Contact "
+                       "samples), or `softchain reduce` has not written " + file + ".");
+        return;
+      }
+    const auto                            table = data::CsvTable::read(output(file));
+    SvgCurvePlot                          plot("pressure [kPa]", "force on the obstacle |F| [N]");
+    std::vector<std::string>              obstacles;
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t r = 0; r < table.n_rows(); ++r)
+      {
+        const std::string &name = table.text(r, "obstacle");
+        if (std::find(obstacles.begin(), obstacles.end(), name) == obstacles.end())
+          obstacles.push_back(name);
+        rows.push_back({name, table.text(r, "shape"), fmt(table.number(r, "pressure") / 1e3),
+                        fmt(table.number(r, "force_x")), fmt(table.number(r, "force_y")),
+                        fmt(table.number(r, "force_z")), fmt(table.number(r, "force_norm")),
+                        fmt(table.number(r, "tip_angle_deg")), table.text(r, "status")});
+      }
+    for (const auto &name : obstacles)
+      {
+        SvgCurvePlot::Points points;
+        for (std::size_t r = 0; r < table.n_rows(); ++r)
+          if (table.text(r, "obstacle") == name && table.text(r, "status") == "converged")
+            points.emplace_back(table.number(r, "pressure") / 1e3, table.number(r, "force_norm"));
+        plot.add(name, points);
+      }
+    page.paragraph("The finger inflated against rigid obstacles (subsection Contact; the FEM's "
+                   "augmented-Lagrangian contact, docs/contact.md). Against a table under the "
+                   "tip the force is the actuator's blocked force; against a cylinder under the "
+                   "finger, its grasp force. These samples are not used for the extraction.");
+    page.figure(data_uri("image/svg+xml", plot.render("Force on each obstacle against pressure")),
+                "From " + file + " (converged samples)");
+    page.table({"obstacle", "shape", "pressure [kPa]", "F_x [N]", "F_y [N]", "F_z [N]", "|F| [N]",
+                "tip angle [deg]", "status"},
+               rows);
+    contact_pictures(page, obstacles);
+  }
+
+  // The finger against each obstacle, at the highest converged pressure of
+  // its contact samples, the obstacle drawn behind it.
+  void HtmlReport::contact_pictures(HtmlDocument &page, const std::vector<std::string> &obstacles) const
+  {
+    const SurfaceMesh surface(mesh_);
+    Eigen::AlignedBox3d around;
+    for (const auto &X : mesh_.X)
+      around.extend(Eigen::Vector3d(X[0], X[1], X[2]));
+    for (const auto &name : obstacles)
+      {
+        const data::SampleRecord *shown = nullptr;
+        for (const auto &s : samples_)
+          if (s.converged() && !s.actuation.obstacles.empty() && s.actuation.obstacles.front().name == name &&
+              (!shown || s.actuation.pressure > shown->actuation.pressure))
+            shown = &s;
+        if (!shown)
+          continue;
+        std::vector<Outline> backdrop;
+        for (const auto &o : shown->actuation.obstacles)
+          for (auto &piece : obstacle_outline(o, around))
+            backdrop.push_back(std::move(piece));
+        SvgFingerRenderer renderer(surface, mesh_.X);
+        renderer.include(shown->x);
+        renderer.include(backdrop);
+        const std::string title = name + " at " + fmt(shown->actuation.pressure / 1e3) + " kPa";
+        page.figure(data_uri("image/svg+xml", renderer.render(shown->x, title, {}, backdrop)),
+                    "sample " + shown->id + ": the finger on the obstacle '" + name + "'");
+      }
+  }
+
   void HtmlReport::timing_section(HtmlDocument &page) const
   {
-    page.heading("6. Run times");
+    page.heading("7. Run times");
     if (stage_times_)
       {
         std::vector<std::vector<std::string>> rows;
@@ -364,10 +443,10 @@ namespace softchain::report
 
   void HtmlReport::claims_section(HtmlDocument &page) const
   {
-    page.heading("7. The paper's claims (Sec. IV-A, V)");
+    page.heading("8. The paper's claims (Sec. IV-A, V)");
     int extraction = 0;
     for (const auto &s : samples_)
-      extraction += s.converged() && s.actuation.role != "validation";
+      extraction += s.converged() && s.actuation.role != "validation" && s.actuation.obstacles.empty();
     const PaperClaims claims({design_.name, output_directory_, chain_.method,
                               chain_.half_width_fraction, extraction});
     std::ostringstream html;
@@ -391,6 +470,7 @@ namespace softchain::report
     stiffness_section(page);
     validation_section(page);
     protocol_section(page);
+    contact_section(page);
     timing_section(page);
     claims_section(page);
     return page.str();

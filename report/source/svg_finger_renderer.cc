@@ -61,6 +61,16 @@ namespace softchain::report
         }
   }
 
+  void SvgFingerRenderer::include(const std::vector<Outline> &outlines)
+  {
+    for (const auto &outline : outlines)
+      for (const auto &x : outline)
+        {
+          frame_low_  = frame_low_.cwiseMin(view_.project(x));
+          frame_high_ = frame_high_.cwiseMax(view_.project(x));
+        }
+  }
+
   std::vector<std::size_t> SvgFingerRenderer::far_to_near(const std::vector<double> &depths)
   {
     std::vector<std::size_t> order(depths.size());
@@ -175,8 +185,39 @@ namespace softchain::report
            "\" fill=\"none\" stroke-width=\"2\"/>\n" + svg.str() + "</g>\n";
   }
 
+  // The outlines from the farthest to the nearest, one translucent group.
+  std::string SvgFingerRenderer::backdrop_svg(const std::vector<Outline> &backdrop) const
+  {
+    if (backdrop.empty())
+      return "";
+    std::vector<double> depths;
+    for (const auto &outline : backdrop)
+      {
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        for (const auto &x : outline)
+          centroid += x / outline.size();
+        depths.push_back(view_.depth(centroid));
+      }
+    std::ostringstream svg;
+    svg.setf(std::ios::fixed);
+    svg.precision(1);
+    svg << "<g fill=\"#9ab8d8\" fill-opacity=\"0.55\" stroke=\"#4a6f96\" stroke-width=\"0.8\">\n";
+    for (const std::size_t i : far_to_near(depths))
+      {
+        svg << "<polygon points=\"";
+        for (const auto &x : backdrop[i])
+          {
+            const Eigen::Vector2d p = to_pixels(view_.project(x));
+            svg << p.x() << ',' << p.y() << ' ';
+          }
+        svg << "\"/>\n";
+      }
+    return svg.str() + "</g>\n";
+  }
+
   std::string SvgFingerRenderer::render(const Positions &deformed, const std::string &title,
-                                        const std::vector<Eigen::Vector3d> &chain) const
+                                        const std::vector<Eigen::Vector3d> &chain,
+                                        const std::vector<Outline>         &backdrop) const
   {
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
@@ -187,7 +228,7 @@ namespace softchain::report
         // One group opacity: overlapping rest faces do not darken each other.
         << "<g opacity=\"0.25\" fill=\"#777\" stroke=\"#777\" stroke-width=\"0.5\">\n"
         << polygons_svg(reference_, false) << "</g>\n"
-        << "<g stroke-width=\"0.5\" stroke-linejoin=\"round\">\n"
+        << backdrop_svg(backdrop) << "<g stroke-width=\"0.5\" stroke-linejoin=\"round\">\n"
         << polygons_svg(deformed, true) << "</g>\n"
         << chain_svg(chain) << axes_svg() << "</svg>\n";
     return svg.str();

@@ -122,7 +122,8 @@ namespace softchain::app
   {
     const MPI_Comm     comm = MPI_COMM_WORLD;
     ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
-    const Parameters   prm = Parameters::read(prm_file);
+    Parameters         prm = Parameters::read(prm_file);
+    prm.contact            = prm.contact.solve_scene(); // the obstacles of Obstacles in solve
     if (prm.solver.threads > 0)
       MultithreadInfo::set_thread_limit(prm.solver.threads);
 
@@ -170,7 +171,7 @@ namespace softchain::app
         obstacles = contact->obstacle_wrenches(solver.displacement(), solver.load_state().obstacle_motion);
         for (std::size_t k = 0; k < obstacles.size(); ++k)
           {
-            obstacle_names.push_back(prm.contact.obstacles[k].name);
+            obstacle_names.push_back(prm.contact.obstacles[k].name());
             out << "obstacle " << obstacle_names[k] << " receives force [N] " << obstacles[k].force
                 << ", moment about the origin [N m] " << obstacles[k].moment << '\n';
           }

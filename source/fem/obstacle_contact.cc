@@ -71,7 +71,7 @@ namespace softchain::fem
   bool ObstacleContact::has_friction() const
   {
     return std::any_of(scene.obstacles.begin(), scene.obstacles.end(),
-                       [](const geometry::Obstacle &o) { return o.friction > 0; });
+                       [](const geometry::Obstacle &o) { return o.friction() > 0; });
   }
 
   // "all": every boundary face but the clamped base and the symmetry planes.
@@ -158,7 +158,7 @@ namespace softchain::fem
     const std::size_t index   = point * scene.obstacles.size() + k;
     const double      epsilon = points[point].epsilon;
     PointContact      c;
-    c.y          = eigen(x) - motion * o.motion;
+    c.y          = eigen(x) - motion * o.motion();
     c.distance   = o.body->distance_at_rest(c.y);
     c.pressure   = std::max(0.0, state.lambda[index] - epsilon * c.distance.gap);
     c.tangential = Eigen::Vector3d::Zero();
@@ -170,14 +170,14 @@ namespace softchain::fem
     const Eigen::Matrix3d &H = c.distance.hessian;
     c.stiffness              = epsilon * n * n.transpose() - c.pressure * H;
     c.status                 = Status::slip;
-    if (o.friction == 0)
+    if (o.friction() == 0)
       return c;
     const Eigen::Vector3d z     = c.y - state.anchor[index];
     const Eigen::Matrix3d P     = Eigen::Matrix3d::Identity() - n * n.transpose();
     const Eigen::Vector3d trial = -epsilon * P * z;
     const Eigen::Matrix3d dtrial =
       -epsilon * (P - n.dot(z) * H - n * (H * z).transpose());
-    const double bound = o.friction * c.pressure, size = trial.norm();
+    const double bound = o.friction() * c.pressure, size = trial.norm();
     if (size <= bound)
       {
         c.status     = Status::stick;
@@ -188,7 +188,7 @@ namespace softchain::fem
     const Eigen::Vector3d tau = trial / size;
     c.tangential              = bound * tau;
     c.stiffness -= bound / size * (Eigen::Matrix3d::Identity() - tau * tau.transpose()) * dtrial -
-                   o.friction * epsilon * tau * n.transpose();
+                   o.friction() * epsilon * tau * n.transpose();
     return c;
   }
 
@@ -350,7 +350,7 @@ namespace softchain::fem
         if (d > 0)
           {
             std::ostringstream why;
-            why << file << ": subsection 'Contact/" << scene.obstacles[k].name << "': the " << scene.obstacles[k].body->shape()
+            why << file << ": subsection 'Contact/" << scene.obstacles[k].name() << "': the " << scene.obstacles[k].body->shape()
                 << " intersects the finger at rest (it reaches " << d
                 << " m into the body); place it outside and bring it in with Motion";
             throw data::InputError(why.str());

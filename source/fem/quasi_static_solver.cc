@@ -100,14 +100,17 @@ namespace softchain::fem
                                                            *fe_space->mapping),
                                                          prm.springs.axial_rigidity,
                                                          prm.springs.smoothing_strain);
-    if (!prm.contact.empty())
-      {
-        std::vector<double> youngs_modulus;
-        for (const auto &name : material_names)
-          youngs_modulus.push_back(prm.materials.regions.at(name).youngs_modulus);
-        contact = std::make_unique<ObstacleContact>(*fe_space, prm.contact, youngs_modulus);
-      }
+    for (const auto &name : material_names)
+      youngs_moduli.push_back(prm.materials.regions.at(name).youngs_modulus);
+    set_contact(prm.contact);
     setup_system();
+  }
+
+  void QuasiStaticSolver::set_contact(const geometry::ContactScene &scene)
+  {
+    contact.reset();
+    if (!scene.empty())
+      contact = std::make_unique<ObstacleContact>(*fe_space, scene, youngs_moduli);
   }
 
   void QuasiStaticSolver::setup_system()

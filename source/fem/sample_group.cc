@@ -29,11 +29,22 @@ namespace softchain::fem
       for (const auto &f : actuation.point_forces)
         load.point_loads.push_back({Point<3>(f.point[0], f.point[1], f.point[2]),
                                     Point<3>(f.force[0], f.force[1], f.force[2])});
+      load.obstacle_motion = actuation.obstacles.empty() ? 0.0 : 1.0; // the obstacles at their final place
       if (const auto &m = actuation.tip_motion)
         load.tip_motion = TipMotion{Tensor<1, 3>({m->translation[0], m->translation[1], m->translation[2]}),
                                     Tensor<1, 3>({m->rotation[0], m->rotation[1], m->rotation[2]}),
                                     m->point_contact};
       return load;
+    }
+
+    data::Point3 triple(const Tensor<1, 3> &v) { return {{v[0], v[1], v[2]}}; }
+
+    // The sweep's solver starts without obstacles; each contact sample
+    // brings its own (SampleGroup::solve).
+    Parameters without_obstacles(Parameters prm)
+    {
+      prm.contact = prm.contact.with({});
+      return prm;
     }
 
     // |t| + |theta| of a tip motion [mixed units: one of them grows along a
@@ -48,7 +59,7 @@ namespace softchain::fem
 
   SampleGroup::SampleGroup(const Parameters &parameters, const FingerMesh &mesh,
                            const MPI_Comm group, std::ostream &log)
-    : prm(parameters)
+    : prm(without_obstacles(parameters))
     , solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, group, log)
     , nodes(solver.space())
     , base(solver.space())
@@ -84,7 +95,7 @@ namespace softchain::fem
     return step > 0 ? std::min(1.0, prm.solver.initial_load_step * load_size(target) / step) : 1.0;
   }
 
-  void SampleGroup::check_samples(const std::vector<Sample> &samples) const
+  void SampleGroup::check_samples(const std::vector<Sample> &samples)
   {
     for (const auto &sample : samples)
       if ((sample.actuation.pressure != 0.0 || sample.actuation.cavity_volume_ratio) &&
@@ -97,6 +108,13 @@ namespace softchain::fem
         EmbeddedPoints(solver.space(), points_of(sample.actuation),
                        prm.file + ": subsection 'Samples', sample '" + sample.label +
                          "': force point");
+    for (const auto &sample : samples)
+      if (!sample.actuation.obstacles.empty())
+        {
+          solver.set_contact(prm.contact.with(sample.actuation.obstacles));
+          solver.obstacle_contact()->check_rest_state(prm.file);
+        }
+    solver.set_contact(prm.contact);
   }
 
   // Volume control from the current state (rest, or the start sample's
@@ -125,6 +143,7 @@ namespace softchain::fem
   data::SampleRecord SampleGroup::solve(const Sample &sample, const data::SampleRecord *start,
                                         const data::SampleRecord *anchor, const unsigned int index)
   {
+    solver.set_contact(prm.contact.with(sample.actuation.obstacles));
     if (sample.actuation.tip_motion)
       {
         if (!anchor)
@@ -163,6 +182,9 @@ namespace softchain::fem
     const auto wrench  = base.wrench(solver.support_forces());
     record.base_force  = {{wrench.force[0], wrench.force[1], wrench.force[2]}};
     record.base_moment = {{wrench.moment[0], wrench.moment[1], wrench.moment[2]}};
+    if (const ObstacleContact *contact = solver.obstacle_contact())
+      for (const auto &w : contact->obstacle_wrenches(solver.displacement(), solver.load_state().obstacle_motion))
+        record.obstacle_wrenches.push_back({triple(w.force), triple(w.moment)});
     if (prm.output.write_vtu)
       SolutionOutput(prm.design.output_directory + "/vtu", prm.output.subdivisions)
         .write(solver, "sample_" + sample.id, index);

@@ -39,6 +39,11 @@ namespace softchain::fem
       section.declare("Validation samples", "",
                       "p : point : force [: point : force] ; ...; a point is x,y,z, tip (the "
                       "force point) or tip+arm, tip-arm (the torsion couple's points)");
+      section.declare("Contact samples", "",
+                      "obstacle : p, p, ... ; ... (role contact): the finger inflated to each "
+                      "pressure against the obstacle of subsection Contact named (a blocked "
+                      "force on a plane, a grasp of a cylinder); frictionless ones continue "
+                      "along the pressure, with friction each from rest");
       section.declare("Sample groups", "1", "MPI sample groups solving samples in parallel");
       section.declare("Continuation", "true", "start each sample from its converged neighbour");
     }
@@ -127,6 +132,19 @@ namespace softchain::fem
     // (a vacuum that collapses the finger says nothing of inflation).
     std::string chain_key(const data::Actuation &a)
     {
+      // A contact chain ramps the pressure against its obstacles. Friction
+      // makes the state depend on the path, and a chain continued from a
+      // cached sample would lose its stick history: each such sample is a
+      // chain of its own, solved from rest.
+      if (!a.obstacles.empty())
+        {
+          std::string key = "contact " + a.contact_law;
+          for (const auto &o : a.obstacles)
+            key += " " + o.canonical_text();
+          const bool friction = std::any_of(a.obstacles.begin(), a.obstacles.end(),
+                                            [](const auto &o) { return o.friction > 0; });
+          return friction ? key + " p " + data::canonical(a.pressure) : key;
+        }
       if (pressure_only(a) && !a.cavity_volume_ratio)
         return a.pressure < 0 ? "deflation" : "inflation";
       std::string key = a.role;
@@ -150,7 +168,37 @@ namespace softchain::fem
       return sample;
     }
 
-    std::vector<Sample> listed_samples(const data::PrmSection &s, const SampleSet::TipFace &tip)
+    // "obstacle : p, p, ... ; ..." of Contact samples: one sample per
+    // obstacle and pressure, the obstacle of `contact` by that name.
+    std::vector<Sample> contact_samples(const data::PrmSection &s, const geometry::ContactScene &contact)
+    {
+      std::vector<Sample> samples;
+      for (const auto &entry : split(s.get("Contact samples"), ';'))
+        {
+          if (entry.empty())
+            continue;
+          const auto        fields = split(entry, ':');
+          const std::string where  = s.describe("Contact samples") + ", entry '" + entry + "'";
+          if (fields.size() != 2)
+            throw data::InputError(where + ": needs 'obstacle : pressures'");
+          const geometry::Obstacle *obstacle = contact.find(fields[0]);
+          if (!obstacle)
+            throw data::InputError(where + ": '" + fields[0] + "' is no obstacle of subsection "
+                                           "'Contact'");
+          for (const auto &text : split(fields[1], ','))
+            {
+              const double p = number(text, where);
+              Sample sample = sample_of("contact", p, {}, label("contact " + fields[0], p, "Pa"));
+              sample.actuation.obstacles   = {obstacle->description};
+              sample.actuation.contact_law = contact.law_text();
+              samples.push_back(sample);
+            }
+        }
+      return samples;
+    }
+
+    std::vector<Sample> listed_samples(const data::PrmSection &s, const SampleSet::TipFace &tip,
+                                       const geometry::ContactScene &contact)
     {
       const data::Point3 at =
         s.get("Force point").empty() ? tip.centre : triple(s.get("Force point"), s.describe("Force point"));
@@ -198,6 +246,8 @@ namespace softchain::fem
                 samples.push_back({listed_actuation(role, entries[k], at, arm, where), name, ""});
               }
         }
+      for (auto &sample : contact_samples(s, contact))
+        samples.push_back(sample);
       return samples;
     }
   } // namespace
@@ -214,11 +264,11 @@ namespace softchain::fem
 
   bool pressure_only(const data::Actuation &actuation)
   {
-    return actuation.point_forces.empty() && !actuation.tip_motion;
+    return actuation.point_forces.empty() && !actuation.tip_motion && actuation.obstacles.empty();
   }
 
   SampleSet SampleSet::read(const data::PrmFile &prm, const TipFace &tip,
-                            const std::string &design_hash)
+                            const std::string &design_hash, const geometry::ContactScene &contact)
   {
     data::PrmSection section;
     declare(section);
@@ -234,7 +284,7 @@ namespace softchain::fem
     std::map<std::string, std::size_t>    chain_of;
     std::vector<std::vector<Sample>>      chains;
     std::map<std::string, std::string>    label_of_id;
-    for (auto &sample : listed_samples(section, tip))
+    for (auto &sample : listed_samples(section, tip, contact))
       {
         sample.id = data::sample_id(design_hash, sample.actuation);
         if (!label_of_id.emplace(sample.id, sample.label).second)

@@ -29,11 +29,17 @@
 namespace boost::serialization
 {
   template <class Archive>
+  void serialize(Archive &archive, softchain::data::ObstacleWrench &w, const unsigned int)
+  {
+    archive &w.force &w.moment;
+  }
+
+  template <class Archive>
   void serialize(Archive &archive, softchain::data::SampleRecord &s, const unsigned int)
   {
     archive &s.id &s.actuation.pressure &s.status &s.reason &s.load_factor_reached
       &s.newton_iterations &s.load_steps &s.wall_time &s.x &s.force_points_deformed &s.base_force
-        &s.base_moment;
+        &s.base_moment &s.obstacle_wrenches;
   }
 } // namespace boost::serialization
 
@@ -101,17 +107,11 @@ namespace softchain::fem
     , prm_file(file)
     , database_path(prm.design.database_path())
   {
-    // The database's samples are free fingers: their cache keys know no
-    // obstacles, so a sweep with them would mix scenes under one key.
-    if (!prm.contact.empty())
-      throw data::InputError(prm.file + ": subsection 'Contact' is read by `softchain solve` only; the "
-                             "sample sweep does not take contact samples yet (remove it for `sweep` "
-                             "and `run`)");
     if (prm.solver.threads > 0)
       MultithreadInfo::set_thread_limit(prm.solver.threads);
     FingerMesh::build(prm, mesh);
     hash = design_hash(prm, mesh);
-    set  = SampleSet::read(prm_file, tip_face(mesh.triangulation, file.path()), hash);
+    set  = SampleSet::read(prm_file, tip_face(mesh.triangulation, file.path()), hash, prm.contact);
     protocol = TipMotionProtocol::read(prm_file, hash);
   }
 
@@ -216,13 +216,14 @@ namespace softchain::fem
 
   // Of `indices`, the converged pressure-controlled sample without forces,
   // outside `chain`, at the highest pressure not above the chain's first
-  // sample's; none for a chain at p <= 0, of tip motions or under volume control.
+  // sample's; none for a chain at p <= 0, of tip motions, under volume control
+  // or of contact (a free inflated finger may lie inside the obstacle).
   std::optional<std::size_t> SampleSweep::inflated_start(const std::vector<std::size_t> &chain,
                                                          const std::vector<std::size_t> &indices,
                                                          const Records &known) const
   {
     const data::Actuation &first = set.samples[chain.front()].actuation;
-    if (first.tip_motion || first.cavity_volume_ratio || first.pressure <= 0)
+    if (first.tip_motion || first.cavity_volume_ratio || first.pressure <= 0 || !first.obstacles.empty())
       return std::nullopt;
     std::optional<std::size_t> best;
     double                     best_pressure = 0;

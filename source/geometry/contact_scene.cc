@@ -1,5 +1,6 @@
 #include <softchain/geometry/contact_scene.h>
 
+#include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 
 #include <limits>
@@ -39,35 +40,107 @@ namespace softchain::geometry
       return value;
     }
 
+    data::Point3 triple(const Eigen::Vector3d &v) { return {{v[0], v[1], v[2]}}; }
+
     Obstacle read_obstacle(const data::PrmSection &section, const std::string &name)
     {
-      const std::string p = name + "/";
-      Obstacle          o;
-      o.name           = name;
-      const auto shape = section.get_selection(p + "Shape", {"plane", "sphere", "cylinder", "box"});
-      const auto where = vector_entry(section, p + "Position");
+      const std::string    p = name + "/";
+      data::ObstacleRecord o;
+      o.name     = name;
+      o.shape    = section.get_selection(p + "Shape", {"plane", "sphere", "cylinder", "box"});
+      o.position = triple(vector_entry(section, p + "Position"));
+      if (o.shape == "plane" || o.shape == "cylinder")
+        o.direction = triple(vector_entry(section, p + (o.shape == "plane" ? "Normal" : "Axis")));
+      if (o.shape == "sphere" || o.shape == "cylinder")
+        o.radius = positive_entry(section, p + "Radius");
+      if (o.shape == "box")
+        o.half_sizes = triple(vector_entry(section, p + "Half sizes"));
+      o.friction = section.get_double(p + "Friction coefficient");
+      section.require(o.friction >= 0, p + "Friction coefficient", "must be >= 0");
+      o.motion = triple(vector_entry(section, p + "Motion"));
       try
         {
-          if (shape == "plane")
-            o.body = std::make_shared<PlaneObstacle>(where, vector_entry(section, p + "Normal"));
-          else if (shape == "sphere")
-            o.body = std::make_shared<SphereObstacle>(where, positive_entry(section, p + "Radius"));
-          else if (shape == "cylinder")
-            o.body = std::make_shared<CylinderObstacle>(where, vector_entry(section, p + "Axis"),
-                                                        positive_entry(section, p + "Radius"));
-          else
-            o.body = std::make_shared<BoxObstacle>(where, vector_entry(section, p + "Half sizes"));
+          return Obstacle(o);
         }
       catch (const data::InputError &e)
         {
           throw data::InputError(section.describe(p + "Shape") + ": " + e.what());
         }
-      o.friction = section.get_double(p + "Friction coefficient");
-      section.require(o.friction >= 0, p + "Friction coefficient", "must be >= 0");
-      o.motion = vector_entry(section, p + "Motion");
-      return o;
+    }
+
+    Eigen::Vector3d eigen(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
+
+    std::shared_ptr<const RigidObstacle> body_of(const data::ObstacleRecord &o)
+    {
+      if (o.shape == "plane")
+        return std::make_shared<PlaneObstacle>(eigen(o.position), eigen(o.direction));
+      if (o.shape == "sphere")
+        return std::make_shared<SphereObstacle>(eigen(o.position), o.radius);
+      if (o.shape == "cylinder")
+        return std::make_shared<CylinderObstacle>(eigen(o.position), eigen(o.direction), o.radius);
+      if (o.shape == "box")
+        return std::make_shared<BoxObstacle>(eigen(o.position), eigen(o.half_sizes));
+      throw data::InputError("obstacle '" + o.name + "': unknown shape '" + o.shape +
+                             "' (plane, sphere, cylinder or box)");
     }
   } // namespace
+
+  Obstacle::Obstacle(const data::ObstacleRecord &o)
+    : description(o)
+    , body(body_of(o))
+  {
+    if (!(o.friction >= 0))
+      throw data::InputError("obstacle '" + o.name + "': the friction coefficient must be >= 0");
+  }
+
+  Eigen::Vector3d Obstacle::motion() const { return eigen(description.motion); }
+
+  std::vector<data::ObstacleRecord> ContactScene::descriptions() const
+  {
+    std::vector<data::ObstacleRecord> all;
+    for (const auto &o : obstacles)
+      all.push_back(o.description);
+    return all;
+  }
+
+  std::string ContactScene::law_text() const
+  {
+    std::string text = "surfaces";
+    for (const auto &s : surfaces)
+      text += " " + s;
+    return text + " penalty " + data::canonical(penalty_factor) + " tolerance " +
+           data::canonical(penetration_tolerance) + " augmentations " +
+           std::to_string(max_augmentations);
+  }
+
+  ContactScene ContactScene::with(const std::vector<data::ObstacleRecord> &chosen) const
+  {
+    ContactScene scene = *this;
+    scene.obstacles.clear();
+    scene.in_solve.clear();
+    for (const auto &o : chosen)
+      {
+        scene.obstacles.emplace_back(o);
+        scene.in_solve.push_back(o.name);
+      }
+    return scene;
+  }
+
+  const Obstacle *ContactScene::find(const std::string &name) const
+  {
+    for (const auto &o : obstacles)
+      if (o.name() == name)
+        return &o;
+    return nullptr;
+  }
+
+  ContactScene ContactScene::solve_scene() const
+  {
+    std::vector<data::ObstacleRecord> chosen;
+    for (const auto &name : in_solve)
+      chosen.push_back(find(name)->description);
+    return with(chosen);
+  }
 
   ContactScene ContactScene::read(const data::PrmFile &file)
   {
@@ -83,6 +156,8 @@ namespace softchain::geometry
                     "beyond it Uzawa updates of the contact pressure follow");
     section.declare("Maximum augmentations", "10", "Uzawa updates per load step");
     const auto names = file.subsection_names("Contact");
+    section.declare("Obstacles in solve", "all",
+                    "the obstacles `softchain solve` puts in its scene: all, none, or names");
     for (const auto &name : names)
       declare_obstacle(section, name);
     file.parse_section("Contact", section);
@@ -102,6 +177,16 @@ namespace softchain::geometry
     scene.max_augmentations = static_cast<unsigned int>(augmentations);
     for (const auto &name : names)
       scene.obstacles.push_back(read_obstacle(section, name));
+    const auto in_solve = section.get_list("Obstacles in solve");
+    if (in_solve == std::vector<std::string>{"all"})
+      scene.in_solve = names;
+    else if (in_solve != std::vector<std::string>{"none"})
+      for (const auto &name : in_solve)
+        {
+          section.require(scene.find(name) != nullptr, "Obstacles in solve",
+                          "'" + name + "' is no obstacle of subsection Contact (all, none, or names)");
+          scene.in_solve.push_back(name);
+        }
     return scene;
   }
 } // namespace softchain::geometry

@@ -297,6 +297,53 @@ TEST_CASE("a volume-controlled sample is identified by its volume ratio and keep
   CHECK_FALSE(again.read_sample(pressure.id).actuation.cavity_volume_ratio);
 }
 
+TEST_CASE("a contact sample keeps its obstacles in order, their wrenches and its contact law")
+{
+  ScratchDirectory   dir("db_contact");
+  const std::string  path = dir.file("f.h5");
+  auto               db   = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  const SampleRecord free = sample("h1", 2e4, 0.125);
+  SampleRecord       pressed = free;
+  pressed.actuation.role = "contact";
+  // Named against the alphabet, so that the stored order, not the HDF5
+  // group's, must come back.
+  ObstacleRecord table{"table", "plane", {0, -0.005, 0}, {0, 1, 0}, 0, {}, 0, {}};
+  ObstacleRecord can{"can", "cylinder", {0.05, -0.015, 0}, {0, 0, 1}, 0.01, {}, 0.5, {0, 0.002, 0}};
+  pressed.actuation.obstacles   = {table, can};
+  pressed.actuation.contact_law = "surfaces all penalty 10";
+  pressed.obstacle_wrenches     = {{{0.1, -0.8, 0}, {0, 0, 0.07}}, {{0, -0.25, 0.01}, {0.001, 0, 0.02}}};
+  pressed.id                    = sample_id("h1", pressed.actuation);
+
+  // The obstacles, each field of them and the contact law name the sample;
+  // a free finger's text is the one it had before contact existed.
+  CHECK(pressed.id != free.id);
+  CHECK(free.actuation.canonical_text().find("contact") == std::string::npos);
+  for (const auto change : {+[](Actuation &a) { a.obstacles[1].radius = 0.011; },
+                            +[](Actuation &a) { a.obstacles[1].friction = 0.4; },
+                            +[](Actuation &a) { a.obstacles[0].position[1] = -0.004; },
+                            +[](Actuation &a) { a.obstacles[1].motion[1] = 0.003; },
+                            +[](Actuation &a) { std::swap(a.obstacles[0], a.obstacles[1]); },
+                            +[](Actuation &a) { a.contact_law += " tolerance 0.02"; }})
+    {
+      Actuation other = pressed.actuation;
+      change(other);
+      CHECK(sample_id("h1", other) != pressed.id);
+    }
+
+  db.store_sample(free);
+  db.store_sample(pressed);
+  const auto again = ActuationDatabase::open(path);
+  const auto read  = again.read_sample(pressed.id);
+  check_equal_samples(read, pressed);
+  REQUIRE(read.actuation.obstacles.size() == 2);
+  CHECK(read.actuation.obstacles[0].name == "table");
+  CHECK(read.actuation.obstacles[1].shape == "cylinder");
+  CHECK(read.actuation.obstacles[1].friction == 0.5);
+  CHECK(read.actuation.contact_law == pressed.actuation.contact_law);
+  CHECK(again.read_sample(free.id).actuation.obstacles.empty());
+  CHECK(again.read_sample(free.id).obstacle_wrenches.empty());
+}
+
 TEST_CASE("a database in the single-file layout of earlier versions opens and extends")
 {
   ScratchDirectory  dir("db_single_file");

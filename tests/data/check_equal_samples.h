@@ -25,5 +25,11 @@ namespace softchain::testing
     CHECK(a.force_points_deformed == b.force_points_deformed);
     CHECK(a.base_force == b.base_force);
     CHECK(a.base_moment == b.base_moment);
+    REQUIRE(a.obstacle_wrenches.size() == b.obstacle_wrenches.size());
+    for (std::size_t k = 0; k < a.obstacle_wrenches.size(); ++k)
+      {
+        CHECK(a.obstacle_wrenches[k].force == b.obstacle_wrenches[k].force);
+        CHECK(a.obstacle_wrenches[k].moment == b.obstacle_wrenches[k].moment);
+      }
   }
 } // namespace softchain::testing

@@ -1,6 +1,7 @@
 // SampleSet: the lateral and torsion samples are repeated at every pressure
 // of `Force sample pressures`, each pressure a continuation chain of its own;
 // the inflations form one chain per sign of the pressure.
+#include <softchain/data/input_error.h>
 #include <softchain/fem/sample_set.h>
 
 #include "../data/scratch_directory.h"
@@ -18,12 +19,16 @@ namespace
 {
   // The sample set of a .prm whose Samples subsection holds `entries`, for
   // a tip face centred at x = 0.08 m and 16 mm wide (default torsion arm 4 mm).
-  SampleSet read_samples(const std::string &name, const std::string &entries)
+  // `contact`: the entries of a subsection Contact (none if empty).
+  SampleSet read_samples(const std::string &name, const std::string &entries,
+                         const std::string &contact = "")
   {
     const testing::ScratchDirectory scratch("sample_set_test");
     const std::string               path = scratch.file(name + ".prm");
-    std::ofstream(path) << "subsection Samples\n" << entries << "end\n";
-    return SampleSet::read(data::PrmFile::read(path), {{{0.08, 0, 0}}, 0.016}, "h");
+    std::ofstream(path) << "subsection Samples\n" << entries << "end\n"
+                        << (contact.empty() ? "" : "subsection Contact\n" + contact + "end\n");
+    const auto file = data::PrmFile::read(path);
+    return SampleSet::read(file, {{{0.08, 0, 0}}, 0.016}, "h", geometry::ContactScene::read(file));
   }
 
   // The first sample of `role` in `set` (end() if none).
@@ -132,4 +137,55 @@ TEST_CASE("a chord sample is a tip force of role chord, listed before the valida
   CHECK_THROWS_WITH(read_samples("bad_chord", "  set Chord samples = 4e4 : tip\n"),
                     Catch::Contains("parameter 'Chord samples'") &&
                       Catch::Contains("sample 'chord 1': '4e4 : tip' needs 'p'"));
+}
+
+TEST_CASE("contact samples carry their obstacle: frictionless ones form one chain and with friction one each")
+{
+  const std::string contact = "  subsection table\n    set Shape = plane\n    set Position = 0, -0.005, 0\n  end\n"
+                              "  subsection can\n    set Shape = cylinder\n    set Friction coefficient = 0.3\n  end\n";
+  const SampleSet set = read_samples("contact", "  set Pressure sweep = 1e4, 2e4\n"
+                                                "  set Contact samples = table : 3e4, 1e4 ; can : 1e4, 2e4\n",
+                                     contact);
+  REQUIRE(set.samples.size() == 6);
+  // Chains: the inflations; the table at 10 and 30 kPa, ordered by pressure;
+  // the can at 10 kPa; the can at 20 kPa.
+  REQUIRE(set.chains.size() == 4);
+  const auto table = first_of_role(set, "contact");
+  REQUIRE(table != set.samples.end());
+  CHECK(table->label == "contact table 10000 Pa");
+  REQUIRE(table->actuation.obstacles.size() == 1);
+  CHECK(table->actuation.obstacles[0].name == "table");
+  CHECK(table->actuation.obstacles[0].position[1] == -0.005);
+  CHECK_FALSE(table->actuation.contact_law.empty());
+  CHECK_FALSE(pressure_only(table->actuation)); // not an inflation: it never heads a force chain
+  for (const auto &chain : set.chains)
+    {
+      const auto &first = set.samples[chain.front()].actuation;
+      if (first.obstacles.empty())
+        continue;
+      const bool friction = first.obstacles[0].friction > 0;
+      CHECK(chain.size() == (friction ? 1u : 2u));
+      if (!friction)
+        CHECK(set.samples[chain.back()].actuation.pressure == 3e4);
+    }
+  // The contact law is part of the samples' ids: a stiffer penalty solves them anew.
+  const SampleSet stiffer = read_samples("stiffer", "  set Contact samples = table : 1e4\n",
+                                         contact + "  set Penalty factor = 20\n");
+  CHECK(stiffer.samples[0].id != table->id);
+}
+
+TEST_CASE("a contact sample naming no obstacle of subsection Contact is an InputError naming it")
+{
+  try
+    {
+      read_samples("no_obstacle", "  set Contact samples = wall : 1e4\n",
+                   "  subsection table\n    set Shape = plane\n  end\n");
+      FAIL("no error");
+    }
+  catch (const data::InputError &e)
+    {
+      const std::string what = e.what();
+      CHECK(what.find("Contact samples") != std::string::npos);
+      CHECK(what.find("'wall' is no obstacle") != std::string::npos);
+    }
 }

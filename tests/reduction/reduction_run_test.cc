@@ -77,9 +77,18 @@ namespace
     return m;
   }
 
+  // The nodes of the face x = L as the tip face (for the contact table's tip pose).
+  SyntheticFinger with_tip_face(SyntheticFinger finger)
+  {
+    for (std::size_t n = 0; n < finger.mesh.X.size(); ++n)
+      if (std::abs(finger.mesh.X[n][0] - L) < 1e-12)
+        finger.mesh.tip_nodes.push_back(n);
+    return finger;
+  }
+
   struct Scenario
   {
-    SyntheticFinger finger = hollow_box(uniform_planes(L, 100));
+    SyntheticFinger finger = with_tip_face(hollow_box(uniform_planes(L, 100)));
     double          y_c    = finger.node_centroid_y();
     // torsion: (force, twist rate); lateral: force and radius.
     std::vector<std::pair<double, double>> torsion = {{0.1, 2.0}, {0.2, 4.0}};
@@ -93,6 +102,19 @@ namespace
     std::vector<data::PointForce> lateral_couple() const
     {
       return couple(y_c, {-lateral_force, 0, 0});
+    }
+
+    // A finger bent like the pressure samples onto an obstacle, which
+    // receives (0, -p / 1e5, 0) N: a contact sample, which the extraction
+    // must leave out (its torques would need the contact forces).
+    data::SampleRecord contact_sample(double p, const std::string &obstacle) const
+    {
+      data::SampleRecord s = sample(finger, "contact", p, {}, arc_about_z(radius_at(p)));
+      s.actuation.obstacles   = {{obstacle, "plane", {0, -0.01, 0}, {0, 1, 0}, 0, {}, 0, {}}};
+      s.actuation.contact_law = "synthetic";
+      s.id                    = data::sample_id(hash, s.actuation);
+      s.obstacle_wrenches     = {{{0, -p / 1e5, 0}, {0, 0, -L * p / 1e5}}};
+      return s;
     }
 
     // Stores the samples not yet in the database at `path`, like a sweep.
@@ -110,6 +132,9 @@ namespace
         store(sample(finger, "torsion", 0, twist_couple(F), twist_about_x(kappa, y_c)));
       store(sample(finger, "lateral", 0, lateral_couple(), arc_about_y(lateral_radius)));
       store(sample(finger, "validation", 3e4, {}, arc_about_z(0.2)));
+      for (const double p : {2e4, 1e4}) // against the alphabet and the pressure: sorted on output
+        for (const auto &obstacle : {"wall", "table"})
+          store(contact_sample(p, obstacle));
       data::SampleRecord failed = sample(finger, "pressure", 9e4, {}, arc_about_z(0.05));
       failed.status             = data::SampleStatus::failed;
       failed.reason             = "synthetic failure";
@@ -196,8 +221,24 @@ TEST_CASE("run_reduction end to end on a synthetic database")
   s.write_database(dir.file("database.h5"));
   const std::string prm = write_prm(dir, good_prm);
   const auto summary = reduction::ReductionRun(data::PrmFile::read(prm), dir.file("database.h5"), dir.file("out")).run();
-  CHECK(summary.n_samples_used == 6);
+  CHECK(summary.n_samples_used == 6); // not the contact samples
   CHECK(summary.n_failed_skipped == 1);
+  // The contact samples' table: by obstacle, then pressure; the tip turned
+  // by L / |R| about z (an arc of radius R), the wrench as stored.
+  const CsvTable contact = CsvTable::read(dir.file("out/contact/contact_forces.csv"));
+  REQUIRE(contact.n_rows() == 4);
+  for (std::size_t r = 0; r < 4; ++r)
+    {
+      const double p = r % 2 ? 2e4 : 1e4;
+      CHECK(contact.text(r, "obstacle") == (r < 2 ? "table" : "wall"));
+      CHECK(contact.number(r, "pressure") == p);
+      CHECK(contact.number(r, "force_y") == -p / 1e5);
+      CHECK(contact.number(r, "force_norm") == Approx(p / 1e5).epsilon(1e-15));
+      CHECK(contact.number(r, "moment_z") == -L * p / 1e5);
+      CHECK(contact.text(r, "status") == "converged");
+      // Kabsch's rotation of the exactly rotated tip face: to ~1e-12 rad.
+      CHECK(contact.number(r, "tip_angle_deg") == Approx(L / std::abs(radius_at(p)) * 180 / M_PI).epsilon(1e-9));
+    }
   CHECK(summary.n_below_threshold == 0);
   CHECK(reduction::run_reduction(data::PrmFile::read(prm), dir.file("database.h5"), dir.file("out")) == 0);
 

@@ -31,7 +31,7 @@ TEST_CASE("The report holds every section, its pictures and its tables")
   const std::string html = HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   for (const char *section : {"Summary", "1. The design", "2. The deformed finger", "3. Stiffness profiles",
                               "4. Chain against FEM", "Baseline comparison", "5. Prescribed tip motion",
-                              "6. Run times", "7. The paper's claims"})
+                              "6. Contact", "7. Run times", "8. The paper's claims"})
     CHECK(html.find(section) != std::string::npos);
   CHECK(html.find("set Name = a&lt;b") != std::string::npos); // the .prm, escaped
   CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == 3); // 0, 40, 80 kPa
@@ -95,6 +95,39 @@ TEST_CASE("Without a chain validation the report says so instead of failing")
   CHECK(html.find("3. Stiffness") != std::string::npos);
 }
 
+TEST_CASE("The contact section plots the force per obstacle and draws the finger on it, or says there is none")
+{
+  const SyntheticOutputs outputs("report_contact");
+  const auto report = [&] {
+    return HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
+  };
+  std::string html = report();
+  CHECK(html.find("No contact samples") != std::string::npos);
+  const int pictures = softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,");
+
+  // The converged 40 kPa sample again, pressed on a cylinder.
+  auto database = softchain::data::ActuationDatabase::open(outputs.database());
+  softchain::data::SampleRecord pressed = database.read_sample(database.sample_ids().front());
+  REQUIRE(pressed.converged());
+  pressed.actuation.role      = "contact";
+  pressed.actuation.obstacles = {{"can", "cylinder", {0.5, -0.5, 0}, {0, 0, 1}, 0.2, {}, 0, {}}};
+  pressed.id                  = softchain::data::sample_id("hash", pressed.actuation);
+  pressed.obstacle_wrenches   = {{{0, -0.75, 0}, {0, 0, 0}}};
+  database.store_sample(pressed);
+  softchain::data::CsvTable forces({"sample", "obstacle", "shape", "pressure", "status", "force_x", "force_y",
+                                    "force_z", "force_norm", "tip_angle_deg"});
+  forces.add_row({pressed.id, "can", "cylinder", "40000", "converged", "0", "-0.75", "0", "0.75", "30"});
+  forces.write(outputs.file("contact/contact_forces.csv"));
+  html = report();
+  CHECK(html.find("No contact samples") == std::string::npos);
+  CHECK(html.find("6. Contact") < html.find("7. Run times"));
+  CHECK(html.find("<tr><td>can</td><td>cylinder</td><td>40</td><td>0</td><td>-0.75</td><td>0</td><td>0.75</td><td>30</td><td>converged</td></tr>") !=
+        std::string::npos);
+  // The force plot and the finger on the can: two more pictures.
+  CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == pictures + 2);
+  CHECK(html.find("the finger on the obstacle 'can'") != std::string::npos);
+}
+
 TEST_CASE("The protocol's base torque errors, or a line saying the design has none")
 {
   const SyntheticOutputs outputs("report_protocol");
@@ -121,7 +154,7 @@ TEST_CASE("The protocol's base torque errors, or a line saying the design has no
   CHECK(html.find("No tip-motion protocol") == std::string::npos);
   // Between the validation and the run times.
   CHECK(html.find("4. Chain against FEM") < html.find("5. Prescribed tip motion"));
-  CHECK(html.find("5. Prescribed tip motion") < html.find("6. Run times"));
+  CHECK(html.find("5. Prescribed tip motion") < html.find("7. Run times"));
   // Cells with 3 significant digits, as the report's other tables: torques
   // in mN m (0.0125 N m -> 12.5), percentages as written (12.3456 -> 12.3),
   // failed points as the CSV counts them.

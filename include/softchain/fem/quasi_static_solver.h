@@ -156,6 +156,11 @@ namespace softchain::fem
     const FollowerPressure              &pressure_load() const { return *pressure; }
     // The contact with the obstacles of subsection Contact (none: nullptr).
     const ObstacleContact               *obstacle_contact() const { return contact.get(); }
+    // Puts the obstacles of `scene` in the following solves, with a fresh
+    // contact history (no obstacles: no contact). The solver starts with
+    // subsection Contact's scene; the sample sweep sets each contact
+    // sample's own.
+    void                                 set_contact(const geometry::ContactScene &scene);
     // The current state, with the obstacles moved by `obstacle_motion`, is
     // a converged one: the contact's stick anchors follow it
     // (ObstacleContact::commit). Returns the contact's history there, to
@@ -180,6 +185,7 @@ namespace softchain::fem
     std::unique_ptr<DeadSurfaceTraction>                tip_traction;
     std::unique_ptr<EmbeddedSpringNetwork>              springs;
     std::unique_ptr<ObstacleContact>                    contact;
+    std::vector<double>                                 youngs_moduli; // per material, for the contact's penalty
     dealii::TimerOutput                                         computing_timer;
     std::unique_ptr<TangentSolver>                      tangent_solver; // TangentSolver::create()
     // The cells' places in `matrix` for fe_space->fixed_dofs on one rank.

@@ -27,14 +27,17 @@ namespace softchain::fem
     }
 
     // Throws data::InputError naming the file and the first sample with a
-    // pressure on a mesh without a cavity or a force point outside the body.
-    void check_samples(const std::vector<Sample> &samples) const;
+    // pressure on a mesh without a cavity, a force point outside the body or
+    // an obstacle that the finger at rest penetrates.
+    void check_samples(const std::vector<Sample> &samples);
 
     // Solves `sample` from rest (start == nullptr) or from the converged
     // sample `start` (its stored positions and actuation); a sample with a
     // cavity volume ratio by volume control, the record's pressure the one
     // found. A sample with a tip motion needs `anchor`, the equilibrium its
-    // motion is relative to (InputError without). A failed solve returns the last converged state,
+    // motion is relative to (InputError without). A contact sample is solved
+    // against its own obstacles (the obstacles at their place from the
+    // start) and records the wrench each receives. A failed solve returns the last converged state,
     // its reason and load factor along the path from the start. Writes
     // vtu/sample_<id>_* when Output/Write VTU.
     data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
@@ -45,7 +48,7 @@ namespace softchain::fem
     void print_timing() { solver.timer().print_summary(); }
 
   private:
-    const Parameters  prm; // the solver's (it keeps a reference)
+    const Parameters  prm; // the solver's (it keeps a reference), without obstacles
     QuasiStaticSolver solver;
     DatabaseExport    nodes;
     BaseReaction      base; // each sample's base wrench

@@ -25,6 +25,10 @@
 //     set Validation samples = 40e3 : tip : 0,0,0.2 ; 20e3 : 0.07,0.006,0.009 : 0,-0.1,0
 //                            # p : point : force [: point : force ...] ; ...
 //                            # role validation; 'tip' is the force point
+//     set Contact samples    = table : 10e3, 30e3 ; can : 20e3
+//                            # obstacle : pressures ; ... role contact: the
+//                            # finger inflated against the obstacle of
+//                            # subsection Contact by that name
 //     set Sample groups      = 1     # MPI sample groups (1: all ranks per solve)
 //     set Continuation       = true  # start from the converged neighbour
 //   end
@@ -34,10 +38,14 @@
 // that each continues from the one before it (and the sweep starts a chain's
 // first sample from a pressure-only sample, SampleSweep). The inflations
 // under pressure control, swept or held out, form one chain per sign of the
-// pressure. deal.II-free: the FEM tier checks that the points lie inside the
+// pressure. A frictionless contact sample continues from the one at the
+// next lower pressure against the same obstacle; with friction the state
+// depends on the path, and each sample is a chain of its own, from rest.
+// deal.II-free: the FEM tier checks that the points lie inside the
 // body before any solve.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/prm_file.h>
+#include <softchain/geometry/contact_scene.h>
 
 #include <string>
 #include <vector>
@@ -56,7 +64,7 @@ namespace softchain::fem
   double load_size(const data::Actuation &actuation);
 
   // Whether an actuation inflates the finger alone (pressure or volume
-  // control; no forces, no tip motion): the sweep solves these first, and
+  // control; no forces, no tip motion, no obstacles): the sweep solves these first, and
   // other chains start from the pressure-controlled ones (SampleSweep).
   bool pressure_only(const data::Actuation &actuation);
 
@@ -70,9 +78,10 @@ namespace softchain::fem
       double       width = 0.0; // extent along z
     };
 
-    // Throws data::InputError naming file, parameter and sample.
+    // Throws data::InputError naming file, parameter and sample. `contact`:
+    // the obstacles the contact samples may name.
     static SampleSet read(const data::PrmFile &prm, const TipFace &tip,
-                          const std::string &design_hash);
+                          const std::string &design_hash, const geometry::ContactScene &contact);
 
     std::vector<Sample>                   samples; // chain after chain
     std::vector<std::vector<std::size_t>> chains;  // indices into samples

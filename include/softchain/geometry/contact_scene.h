@@ -11,9 +11,14 @@
 //       set Normal   = 0, 1, 0     # plane
 //       set Motion   = 0, 0.005, 0 # translation along the load path, m
 //     end
+//     set Obstacles in solve = all # or none, or obstacle names
 //   end
+// `softchain solve` puts the obstacles of `Obstacles in solve` in its scene;
+// the sample sweep puts in each contact sample's scene the obstacle that
+// the sample names (subsection Samples, Contact samples).
 #include <softchain/geometry/rigid_obstacle.h>
 
+#include <softchain/data/obstacle_record.h>
 #include <softchain/data/prm_file.h>
 
 #include <Eigen/Dense>
@@ -24,19 +29,29 @@
 
 namespace softchain::geometry
 {
+  // An obstacle as the .prm or a database sample describes it (name, shape,
+  // pose, friction, motion) and its signed distance.
   struct Obstacle
   {
-    std::string                          name;
+    data::ObstacleRecord                 description;
     std::shared_ptr<const RigidObstacle> body;
-    double                               friction = 0; // Coulomb coefficient
+
+    // Builds the body; an InputError if the description is no obstacle
+    // (a zero normal or axis, a radius or half size <= 0, mu < 0).
+    explicit Obstacle(const data::ObstacleRecord &description);
+
+    const std::string &name() const { return description.name; }
+    double             friction() const { return description.friction; }
     // The translation of the obstacle at the end of a load path (linear in
     // the path parameter from its rest pose), m.
-    Eigen::Vector3d                      motion = Eigen::Vector3d::Zero();
+    Eigen::Vector3d    motion() const;
   };
 
   struct ContactScene
   {
     std::vector<Obstacle> obstacles; // none: no contact
+    // The names of the obstacles `softchain solve` uses (Obstacles in solve).
+    std::vector<std::string> in_solve;
     // Boundary groups that may touch: "all" (every boundary face but the
     // clamped base) or names among tip, outer, cavity.
     std::vector<std::string> surfaces{"all"};
@@ -56,8 +71,22 @@ namespace softchain::geometry
 
     bool empty() const { return obstacles.empty(); }
 
+    // The obstacles' descriptions, in order.
+    std::vector<data::ObstacleRecord> descriptions() const;
+    // The contact constants (Surfaces, Penalty factor, Penetration
+    // tolerance, Maximum augmentations) as canonical text: a contact
+    // sample's cache key holds it, as they change its solution.
+    std::string law_text() const;
+    // The same constants with the obstacles `chosen` instead (a contact
+    // sample's scene).
+    ContactScene with(const std::vector<data::ObstacleRecord> &chosen) const;
+    // The obstacle named `name`, or nullptr.
+    const Obstacle *find(const std::string &name) const;
+
     // Reads the subsection "Contact" (absent: no obstacles). Throws
     // InputError naming file, line and parameter.
     static ContactScene read(const data::PrmFile &file);
+    // The scene of `softchain solve`: the obstacles of `in_solve`.
+    ContactScene solve_scene() const;
   };
 } // namespace softchain::geometry

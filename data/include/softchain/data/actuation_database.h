@@ -31,6 +31,14 @@
 //                         base_wrench (2,3): the force and the moment the
 //                         finger exerts on its base (about the base face's
 //                         centroid); absent in older databases (read as NaN)
+//                         only in contact samples: the root attribute
+//                         contact_law (the contact constants' canonical text)
+//                         and a group obstacles/<name> per obstacle with the
+//                         attributes shape, order (its place in the sample's
+//                         list), radius, friction and the (1,3) datasets
+//                         position, direction, half_sizes, motion
+//                         (ObstacleRecord) and wrench (2,3): the force and the
+//                         moment about the origin the obstacle receives
 //   PATH.lock             empty; a writer holds an advisory lock on it
 // The database file is written once (atomically) when the database is
 // created; each sample file is written to a temporary, fsync'ed and renamed
@@ -49,6 +57,8 @@
 // temporary file and before it is closed and renamed: a deterministic crash
 // inside a store for the crash tests (tests/data, tests/reduction). Never
 // set it otherwise.
+#include <softchain/data/obstacle_record.h>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -109,16 +119,25 @@ namespace softchain::data
     // load), "chord" (the links' compliance), "validation" (never used for
     // extraction),
     // "protocol inflation" and "protocol" (the prescribed-motion protocol:
-    // its inflated state and its tip motions), or a user's name.
+    // its inflated state and its tip motions), "contact" (a finger pressed
+    // on obstacles: blocked force, grasp; never used for extraction), or a
+    // user's name.
     std::string role;
     std::optional<TipMotion> tip_motion; // none: the tip is free
     // Volume control: the cavity inflated to this multiple of its volume at
     // rest; `pressure` is then an outcome, the pressure that holds it there
     // (none: pressure control, `pressure` is prescribed).
     std::optional<double> cavity_volume_ratio;
+    // A contact sample: the rigid obstacles the finger may touch (role
+    // "contact"), each at its final pose, and the canonical text of the
+    // contact constants it was solved with (surfaces, penalty factor,
+    // penetration tolerance); none: a free finger.
+    std::vector<ObstacleRecord> obstacles;
+    std::string                 contact_law;
 
     // Canonical text of the actuation (pressure or, under volume control,
-    // the volume ratio instead; points, forces, tip motion; not role).
+    // the volume ratio instead; points, forces, tip motion, obstacles and
+    // contact law; not role).
     std::string canonical_text() const;
   };
 
@@ -151,6 +170,8 @@ namespace softchain::data
     // before it was stored).
     Point3 base_force  = {{NAN, NAN, NAN}};
     Point3 base_moment = {{NAN, NAN, NAN}};
+    // What each obstacle of the actuation receives, in its order.
+    std::vector<ObstacleWrench> obstacle_wrenches;
 
     bool converged() const { return status == SampleStatus::converged; }
   };

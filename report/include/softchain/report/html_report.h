@@ -3,10 +3,11 @@
 // `softchain run`: the design, pictures of the deformed finger at 0, 40 and
 // 80 kPa, the stiffness profiles (the paper's Fig. 5-7 equivalents), the
 // chain-vs-FEM validation and the baseline comparison, the base torques of
-// the prescribed tip motions (the paper's Sec. IV-B), the run times and the
-// paper's claims with verdicts. One HTML file: every image is a data: URI.
-// It reads what the other tiers wrote (database.h5, stiffness/, chain/) and
-// nothing else.
+// the prescribed tip motions (the paper's Sec. IV-B), the contact samples
+// (force against pressure per obstacle, the finger on each obstacle), the
+// run times and the paper's claims with verdicts. One HTML file: every image
+// is a data: URI. It reads what the other tiers wrote (database.h5,
+// stiffness/, chain/, contact/) and nothing else.
 #include <softchain/chain/chain_parameters.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/report/html_document.h>
@@ -51,6 +52,8 @@ namespace softchain::report
     // errors over the prescribed tip motions (chain/protocol_summary.csv),
     // or a paragraph saying the design has none.
     void protocol_section(HtmlDocument &page) const;
+    void contact_section(HtmlDocument &page) const;
+    void contact_pictures(HtmlDocument &page, const std::vector<std::string> &obstacles) const;
     void timing_section(HtmlDocument &page) const;
     void claims_section(HtmlDocument &page) const;
 

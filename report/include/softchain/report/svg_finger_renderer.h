@@ -19,6 +19,9 @@ namespace softchain::report
   {
   public:
     using Positions = std::vector<data::Point3>;
+    // A closed polygon in space (e.g. a piece of an obstacle's surface,
+    // ObstacleOutline), drawn behind the finger.
+    using Outline = std::vector<Eigen::Vector3d>;
 
     SvgFingerRenderer(SurfaceMesh surface, Positions reference, ObliqueView view = ObliqueView());
 
@@ -27,13 +30,16 @@ namespace softchain::report
     // the pictures of several pressures can be compared; the rest shape is
     // always inside it.
     void include(const Positions &positions);
+    void include(const std::vector<Outline> &outlines);
 
     // The SVG document of the finger at `deformed` (node positions, same
     // numbering as the reference) over its rest shape, `title` at the top;
     // `chain` (joint positions, then the tip) is drawn on top as a red
-    // polyline with a dot at every point.
+    // polyline with a dot at every point; `backdrop` (obstacles) is drawn
+    // in translucent blue behind the finger.
     std::string render(const Positions &deformed, const std::string &title,
-                       const std::vector<Eigen::Vector3d> &chain = {}) const;
+                       const std::vector<Eigen::Vector3d> &chain    = {},
+                       const std::vector<Outline>         &backdrop = {}) const;
 
     // Painter's algorithm: the indices of `depths` from the farthest face
     // (smallest depth) to the nearest; ties keep their order.
@@ -53,6 +59,7 @@ namespace softchain::report
     std::string                polygons_svg(const Positions &x, bool shaded) const;
     std::string                axes_svg() const;
     std::string                chain_svg(const std::vector<Eigen::Vector3d> &chain) const;
+    std::string                backdrop_svg(const std::vector<Outline> &backdrop) const;
     Eigen::Vector2d            to_pixels(const Eigen::Vector2d &screen) const;
 
     SurfaceMesh     surface_;
