@@ -3,9 +3,12 @@
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/fem/hyperelastic_material.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace softchain::fem::test
 {
@@ -31,6 +34,8 @@ namespace softchain::fem::test
         : next(mesh.n_vertices() + 1)
       {}
       unsigned int vertex(const unsigned int v) const { return v + 1; }
+      // A node of no mesh vertex or edge (the rigid plane's).
+      unsigned int extra() { return next++; }
       unsigned int midpoint(unsigned int a, unsigned int b)
       {
         if (a > b)
@@ -60,6 +65,44 @@ namespace softchain::fem::test
       inp << "*NSET, NSET=" << name << '\n';
       for (const unsigned int n : nodes)
         inp << n << ",\n";
+    }
+
+    // The rigid plane y = plane.y as the top face (S5) of one C3D8 slab
+    // below it, reaching half the body's size beyond the body along x and z
+    // (its nodes: the set PLANE, fixed by the caller), and the contact of
+    // the cells' -y faces (deal.II face 2, S3) with that face.
+    void write_rigid_plane(std::ostream &inp, const Triangulation<3> &mesh, NodeNumbers &numbers,
+                           const CalculixDeck::RigidPlane &plane, const double youngs_modulus)
+    {
+      const auto   box = GridTools::compute_bounding_box(mesh);
+      const auto   lo = box.get_boundary_points().first, hi = box.get_boundary_points().second;
+      const auto   size = hi - lo;
+      const double x[2] = {lo[0] - size[0] / 2, hi[0] + size[0] / 2},
+                   y[2] = {plane.y - size[1], plane.y}, z[2] = {lo[2] - size[2] / 2, hi[2] + size[2] / 2};
+      unsigned int slab[8]; // deal.II's lexicographic order
+      inp << "*NODE, NSET=PLANE\n";
+      for (unsigned int v = 0; v < 8; ++v)
+        write_point(inp, slab[v] = numbers.extra(), Point<3>(x[v & 1], y[(v >> 1) & 1], z[v >> 2]));
+      const unsigned int element = mesh.n_active_cells() + 1;
+      inp << "*ELEMENT, TYPE=C3D8, ELSET=RIGID\n" << element;
+      for (const unsigned int v : corner)
+        inp << ", " << slab[v];
+      inp << "\n*SOLID SECTION, ELSET=RIGID, MATERIAL=SILICONE\n" // any: its nodes are fixed
+          << "*SURFACE, NAME=TABLE\n" << element << ", S" << ccx_face[3] << '\n'
+          << "*SURFACE, NAME=BODY\n";
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (cell->face(2)->at_boundary() && cell->face(2)->boundary_id() != boundary::base)
+          inp << cell->active_cell_index() + 1 << ", S" << ccx_face[2] << '\n';
+      // Slave BODY, master TABLE; the interaction's law: p = K overclosure,
+      // quasi-bilinear for node to surface, which needs the tension
+      // sigma_inf it tends to at large clearances: 1e-8 E, negligible.
+      inp << "*CONTACT PAIR, INTERACTION=TABLE_CONTACT, TYPE="
+          << (plane.surface_to_surface ? "SURFACE TO SURFACE" : "NODE TO SURFACE") << "\nBODY, TABLE\n"
+          << "*SURFACE INTERACTION, NAME=TABLE_CONTACT\n"
+          << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n" << plane.penalty << ", "
+          << 1e-8 * youngs_modulus << '\n';
+      if (plane.friction > 0) // mu, stick slope
+        inp << "*FRICTION\n" << plane.friction << ", " << plane.stick_slope << '\n';
     }
   } // namespace
 
@@ -121,8 +164,10 @@ namespace softchain::fem::test
     write_node_set(inp, "PRINTED", print);
     inp << "*MATERIAL, NAME=SILICONE\n*HYPERELASTIC, NEO HOOKE\n"
         << c.mu / 2 << ", " << 2 / c.kappa << '\n'
-        << "*SOLID SECTION, ELSET=EALL, MATERIAL=SILICONE\n"
-        << "*BOUNDARY\nBASE, 1, 3\n"
+        << "*SOLID SECTION, ELSET=EALL, MATERIAL=SILICONE\n";
+    if (plane)
+      write_rigid_plane(inp, mesh, numbers, *plane, youngs_modulus);
+    inp << "*BOUNDARY\nBASE, 1, 3\n" << (plane ? "PLANE, 1, 3\n" : "")
         << "*STEP, NLGEOM, INC=1000\n*STATIC\n"
         << first_increment << ", 1.0, 1e-5, " << max_increment << '\n'
         << "*CONTROLS, PARAMETERS=FIELD\n" << tolerance << ", " << tolerance << '\n';
@@ -141,7 +186,10 @@ namespace softchain::fem::test
               inp << cell->active_cell_index() + 1 << ", P" << ccx_face[f] << ", " << load.pressure
                   << '\n';
       }
-    inp << "*NODE PRINT, NSET=PRINTED\nU\n*END STEP\n";
+    inp << "*NODE PRINT, NSET=PRINTED\nU\n";
+    if (plane) // the sum of the plane's reactions: -(the force it receives)
+      inp << "*NODE PRINT, NSET=PLANE, TOTALS=ONLY\nRF\n";
+    inp << "*END STEP\n";
   }
 
   std::map<unsigned int, Tensor<1, 3>> calculix_displacements(const std::string &dat)
@@ -149,14 +197,50 @@ namespace softchain::fem::test
     std::ifstream                        in(dat);
     std::string                          line;
     std::map<unsigned int, Tensor<1, 3>> u;
+    bool                                 displacements = false; // in such a block
     while (std::getline(in, line))
       {
+        if (line.find(" for set ") != std::string::npos) // a block's title
+          displacements = line.find("displacements") != std::string::npos;
         std::istringstream words(line);
         unsigned int       node;
         Tensor<1, 3>       value;
-        if (words >> node >> value[0] >> value[1] >> value[2])
+        if (displacements && words >> node >> value[0] >> value[1] >> value[2])
           u[node - 1] = value;
       }
     return u;
+  }
+
+  Tensor<1, 3> calculix_mean_tip_displacement(const std::string &dat, const Triangulation<3> &mesh)
+  {
+    const auto   u = calculix_displacements(dat);
+    Tensor<1, 3> sum;
+    double       area = 0;
+    for (const auto &[v, a] : tip_area_shares(mesh))
+      {
+        if (u.count(v) == 0)
+          throw std::runtime_error(dat + " has no displacement of tip vertex " + std::to_string(v));
+        sum += a * u.at(v);
+        area += a;
+      }
+    return sum / area;
+  }
+
+  Tensor<1, 3> calculix_total_force(const std::string &dat, const std::string &set)
+  {
+    std::ifstream in(dat);
+    std::string   line;
+    Tensor<1, 3>  force;
+    bool          found = false, after_title = false;
+    while (std::getline(in, line))
+      {
+        if (line.find("total force (fx,fy,fz) for set " + set + " ") != std::string::npos)
+          after_title = true;
+        else if (std::istringstream words(line); after_title && words >> force[0] >> force[1] >> force[2])
+          after_title = false, found = true;
+      }
+    if (!found)
+      throw std::runtime_error(dat + " has no total force of the set " + set);
+    return force;
   }
 } // namespace softchain::fem::test

@@ -12,10 +12,17 @@
 // Boundary: the `base` face clamped. Loads: a dead tip traction t_y (as
 // consistent nodal loads of bilinear faces, C3D8 only) and a follower
 // pressure on the `cavity` faces (face loads, follower under NLGEOM).
+// Contact (optional): a rigid plane y = const below the body, as the fixed
+// top face of one C3D8 whose nodes are all clamped (the master surface),
+// met by the body's faces on the -y side of their cells (the slave
+// surface) through CalculiX's penalty contact: the contact pressure is
+// p = K * overclosure (PRESSURE-OVERCLOSURE=LINEAR), and with friction the
+// shear stress grows as (stick slope) * slip up to mu p.
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +40,17 @@ namespace softchain::fem::test
       double tip_traction_y = 0; // N/m^2, dead
       double pressure       = 0; // Pa, follower, on the cavity
     };
+    struct RigidPlane
+    {
+      double y       = 0; // m, below the body; its normal is +y
+      double penalty = 0; // K, Pa/m: contact pressure per overclosure
+      // Node to surface: a spring at each slave node (its share of the
+      // slave faces' area); surface to surface: springs at integration
+      // points of the slave faces' overlaps with the master face.
+      bool   surface_to_surface = false;
+      double friction           = 0; // Coulomb's mu; 0: frictionless
+      double stick_slope        = 0; // Pa/m: shear stress per slip while sticking
+    };
 
     Element element        = Element::C3D8;
     double  youngs_modulus = 2.6e5;
@@ -44,6 +62,9 @@ namespace softchain::fem::test
     // an increment that fails and grows one after easy increments).
     double  first_increment = 0.1;
     double  max_increment   = 0.25;
+    // The rigid plane, if any; the total reaction of its fixed nodes goes
+    // to name.dat as the set PLANE (calculix_total_force).
+    std::optional<RigidPlane> plane;
 
     // Writes the deck `file` (e.g. name.inp) for `mesh` under `load`;
     // the displacements of the mesh vertices `printed` go to name.dat.
@@ -58,4 +79,14 @@ namespace softchain::fem::test
   // Displacements by mesh vertex index from the last block of a CalculiX
   // .dat file (later increments overwrite earlier ones).
   std::map<unsigned int, dealii::Tensor<1, 3>> calculix_displacements(const std::string &dat);
+
+  // The area-weighted mean displacement of the tip face from a CalculiX
+  // .dat that printed the tip's vertices (throws if one is missing).
+  dealii::Tensor<1, 3> calculix_mean_tip_displacement(const std::string &dat,
+                                                      const dealii::Triangulation<3> &mesh);
+
+  // The last total force printed for the node set `set` (CalculiX spells
+  // set names in capitals) in a CalculiX .dat file: the sum of the
+  // reaction forces of a set of fixed nodes.
+  dealii::Tensor<1, 3> calculix_total_force(const std::string &dat, const std::string &set);
 } // namespace softchain::fem::test
