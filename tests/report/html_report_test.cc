@@ -103,7 +103,7 @@ TEST_CASE("The contact section plots the force per obstacle and draws the finger
   };
   std::string html = report();
   CHECK(html.find("No contact samples") != std::string::npos);
-  const int pictures = softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,");
+  const std::size_t pictures = softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,");
 
   // The converged 40 kPa sample again, pressed on a cylinder.
   auto database = softchain::data::ActuationDatabase::open(outputs.database());
