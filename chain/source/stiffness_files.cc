@@ -1,5 +1,6 @@
 #include <softchain/chain/joint_tables.h>
 #include <softchain/chain/stiffness_files.h>
+#include <softchain/data/warn_once.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
 
@@ -19,6 +20,7 @@ namespace softchain::chain
   {
     using data::CsvTable;
     using data::InputError;
+    using data::warn_once;
 
     // The k column of each axis: 0 psi (torsion), 1 theta (lateral), 2 phi.
     const std::array<std::string, 3> k_columns_of_axis = {"k_psi", "k_theta", "k_phi"};
@@ -113,6 +115,15 @@ namespace softchain::chain
         throw InputError(where(path, row) + "joint listed twice at the same pressure with different values");
     }
 
+    // "3 joints (2: -2.3, 4: -1.85, 5: -5.8)": a warning's count and items.
+    std::string counted(const std::vector<std::string> &items, const std::string &noun)
+    {
+      std::string text = std::to_string(items.size()) + " " + noun + (items.size() == 1 ? "" : "s") + " (";
+      for (std::size_t k = 0; k < items.size(); ++k)
+        text += (k ? ", " : "") + items[k];
+      return text + ")";
+    }
+
     struct StiffnessTable
     {
       std::vector<Eigen::Vector3d> joint_centres;
@@ -152,10 +163,11 @@ namespace softchain::chain
                 throw InputError(path + ": " + columns[axis] +
                                  " has no positive value at any joint (no sample loads this "
                                  "axis; Chain/Missing stiffness = rigid holds it rigid)");
-              std::cerr << "chain: warning: " << path << ": no " << columns[axis]
-                        << " at any joint (no sample loads this axis); the chain is held rigid "
-                           "about it\n";
+              warn_once("chain: warning: " + path + ": no " + columns[axis] +
+                          " at any joint (no sample loads this axis); the chain is held rigid about it",
+                        std::cerr);
             }
+          std::vector<std::string> held; // "joint: value" of the joints held rigid
           for (std::size_t joint = 0; joint < stiffness.size(); ++joint)
             if (!usable(stiffness[joint][axis]))
               {
@@ -165,12 +177,13 @@ namespace softchain::chain
                                    " is not a positive finite stiffness (no usable sample, or "
                                    "a torque opposite to the rotation; Chain/Missing stiffness = "
                                    "rigid holds such joints rigid)");
-                if (largest > 0)
-                  std::cerr << "chain: warning: " << path << ", joint " << joint + 1 << ": " << what
-                            << " is not a positive stiffness; the joint is held rigid about this "
-                               "axis\n";
+                held.push_back(std::to_string(joint + 1) + ": " + number_text(stiffness[joint][axis]));
                 stiffness[joint][axis] = rigid_k[axis];
               }
+          if (largest > 0 && !held.empty())
+            warn_once("chain: warning: " + path + ": " + columns[axis] + " is not a positive stiffness at " +
+                        counted(held, "joint") + "; held rigid about this axis",
+                      std::cerr);
         }
     }
 
@@ -229,6 +242,7 @@ namespace softchain::chain
       const CsvTable    table  = read_table(path, {"pressure", "joint", column});
       std::vector<std::map<double, double>> per_joint(n);
       std::set<double>                      pressures;
+      std::vector<std::string>              skipped; // "line: value" of the rows left out
       for (std::size_t row = 0; row < table.n_rows(); ++row)
         {
           const int    joint = joint_index(table, path, row, n);
@@ -241,13 +255,16 @@ namespace softchain::chain
               if (!rigid)
                 throw InputError(where(path, row) + column + " = " + table.text(row, column) +
                                  " is not a positive finite stiffness");
-              std::cerr << "chain: warning: " << where(path, row) << column << " = "
-                        << table.text(row, column) << " is not positive; skipped\n";
+              skipped.push_back(std::to_string(row + 1) + ": " + table.text(row, column));
               continue;
             }
           insert_consistent(per_joint[joint], finite_number(table, path, row, "pressure"), k,
                             path, row);
         }
+      if (!skipped.empty())
+        warn_once("chain: warning: " + path + ": " + column + " is not positive in " +
+                    counted(skipped, "row") + "; skipped",
+                  std::cerr);
       n_pressures = pressures.size();
       std::vector<PiecewiseLinear> result;
       for (int i = 0; i < n; ++i)

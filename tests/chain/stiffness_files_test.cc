@@ -6,6 +6,9 @@
 #include "reduction_output.h"
 
 #include <catch2/catch.hpp>
+#include <iostream>
+
+#include "../data/occurrences.h"
 
 #include <filesystem>
 #include <fstream>
@@ -128,7 +131,18 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
     set_row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "-0.02");
   // Joint 2: negative at 40 kPa only, so its k_phi(p) keeps the 80 kPa value.
   set_row_field(files.bending_in_pressure_path(), "40000,2", 2, "-0.01");
+  // Read twice (as `softchain run`'s stages do): each cause warned once,
+  // with its count and values.
+  std::ostringstream warnings;
+  std::streambuf    *cerr = std::cerr.rdbuf(warnings.rdbuf());
   const ChainModel model = files.read_model("M2", tip, "value", true);
+  files.read_model("M2", tip, "value", true);
+  std::cerr.rdbuf(cerr);
+  CHECK(softchain::testing::occurrences(warnings.str(), "\n") == 2);
+  CHECK(warnings.str().find(files.stiffness_path() + ": k_phi is not a positive stiffness at 1 joint (1: -0.02)") !=
+        std::string::npos);
+  CHECK(warnings.str().find(files.bending_in_pressure_path() + ": k_phi is not positive in 3 rows (") !=
+        std::string::npos);
   CHECK(model.stiffness().diagonal(r.p_max)[2] == Approx(1e6 * r.k[2]).epsilon(1e-12));
   CHECK(model.stiffness().diagonal(0.0)[5] == Approx((1 - r.k_phi_drop) * r.k[2]).epsilon(1e-12));
   CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true, false),
