@@ -6,6 +6,7 @@
 #include <softchain/chain/protocol_plot.h>
 #include <softchain/chain/protocol_torques.h>
 #include <softchain/chain/stiffness_files.h>
+#include <softchain/data/output_files.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/chain/validation_plot.h>
 #include <softchain/data/input_error.h>
@@ -195,8 +196,8 @@ namespace softchain::chain
     const ChainParameters          p        = ChainParameters::read(prm);
     const data::ActuationDatabase  database = data::ActuationDatabase::open(database_path);
     const data::MeshRecord        &mesh     = database.mesh();
-    const std::string stiffness_dir = (std::filesystem::path(output_dir) / "stiffness").string();
-    const std::string chain_dir     = (std::filesystem::path(output_dir) / "chain").string();
+    const std::string stiffness_dir = (std::filesystem::path(output_dir) / data::folder::stiffness).string();
+    const std::string chain_dir     = (std::filesystem::path(output_dir) / data::folder::chain).string();
 
     // The FEM tip poses first: they need no chain model.
     const auto      box = bounding_box(mesh);

@@ -3,6 +3,7 @@
 #include <softchain/data/warn_once.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
 
 #include <algorithm>
 #include <cmath>
@@ -414,21 +415,18 @@ namespace softchain::chain
   StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
                                  const std::string &method, double half_width_fraction)
   {
-    const std::string base =
-      (std::filesystem::path(stiffness_directory) / label(method, half_width_fraction)).string();
-    stiffness_path_           = base + ".csv";
-    bending_in_pressure_path_ = base + "_kphi_vs_pressure.csv";
-    force_in_pressure_paths_  = {base + "_kpsi_vs_pressure.csv", base + "_ktheta_vs_pressure.csv"};
-    pressure_torque_path_     = base + "_pressure_torque.csv";
-    link_geometry_path_       = base + "_link_geometry.csv";
-    link_compliance_path_     = base + "_link_compliance.csv";
+    const data::StiffnessFileSet files(stiffness_directory, label(method, half_width_fraction));
+    stiffness_path_           = files.table;
+    bending_in_pressure_path_ = files.kphi_vs_pressure;
+    force_in_pressure_paths_  = {files.kpsi_vs_pressure, files.ktheta_vs_pressure};
+    pressure_torque_path_     = files.pressure_torque;
+    link_geometry_path_       = files.link_geometry;
+    link_compliance_path_     = files.link_compliance;
   }
 
   std::string StiffnessFiles::label(const std::string &method, double half_width_fraction)
   {
-    char fraction[32];
-    std::snprintf(fraction, sizeof(fraction), "%.2f", half_width_fraction);
-    return method + "_b" + fraction + "a";
+    return data::stiffness_label(method, half_width_fraction);
   }
 
   bool StiffnessFiles::exist() const { return std::filesystem::exists(stiffness_path_); }

@@ -60,9 +60,8 @@ namespace softchain::reduction
       }
   }
 
-  void ContactForceTable::write(const std::string &directory) const
+  void ContactForceTable::write(const std::string &file) const
   {
-    const std::string file = directory + "/contact_forces.csv";
     if (empty())
       std::filesystem::remove(file);
     else

@@ -1,5 +1,6 @@
 // MethodReduction: every sample reduced by one method on one joint
 // geometry, the rest configuration and the stiffness.
+#include <softchain/data/output_files.h>
 #include <softchain/reduction/method_reduction.h>
 
 #include <cstdio>
@@ -44,8 +45,6 @@ namespace softchain::reduction
 
   std::string MethodReduction::label() const
   {
-    char text[64];
-    std::snprintf(text, sizeof(text), "%s_b%.2fa", method_name(method_).c_str(), fraction_);
-    return text;
+    return data::stiffness_label(method_name(method_), fraction_);
   }
 } // namespace softchain::reduction

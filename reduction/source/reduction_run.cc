@@ -1,5 +1,6 @@
 // ReductionRun: parameters + database -> stiffness CSV files and plots.
 #include <softchain/data/actuation_database.h>
+#include <softchain/data/output_files.h>
 #include <softchain/reduction/contact_force_table.h>
 #include <softchain/reduction/joint_layout.h>
 #include <softchain/reduction/method_reduction.h>
@@ -171,8 +172,8 @@ namespace softchain::reduction
     std::vector<data::SampleRecord> contact;
     const auto samples     = converged_samples(database, summary.n_failed_skipped, contact);
     summary.n_samples_used = static_cast<int>(samples.size());
-    ContactForceTable(contact, database.mesh(), database_path_).write(output_dir_ + "/contact");
-    const std::string directory = output_dir_ + "/stiffness";
+    ContactForceTable(contact, database.mesh(), database_path_).write(data::contact_forces_file(output_dir_));
+    const std::string directory = output_dir_ + "/" + data::folder::stiffness;
     std::filesystem::create_directories(directory);
     const GeometryFactory geometry(parameters, layout, database.mesh(), samples, database_path_);
     const auto labels = write_tables(parameters, geometry, layout.spacing(), database.mesh(),

@@ -1,5 +1,6 @@
 // StiffnessTables: the CSV files of one (method, b) reduction.
 #include <softchain/reduction/link_compliance_fit.h>
+#include <softchain/data/output_files.h>
 #include <softchain/reduction/stiffness_tables.h>
 
 #include <algorithm>
@@ -143,17 +144,17 @@ namespace softchain::reduction
 
   std::vector<std::string> StiffnessTables::write(const std::string &directory) const
   {
-    const std::string stem = directory + "/" + reduction_.label();
-    stiffness().write(stem + ".csv");
-    samples().write(stem + "_samples.csv");
-    kphi_vs_pressure().write(stem + "_kphi_vs_pressure.csv");
-    k_vs_pressure(1).write(stem + "_ktheta_vs_pressure.csv");
-    k_vs_pressure(0).write(stem + "_kpsi_vs_pressure.csv");
-    pressure_torque().write(stem + "_pressure_torque.csv");
+    const data::StiffnessFileSet files(directory, reduction_.label());
+    stiffness().write(files.table);
+    samples().write(files.samples);
+    kphi_vs_pressure().write(files.kphi_vs_pressure);
+    k_vs_pressure(1).write(files.ktheta_vs_pressure);
+    k_vs_pressure(0).write(files.kpsi_vs_pressure);
+    pressure_torque().write(files.pressure_torque);
     if (!reduction_.rest().link_geometry().empty())
-      link_geometry().write(stem + "_link_geometry.csv");
+      link_geometry().write(files.link_geometry);
     const LinkComplianceFit compliance(reduction_, parameters_);
-    compliance.table().write(stem + "_link_compliance.csv");
+    compliance.table().write(files.link_compliance);
     return compliance.warnings();
   }
 } // namespace softchain::reduction

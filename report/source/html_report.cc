@@ -1,6 +1,7 @@
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
 #include <softchain/report/report_numbers.h>
 #include <softchain/report/base64.h>
 #include <softchain/report/html_report.h>
@@ -62,7 +63,7 @@ namespace softchain::report
     , chain_(chain::ChainParameters::read(prm))
   {
     require(database_path, "sweep");
-    require(output("stiffness/" + chain_label() + ".csv"), "reduce");
+    require(data::StiffnessFileSet(output(data::folder::stiffness), chain_label()).table, "reduce");
     const auto database = data::ActuationDatabase::open(database_path);
     design_             = database.design();
     mesh_               = database.mesh();
@@ -189,7 +190,7 @@ namespace softchain::report
                  "Fig. 5a/5b/6 equivalent: k_φ along the finger, one curve per pressure (" + label + ")");
     page.paragraph("The chain's stiffness table, stiffness/" + chain_label() +
                    ".csv (k in N m/rad, positions in m; nan: no value, e.g. a joint in the solid base):");
-    page.table(data::CsvTable::read(output("stiffness/" + chain_label() + ".csv")));
+    page.table(data::CsvTable::read(data::StiffnessFileSet(output(data::folder::stiffness), chain_label()).table));
   }
 
   void HtmlReport::validation_section(HtmlDocument &page) const
@@ -332,14 +333,15 @@ namespace softchain::report
   void HtmlReport::contact_section(HtmlDocument &page) const
   {
     page.heading("6. Contact: blocked force and grasp");
-    const std::string file = "contact/contact_forces.csv";
-    if (!fs::exists(output(file)))
+    const std::string path = data::contact_forces_file(output_directory_);
+    const std::string file = fs::relative(path, output_directory_).string();
+    if (!fs::exists(path))
       {
         page.paragraph("No contact samples: the design lists none (subsection Samples, Contact "
                        "samples), or `softchain reduce` has not written " + file + ".");
         return;
       }
-    const auto                            table = data::CsvTable::read(output(file));
+    const auto                            table = data::CsvTable::read(path);
     SvgCurvePlot                          plot("pressure [kPa]", "force on the obstacle |F| [N]");
     std::vector<std::string>              obstacles;
     std::vector<std::vector<std::string>> rows;

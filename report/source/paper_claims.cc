@@ -1,6 +1,7 @@
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
+#include <softchain/data/output_files.h>
 #include <softchain/report/report_numbers.h>
 #include <softchain/report/paper_claims.h>
 
@@ -170,7 +171,7 @@ namespace softchain::report
   std::string PaperClaims::stiffness_directory(const std::string &design) const
   {
     const fs::path own(in_.output_directory);
-    return ((design == in_.design_name ? own : own.parent_path() / design) / "stiffness").string();
+    return ((design == in_.design_name ? own : own.parent_path() / design) / data::folder::stiffness).string();
   }
 
   std::string PaperClaims::label(const std::string &method) const
@@ -183,7 +184,7 @@ namespace softchain::report
     const std::string statement =
       "k_φ is constant along a regular finger (parallelepiped, M2). Criterion: the joints "
       "between the one next to the base and the tip one lie within ±15 % of their mean.";
-    const std::string file = stiffness_directory("parallelepiped") + "/" + label("M2") + ".csv";
+    const std::string file = data::StiffnessFileSet(stiffness_directory("parallelepiped"), label("M2")).table;
     if (!fs::exists(file))
       return claim("1a", statement, Verdict::not_measurable, missing(file, "parallelepiped"));
     const Series s = read_series(file, "k_phi");
@@ -208,7 +209,7 @@ namespace softchain::report
     std::map<std::string, double> means;
     for (const std::string design : {"p10", "p13"})
       {
-        const std::string file = stiffness_directory(design) + "/" + label("M2") + ".csv";
+        const std::string file = data::StiffnessFileSet(stiffness_directory(design), label("M2")).table;
         if (!fs::exists(file))
           return claim("1b", statement, Verdict::not_measurable, missing(file, design));
         means[design] = mean(read_series(file, "k_phi").value);
@@ -261,7 +262,7 @@ namespace softchain::report
       "k_φ decreases with pressure. Criterion: the mean k_φ over the joints (M2) is lower at "
       "the highest pressure than at the lowest.";
     const std::string file =
-      stiffness_directory(in_.design_name) + "/" + label("M2") + "_kphi_vs_pressure.csv";
+      data::StiffnessFileSet(stiffness_directory(in_.design_name), label("M2")).kphi_vs_pressure;
     if (!fs::exists(file))
       return claim("2b", statement, Verdict::not_measurable, "no " + file);
     const auto                    table = data::CsvTable::read(file);

@@ -6,6 +6,7 @@
 #include <softchain/app/commands.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
 #include <softchain/fem/finger_mesh.h>
 #include <softchain/fem/quasi_static_solver.h>
 #include <softchain/fem/solution_output.h>
@@ -185,8 +186,8 @@ namespace softchain::app
     if (prm.output.write_vtu)
       {
         TimerOutput::Scope timer_section(solver.timer(), "output");
-        SolutionOutput output(prm.design.output_directory + "/vtu", prm.output.subdivisions);
-        out << "wrote " << prm.design.output_directory << "/vtu/"
+        SolutionOutput output(prm.design.output_directory + "/" + data::folder::vtu, prm.output.subdivisions);
+        out << "wrote " << prm.design.output_directory << "/" << data::folder::vtu << "/"
             << output.write(solver, "solution", result.load_factor_reached) << '\n';
       }
     solver.timer().print_summary();

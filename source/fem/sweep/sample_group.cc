@@ -3,6 +3,7 @@
 #include <softchain/fem/volume_controlled_inflation.h>
 
 #include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
 
 #include <algorithm>
 #include <chrono>
@@ -186,7 +187,7 @@ namespace softchain::fem
       for (const auto &w : contact->obstacle_wrenches(solver.displacement(), solver.load_state().obstacle_motion))
         record.obstacle_wrenches.push_back({triple(w.force), triple(w.moment)});
     if (prm.output.write_vtu)
-      SolutionOutput(prm.design.output_directory + "/vtu", prm.output.subdivisions)
+      SolutionOutput(prm.design.output_directory + "/" + data::folder::vtu, prm.output.subdivisions)
         .write(solver, "sample_" + sample.id, index);
     return record;
   }

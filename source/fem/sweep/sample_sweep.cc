@@ -1,6 +1,7 @@
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
 #include <softchain/fem/design_hash.h>
 #include <softchain/fem/sample_group.h>
 #include <softchain/fem/sample_sweep.h>
@@ -565,7 +566,7 @@ namespace softchain::fem
   // vtu/samples.pvd: the samples' VTU files in sample order (time = index).
   void SampleSweep::write_series() const
   {
-    const std::string directory = prm.design.output_directory + "/vtu/";
+    const std::string directory = prm.design.output_directory + "/" + data::folder::vtu + "/";
     std::vector<std::pair<double, std::string>> series;
     for (std::size_t i = 0; i < set.samples.size(); ++i)
       for (const char *extension : {".pvtu", ".vtu"})

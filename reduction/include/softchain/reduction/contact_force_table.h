@@ -31,9 +31,9 @@ namespace softchain::reduction
     bool           empty() const { return table_.n_rows() == 0; }
     const data::CsvTable &table() const { return table_; }
 
-    // Writes `directory`/contact_forces.csv, or removes a stale one when the
-    // database holds no contact sample.
-    void write(const std::string &directory) const;
+    // Writes `file` (data::contact_forces_file), or removes a stale one
+    // when the database holds no contact sample.
+    void write(const std::string &file) const;
 
     static bool is_contact(const data::SampleRecord &sample) { return !sample.actuation.obstacles.empty(); }
 

@@ -1,0 +1,46 @@
+#pragma once
+// OutputFiles: the names of the files and folders the tiers exchange under a
+// design's output directory -- the one owner of that contract, so that the
+// reduction writes what the chain and the report read. The columns of each
+// file are documented in docs/conventions.md ("CSV files"), the database's
+// layout in data/README.md.
+//
+//   <output>/database.h5, database.h5.samples/   the FEM tier's database
+//   <output>/vtu/                                ParaView files
+//   <output>/stiffness/<label>*.csv              the reduction, per method and b (StiffnessFileSet)
+//   <output>/contact/contact_forces.csv          the reduction, the contact samples
+//   <output>/chain/                              the chain tier's validation
+// where <label> is "<method>_b<b/a with two decimals>a", e.g. M2_b0.50a.
+#include <string>
+
+namespace softchain::data
+{
+  namespace folder
+  {
+    inline const std::string vtu       = "vtu";
+    inline const std::string stiffness = "stiffness";
+    inline const std::string contact   = "contact";
+    inline const std::string chain     = "chain";
+  } // namespace folder
+
+  // "M2_b0.50a": a stiffness file set's label.
+  std::string stiffness_label(const std::string &method, double half_width_fraction);
+
+  // The reduction's files of one label in `directory` (<output>/stiffness).
+  struct StiffnessFileSet
+  {
+    StiffnessFileSet(const std::string &directory, const std::string &label);
+
+    std::string table;              // <label>.csv: per joint, J, S and k
+    std::string samples;            // <label>_samples.csv: angles and torques per sample and joint
+    std::string kphi_vs_pressure;   // <label>_kphi_vs_pressure.csv
+    std::string ktheta_vs_pressure; // <label>_ktheta_vs_pressure.csv
+    std::string kpsi_vs_pressure;   // <label>_kpsi_vs_pressure.csv
+    std::string pressure_torque;    // <label>_pressure_torque.csv: J_p per pressure
+    std::string link_geometry;      // <label>_link_geometry.csv
+    std::string link_compliance;    // <label>_link_compliance.csv
+  };
+
+  // <output>/contact/contact_forces.csv
+  std::string contact_forces_file(const std::string &output_directory);
+} // namespace softchain::data

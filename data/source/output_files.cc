@@ -1,0 +1,31 @@
+#include <softchain/data/output_files.h>
+
+#include <cstdio>
+
+namespace softchain::data
+{
+  std::string stiffness_label(const std::string &method, const double half_width_fraction)
+  {
+    char fraction[32];
+    std::snprintf(fraction, sizeof(fraction), "%.2f", half_width_fraction);
+    return method + "_b" + fraction + "a";
+  }
+
+  StiffnessFileSet::StiffnessFileSet(const std::string &directory, const std::string &label)
+  {
+    const std::string stem = directory + "/" + label;
+    table              = stem + ".csv";
+    samples            = stem + "_samples.csv";
+    kphi_vs_pressure   = stem + "_kphi_vs_pressure.csv";
+    ktheta_vs_pressure = stem + "_ktheta_vs_pressure.csv";
+    kpsi_vs_pressure   = stem + "_kpsi_vs_pressure.csv";
+    pressure_torque    = stem + "_pressure_torque.csv";
+    link_geometry      = stem + "_link_geometry.csv";
+    link_compliance    = stem + "_link_compliance.csv";
+  }
+
+  std::string contact_forces_file(const std::string &output_directory)
+  {
+    return output_directory + "/" + folder::contact + "/contact_forces.csv";
+  }
+} // namespace softchain::data
