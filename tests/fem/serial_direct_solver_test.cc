@@ -208,6 +208,26 @@ TEST_CASE("symmetric tangents are factorised by LDL^T with their inertia, others
   CHECK_FALSE(direct.used_ldlt());
   CHECK(relative_difference(x, klu_solution(unsymmetric, r)) < 1e-9);
 
+  // The symmetry test's threshold, |K_ij - K_ji| <= 1e-12 max|K|, seen from
+  // both sides with small changes of one entry: 1e-10 max|K| (a friction
+  // tangent's asymmetry is far larger) goes to LU, 1e-14 max|K| (the
+  // assembly's round-off, 1e-16 on P10) stays with LDL^T.
+  double largest_entry = 0;
+  for (types::global_dof_index i = 0; i < K.m(); ++i)
+    for (auto entry = K.begin(i); entry != K.end(i); ++entry)
+      largest_entry = std::max(largest_entry, std::abs(entry->value()));
+  for (const auto &[change, symmetric] : {std::pair{1e-10, false}, std::pair{1e-14, true}})
+    {
+      TrilinosWrappers::SparseMatrix nearly;
+      nearly.copy_from(K);
+      nearly.add(row, col, change * largest_entry);
+      nearly.compress(VectorOperation::add);
+      REQUIRE(direct.solve(nearly, x, r));
+      INFO("K_ij changed by " << change << " max|K|");
+      CHECK(direct.used_ldlt() == symmetric);
+      CHECK(relative_difference(x, klu_solution(nearly, r)) < (symmetric ? 1e-5 : 1e-9)); // as above
+    }
+
   // Singular tangents are reported, not solved (the Newton iteration then
   // fails and the load step is cut): 0 K, symmetric, to LDL^T, and the
   // unsymmetric K with row `row` zeroed, to LU.

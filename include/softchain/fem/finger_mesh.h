@@ -20,8 +20,12 @@ namespace softchain::fem
     std::vector<SpringPolyline> springs;
     std::string                 description; // for logs and the database
 
-    // Throws data::InputError naming the file or parameter on bad input.
+    // Throws data::InputError naming the file or parameter on bad input
+    // (e.g. a spring network without its Springs/Axial rigidity).
     static void build(const Parameters &prm, FingerMesh &mesh);
+
+  private:
+    static void check_spring_rigidities(const Parameters &prm, const FingerMesh &mesh);
   };
 
   // Reads an ASCII gmsh file and maps its physical names (base, cavity, tip,

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <set>
 
 namespace softchain::fem
 {
@@ -134,5 +135,25 @@ namespace softchain::fem
                                                  (prm.mesh.node_jitter > 0 ? ", Mesh/Node jitter = " +
                                                     std::to_string(prm.mesh.node_jitter) : "") +
                                                  ")");
+    check_spring_rigidities(prm, mesh);
+  }
+
+  // Every spring network of the mesh needs its EA in Springs/Axial rigidity:
+  // said before any solve, naming the file and the networks the mesh has.
+  void FingerMesh::check_spring_rigidities(const Parameters &prm, const FingerMesh &mesh)
+  {
+    std::set<std::string> networks;
+    for (const auto &polyline : mesh.springs)
+      networks.insert(polyline.network);
+    for (const auto &network : networks)
+      if (prm.springs.axial_rigidity.count(network) == 0)
+        {
+          std::string listed;
+          for (const auto &n : networks)
+            listed += (listed.empty() ? "" : ", ") + n;
+          throw data::InputError(prm.file + ": parameter 'Axial rigidity' in subsection 'Springs': no "
+                                 "value for spring network '" + network + "' (the mesh has: " + listed +
+                                 ")");
+        }
   }
 } // namespace softchain::fem
