@@ -201,12 +201,15 @@ namespace softchain::reduction
 
   // Newton's method on X(xi) = sum_a N_a(xi) X_a from the cell's centre; the
   // trilinear map of a cell that is not badly distorted converges in a few
-  // steps, and a point outside the cell ends outside [0, 1]^3.
+  // steps, and a point outside the cell ends outside [0, 1]^3. Weights are
+  // returned only where Newton converged (|X(xi) - X| <= 1e-13 of the
+  // cell's size): a point it cannot invert counts as not in this cell.
   std::optional<CellPoint> BodySamples::locate_in_hexahedron(std::size_t cell, const Eigen::Vector3d &X) const
   {
     Eigen::Vector3d xi = Eigen::Vector3d::Constant(0.5);
     const double    size = cell_boxes_[cell].sizes().maxCoeff();
-    for (int iteration = 0; iteration < 30; ++iteration)
+    bool            converged = false;
+    for (int iteration = 0; iteration < 30 && !converged; ++iteration)
       {
         const auto      N = trilinear(xi);
         Eigen::Vector3d r = -X;
@@ -225,13 +228,14 @@ namespace softchain::reduction
                 J.col(d) += dN * Xa;
               }
           }
-        if (r.norm() <= 1e-13 * size)
+        converged = r.norm() <= 1e-13 * size;
+        if (converged)
           break;
         xi -= J.partialPivLu().solve(r);
         if (!xi.allFinite() || xi.cwiseAbs().maxCoeff() > 10)
           return std::nullopt;
       }
-    if (!inside_unit_cube(xi))
+    if (!converged || !inside_unit_cube(xi))
       return std::nullopt;
     return CellPoint{cell, trilinear(xi)};
   }

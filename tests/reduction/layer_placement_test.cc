@@ -173,6 +173,35 @@ TEST_CASE("the body lattice samples the volume and moves exactly with an affine 
     }
 }
 
+TEST_CASE("in a hexahedron that is not a parallelepiped a located point's weights reproduce it")
+{
+  // One hexahedron with every corner moved off the unit cube's (a trilinear,
+  // not affine, map X(xi)): the Newton inverse must give weights N(xi) with
+  // sum_a N_a X_a = X, for points all over the cell, and find nothing
+  // outside it.
+  data::MeshRecord mesh;
+  const double     shift[8][3] = {{0, 0, 0},       {0.2, -0.1, 0.1}, {-0.1, 0.15, 0},  {0.1, 0.2, -0.15},
+                                  {0.1, -0.1, 0.2}, {0.25, 0, 0.3},   {-0.15, 0.1, 0.2}, {0.3, 0.3, 0.25}};
+  for (int k = 0; k < 8; ++k)
+    mesh.X.push_back({(k & 1) + shift[k][0], ((k >> 1) & 1) + shift[k][1], ((k >> 2) & 1) + shift[k][2]});
+  mesh.nodes_per_cell = 8;
+  for (int k = 0; k < 8; ++k)
+    mesh.cells.push_back(k);
+  const BodySamples body(mesh, 0.05, "distorted hexahedron");
+  REQUIRE(body.lattice().size() > 1000);
+  double worst = 0;
+  for (const auto &P : body.lattice())
+    {
+      const auto located = body.locate(data::vector_of(P));
+      REQUIRE(located);
+      // Interpolating the reference corners gives the point back.
+      worst = std::max(worst, (body.deformed(*located, mesh.X) - data::vector_of(P)).norm());
+    }
+  CHECK(worst < 1e-12); // Newton stops at 1e-13 of the cell's size
+  CHECK_FALSE(body.locate({2.0, 0.5, 0.5}));
+  CHECK_FALSE(body.locate({0.5, -0.5, 0.5}));
+}
+
 TEST_CASE("a finger hinged at its joints on the layer is reduced exactly by M1 and M2")
 {
   for (const bool tetrahedra : {true, false})
