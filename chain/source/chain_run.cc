@@ -137,8 +137,9 @@ namespace softchain::chain
     // (the other method and the baseline are comparisons: their failures are
     // reported, not an error of the run).
     int validate(const std::vector<ChainModel> &models, ChainValidation &validation,
-                 const ChainParameters &p, const std::string &directory)
+                 const ChainParameters &p, const data::ChainFileSet &files)
     {
+      const std::string       &directory = files.directory;
       std::vector<std::string> names;
       for (const ChainModel &model : models)
         {
@@ -147,9 +148,9 @@ namespace softchain::chain
         }
       if (validation.records().empty())
         std::cout << "chain: no converged database sample has one of the validation roles\n";
-      validation.per_sample_table().write(directory + "/validation.csv");
-      validation.summary_table().write(directory + "/validation_summary.csv");
-      validation.pose_table().write(directory + "/chain_poses.csv");
+      validation.per_sample_table().write(files.validation);
+      validation.summary_table().write(files.validation_summary);
+      validation.pose_table().write(files.chain_poses);
       if (!ValidationPlot(directory, names).draw())
         std::cout << "chain: gnuplot missing or failed, validation.png not drawn (script validation.gp)\n";
       report(validation, directory);
@@ -160,8 +161,9 @@ namespace softchain::chain
     // base torque traces and their errors per model (tables, plot, lines).
     void compare_protocol(const std::vector<ChainModel> &models,
                           const data::ActuationDatabase &database, const ChainParameters &p,
-                          const std::string &directory)
+                          const data::ChainFileSet &files)
     {
+      const std::string &directory = files.directory;
       // The sweep lists the protocol's samples beside the database.
       ProtocolTorques protocol(
         database, (std::filesystem::path(database.path()).parent_path() / "protocol_samples.csv").string());
@@ -169,9 +171,9 @@ namespace softchain::chain
         return;
       for (const ChainModel &model : models)
         protocol.compare(model, p.newton);
-      protocol.trace_table().write(directory + "/protocol_torques.csv");
+      protocol.trace_table().write(files.protocol_torques);
       const data::CsvTable summary = protocol.summary_table();
-      summary.write(directory + "/protocol_summary.csv");
+      summary.write(files.protocol_summary);
       if (!draw_protocol_plot(directory, protocol.models()))
         std::cout << "chain: gnuplot missing or failed, protocol_torques.png not drawn\n";
       const auto precision = std::cout.precision(3);
@@ -197,28 +199,28 @@ namespace softchain::chain
     const data::ActuationDatabase  database = data::ActuationDatabase::open(database_path);
     const data::MeshRecord        &mesh     = database.mesh();
     const std::string stiffness_dir = (std::filesystem::path(output_dir) / data::folder::stiffness).string();
-    const std::string chain_dir     = (std::filesystem::path(output_dir) / data::folder::chain).string();
+    const data::ChainFileSet files(output_dir);
 
     // The FEM tip poses first: they need no chain model.
     const auto      box = bounding_box(mesh);
     ChainValidation validation(database, p.validation_roles, box.second.x() - box.first.x());
-    std::filesystem::create_directories(chain_dir);
-    validation.fem_tip_table().write(chain_dir + "/fem_tip_poses.csv");
+    std::filesystem::create_directories(files.directory);
+    validation.fem_tip_table().write(files.fem_tip_poses);
 
     std::vector<ChainModel> models = read_models(
       stiffness_dir, p, data::TipPoseFit::of_mesh(mesh, database.path()).reference_centroid());
     const ChainModel        selected =
       *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
     if (export_mjcf)
-      export_model(selected, database, chain_dir + "/finger.xml", p.newton);
+      export_model(selected, database, files.mjcf, p.newton);
     // The baseline's beam segments lie between the joints of the reduction's
     // table, each joint one spherical joint (no separate twist axis).
     const ChainModel plain = StiffnessFiles(stiffness_dir, p.method, p.half_width_fraction)
                                .read_model(p.method, selected.chain().tip(), p.stiffness_column,
                                            p.in_pressure, p.rigid_where_missing, false);
     models.push_back(baseline_of(plain, mesh, p.baseline_youngs_modulus));
-    const int failed = validate(models, validation, p, chain_dir);
-    compare_protocol(models, database, p, chain_dir);
+    const int failed = validate(models, validation, p, files);
+    compare_protocol(models, database, p, files);
     return failed > 0 ? 2 : 0;
   }
 } // namespace softchain::chain

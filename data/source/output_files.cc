@@ -28,4 +28,17 @@ namespace softchain::data
   {
     return output_directory + "/" + folder::contact + "/contact_forces.csv";
   }
+
+  ChainFileSet::ChainFileSet(const std::string &output_directory)
+    : directory(output_directory + "/" + folder::chain)
+    , validation(directory + "/validation.csv")
+    , validation_summary(directory + "/validation_summary.csv")
+    , validation_plot(directory + "/validation.png")
+    , chain_poses(directory + "/chain_poses.csv")
+    , fem_tip_poses(directory + "/fem_tip_poses.csv")
+    , protocol_torques(directory + "/protocol_torques.csv")
+    , protocol_summary(directory + "/protocol_summary.csv")
+    , protocol_plot(directory + "/protocol_torques.png")
+    , mjcf(directory + "/finger.xml")
+  {}
 } // namespace softchain::data

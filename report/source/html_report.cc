@@ -107,12 +107,12 @@ namespace softchain::report
     page.paragraph(std::to_string(samples_.size()) + " FEM samples (" + std::to_string(failed) +
                    " failed), median " + fmt(median(fem_times)) + " s of wall time per sample. Chain: " +
                    chain_.method + " at b = " + fmt(chain_.half_width_fraction) + " a.");
-    if (!fs::exists(output("chain/validation_summary.csv")))
+    if (!fs::exists(data::ChainFileSet(output_directory_).validation_summary))
       {
         page.paragraph("No chain validation (chain/validation_summary.csv is missing; see section 4).");
         return;
       }
-    const auto summary = data::CsvTable::read(output("chain/validation_summary.csv"));
+    const auto summary = data::CsvTable::read(data::ChainFileSet(output_directory_).validation_summary);
     std::vector<std::vector<std::string>> rows;
     for (std::size_t r = 0; r < summary.n_rows(); ++r)
       if (summary.text(r, "model") == chain_.method || summary.text(r, "model") == "baseline")
@@ -123,9 +123,9 @@ namespace softchain::report
     page.table({"model", "samples", "n", "failed", "max tip error [% L]", "mean tip error [% L]",
                 "max orientation error [deg]"},
                rows);
-    if (fs::exists(output("chain/validation.csv")))
+    if (fs::exists(data::ChainFileSet(output_directory_).validation))
       {
-        const auto          records = data::CsvTable::read(output("chain/validation.csv"));
+        const auto          records = data::CsvTable::read(data::ChainFileSet(output_directory_).validation);
         std::vector<double> times;
         for (std::size_t r = 0; r < records.n_rows(); ++r)
           if (records.text(r, "model") == chain_.method)
@@ -196,7 +196,7 @@ namespace softchain::report
   void HtmlReport::validation_section(HtmlDocument &page) const
   {
     page.heading("4. Chain against FEM");
-    if (!fs::exists(output("chain/validation_summary.csv")))
+    if (!fs::exists(data::ChainFileSet(output_directory_).validation_summary))
       {
         page.paragraph("No chain validation: chain/validation_summary.csv is missing. The chain "
                        "stage did not run or could not build a chain from the stiffness tables "
@@ -204,7 +204,7 @@ namespace softchain::report
                        "at any joint); `softchain chain` reruns it.");
         return;
       }
-    const auto summary = data::CsvTable::read(output("chain/validation_summary.csv"));
+    const auto summary = data::CsvTable::read(data::ChainFileSet(output_directory_).validation_summary);
     page.paragraph("chain/validation_summary.csv: tip position errors (mm and % of the length L) "
                    "and tip orientation errors per model and sample role.");
     page.table(summary);
@@ -237,12 +237,12 @@ namespace softchain::report
   void HtmlReport::chain_pictures(HtmlDocument &page) const
   {
     page.heading("The chain over the FEM finger", 3);
-    if (!fs::exists(output("chain/chain_poses.csv")))
+    if (!fs::exists(data::ChainFileSet(output_directory_).chain_poses))
       {
         page.paragraph("chain/chain_poses.csv is missing: `softchain chain` writes it.");
         return;
       }
-    const auto poses = data::CsvTable::read(output("chain/chain_poses.csv"));
+    const auto poses = data::CsvTable::read(data::ChainFileSet(output_directory_).chain_poses);
     std::vector<const data::SampleRecord *> shown;
     for (const auto &s : samples_)
       if (s.converged() && s.actuation.role == "validation")
@@ -273,7 +273,7 @@ namespace softchain::report
   void HtmlReport::protocol_section(HtmlDocument &page) const
   {
     page.heading("5. Prescribed tip motion, base torques (the paper's Sec. IV-B, Fig. 10–11)");
-    if (!fs::exists(output("chain/protocol_summary.csv")))
+    if (!fs::exists(data::ChainFileSet(output_directory_).protocol_summary))
       {
         page.paragraph("No tip-motion protocol: the design has none (subsection Protocol, Tip angle "
                        "= 0), so the database holds no protocol samples and `softchain chain` wrote "
@@ -296,7 +296,7 @@ namespace softchain::report
                    "FEM's range (max − min) of that torque over the trace. The paper found Tx "
                    "almost the same for its models and the baseline, Ty too soft, and the baseline "
                    "greatly overestimating Tz.");
-    const auto summary = data::CsvTable::read(output("chain/protocol_summary.csv"));
+    const auto summary = data::CsvTable::read(data::ChainFileSet(output_directory_).protocol_summary);
     std::vector<std::vector<std::string>> rows;
     for (std::size_t r = 0; r < summary.n_rows(); ++r)
       rows.push_back({summary.text(r, "model"), summary.text(r, "torque"),
@@ -311,9 +311,9 @@ namespace softchain::report
     png_figure(page, "chain/protocol_torques.png", "Base torques over the protocol's trace, FEM and chains");
     // The trace's length and its inflation pressure (that of its samples).
     std::string trace;
-    if (fs::exists(output("chain/protocol_torques.csv")))
+    if (fs::exists(data::ChainFileSet(output_directory_).protocol_torques))
       {
-        const auto torques = data::CsvTable::read(output("chain/protocol_torques.csv"));
+        const auto torques = data::CsvTable::read(data::ChainFileSet(output_directory_).protocol_torques);
         trace = " (" + std::to_string(torques.n_rows()) + " steps";
         if (torques.n_rows() > 0)
           for (const auto &s : samples_)

@@ -434,7 +434,7 @@ namespace softchain::report
     const std::string statement =
       "Fewer than 30 FEM samples suffice for a good chain. Criterion (ours): the chain's mean "
       "tip position error on the validation samples is at most 5 % of the finger's length.";
-    const std::string file = in_.output_directory + "/chain/validation_summary.csv";
+    const std::string file = data::ChainFileSet(in_.output_directory).validation_summary;
     if (!fs::exists(file))
       return claim("6", statement, Verdict::not_measurable, "no " + file);
     const auto table = data::CsvTable::read(file);

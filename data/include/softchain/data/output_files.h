@@ -43,4 +43,21 @@ namespace softchain::data
 
   // <output>/contact/contact_forces.csv
   std::string contact_forces_file(const std::string &output_directory);
+
+  // The chain tier's files in <output>/chain.
+  struct ChainFileSet
+  {
+    explicit ChainFileSet(const std::string &output_directory);
+
+    std::string directory;          // <output>/chain
+    std::string validation;         // validation.csv: per sample and model
+    std::string validation_summary; // validation_summary.csv: per model and role
+    std::string validation_plot;    // validation.png
+    std::string chain_poses;        // chain_poses.csv: the chains' joints and tips
+    std::string fem_tip_poses;      // fem_tip_poses.csv
+    std::string protocol_torques;   // protocol_torques.csv: base torques over the protocol
+    std::string protocol_summary;   // protocol_summary.csv
+    std::string protocol_plot;      // protocol_torques.png
+    std::string mjcf;               // finger.xml (softchain chain --export-mjcf)
+  };
 } // namespace softchain::data
