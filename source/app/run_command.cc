@@ -7,6 +7,7 @@
 #include <softchain/chain/chain_run.h>
 #include <softchain/app/commands.h>
 #include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
 #include <softchain/reduction/reduction_run.h>
 #include <softchain/report/report_run.h>
 #include <softchain/fem/sample_sweep.h>
@@ -99,6 +100,8 @@ namespace softchain::app
                name == "protocol_torques.png" ? "plot of the protocol's base torques" :
                ext == ".xml" ? "MuJoCo (MJCF) model of the chain" :
                ext == ".png" ? "validation plot" : "chain validation output";
+      if (dir == data::folder::contact)
+        return "force and moment on each obstacle per contact sample, and the tip pose";
       return "output";
     }
 
