@@ -42,14 +42,11 @@ namespace softchain::chain
     file.parse_section("Chain", section);
 
     ChainParameters p;
-    p.method = section.get("Stiffness method");
-    section.require(p.method == "M1" || p.method == "M2", "Stiffness method",
-            "'" + p.method + "' is neither M1 nor M2");
+    p.method = section.get_enum<data::RotationMethod>("Stiffness method", data::rotation_methods());
     p.half_width_fraction = section.get_double("Slab half-width");
     section.require(p.half_width_fraction > 0, "Slab half-width", "must be positive");
-    p.stiffness_column = section.get("Stiffness column");
-    section.require(p.stiffness_column == "value" || p.stiffness_column == "fit",
-            "Stiffness column", "'" + p.stiffness_column + "' is neither value nor fit");
+    p.stiffness_column = section.get_enum<StiffnessColumn>(
+      "Stiffness column", {{"value", StiffnessColumn::value}, {"fit", StiffnessColumn::fit}});
     p.in_pressure      = section.get_bool("Interpolate k_phi in pressure");
     const std::string links = section.get("Link geometry");
     section.require(links == "pressure" || links == "rigid", "Link geometry",

@@ -38,28 +38,28 @@ namespace softchain::chain
                                         const Eigen::Vector3d &tip)
     {
       std::vector<ChainModel> models;
-      const auto read = [&](const StiffnessFiles &files, const std::string &method) {
+      const auto read = [&](const StiffnessFiles &files, const std::string &name) {
         const ChainModel model =
-          files.read_model(method, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing);
+          files.read_model(name, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing);
         if (!p.pressure_link_geometry)
           return model.with_rigid_links();
         return p.link_compliance ? model : model.without_link_compliance();
       };
-      for (const std::string method : {"M1", "M2"})
+      for (const auto &[name, method] : data::rotation_methods())
         {
           const StiffnessFiles files(directory, method, p.half_width_fraction);
           if (method == p.method)
-            models.push_back(read(files, method));
+            models.push_back(read(files, name));
           else if (!files.exist())
-            std::cout << "chain: no " << files.stiffness_path() << ", " << method << " skipped\n";
+            std::cout << "chain: no " << files.stiffness_path() << ", " << name << " skipped\n";
           else
             try // the other method is a comparison only: unusable files skip it
               {
-                models.push_back(read(files, method));
+                models.push_back(read(files, name));
               }
             catch (const data::InputError &e)
               {
-                std::cout << "chain: " << method << " skipped: " << e.what() << '\n';
+                std::cout << "chain: " << name << " skipped: " << e.what() << '\n';
               }
         }
       return models;
@@ -154,7 +154,7 @@ namespace softchain::chain
       if (!ValidationPlot(directory, names).draw())
         std::cout << "chain: gnuplot missing or failed, validation.png not drawn (script validation.gp)\n";
       report(validation, directory);
-      return validation.n_failed(p.method);
+      return validation.n_failed(data::method_name(p.method));
     }
 
     // The paper's validation experiment, if the database holds its samples:
@@ -210,13 +210,14 @@ namespace softchain::chain
     std::vector<ChainModel> models = read_models(
       stiffness_dir, p, data::TipPoseFit::of_mesh(mesh, database.path()).reference_centroid());
     const ChainModel        selected =
-      *std::find_if(models.begin(), models.end(), [&](const auto &m) { return m.name() == p.method; });
+      *std::find_if(models.begin(), models.end(),
+                    [&](const auto &m) { return m.name() == data::method_name(p.method); });
     if (export_mjcf)
       export_model(selected, database, files.mjcf, p.newton);
     // The baseline's beam segments lie between the joints of the reduction's
     // table, each joint one spherical joint (no separate twist axis).
     const ChainModel plain = StiffnessFiles(stiffness_dir, p.method, p.half_width_fraction)
-                               .read_model(p.method, selected.chain().tip(), p.stiffness_column,
+                               .read_model(selected.name(), selected.chain().tip(), p.stiffness_column,
                                            p.in_pressure, p.rigid_where_missing, false);
     models.push_back(baseline_of(plain, mesh, p.baseline_youngs_modulus));
     const int failed = validate(models, validation, p, files);

@@ -188,12 +188,10 @@ namespace softchain::chain
         }
     }
 
-    StiffnessTable read_stiffness(const std::string &path, const std::string &column,
+    StiffnessTable read_stiffness(const std::string &path, const StiffnessColumn column,
                                   const bool rigid_where_missing)
     {
-      if (column != "value" && column != "fit")
-        throw std::invalid_argument("StiffnessFiles: column must be 'value' or 'fit'");
-      const std::string suffix = column == "fit" ? "_fit" : "";
+      const std::string suffix = column == StiffnessColumn::fit ? "_fit" : "";
       const std::vector<std::string> k_columns = {"k_psi" + suffix, "k_theta" + suffix,
                                                   "k_phi" + suffix};
       const CsvTable table = read_table(path, {"joint", "Jx", "Jy", "Jz", k_columns[0],
@@ -413,7 +411,7 @@ namespace softchain::chain
   } // namespace
 
   StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
-                                 const std::string &method, double half_width_fraction)
+                                 const data::RotationMethod method, double half_width_fraction)
   {
     const data::StiffnessFileSet files(stiffness_directory, label(method, half_width_fraction));
     stiffness_path_           = files.table;
@@ -424,7 +422,7 @@ namespace softchain::chain
     link_compliance_path_     = files.link_compliance;
   }
 
-  std::string StiffnessFiles::label(const std::string &method, double half_width_fraction)
+  std::string StiffnessFiles::label(const data::RotationMethod method, double half_width_fraction)
   {
     return data::stiffness_label(method, half_width_fraction);
   }
@@ -432,7 +430,7 @@ namespace softchain::chain
   bool StiffnessFiles::exist() const { return std::filesystem::exists(stiffness_path_); }
 
   ChainModel StiffnessFiles::read_model(const std::string &name, const Eigen::Vector3d &tip,
-                                        const std::string &column, bool in_pressure,
+                                        const StiffnessColumn column, bool in_pressure,
                                         bool rigid_where_missing, bool twist_axes) const
   {
     StiffnessTable table = read_stiffness(stiffness_path_, column, rigid_where_missing);

@@ -4,11 +4,11 @@
 
 namespace softchain::data
 {
-  std::string stiffness_label(const std::string &method, const double half_width_fraction)
+  std::string stiffness_label(const RotationMethod method, const double half_width_fraction)
   {
     char fraction[32];
     std::snprintf(fraction, sizeof(fraction), "%.2f", half_width_fraction);
-    return method + "_b" + fraction + "a";
+    return method_name(method) + "_b" + fraction + "a";
   }
 
   StiffnessFileSet::StiffnessFileSet(const std::string &directory, const std::string &label)

@@ -45,6 +45,6 @@ namespace softchain::reduction
 
   std::string MethodReduction::label() const
   {
-    return data::stiffness_label(method_name(method_), fraction_);
+    return data::stiffness_label(method_, fraction_);
   }
 } // namespace softchain::reduction

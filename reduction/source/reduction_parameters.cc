@@ -3,6 +3,8 @@
 #include <softchain/data/prm_file.h>
 #include <softchain/reduction/reduction_parameters.h>
 
+#include <algorithm>
+
 namespace softchain::reduction
 {
   namespace
@@ -42,12 +44,14 @@ namespace softchain::reduction
     std::vector<RotationMethod> read_methods(const data::PrmSection &section)
     {
       std::vector<RotationMethod> result;
+      const auto &methods = data::rotation_methods();
       for (const auto &name : section.get_list("Methods"))
         {
-          section.require(name == "M1" || name == "M2", "Methods",
-                  "unknown method '" + name + "' (M1 or M2)");
-          result.push_back(name == "M1" ? RotationMethod::bounding_box :
-                                          RotationMethod::affine_fit);
+          const auto known = std::find_if(methods.begin(), methods.end(),
+                                          [&](const auto &m) { return m.first == name; });
+          section.require(known != methods.end(), "Methods",
+                          "unknown method '" + name + "' (M1 or M2)");
+          result.push_back(known->second);
         }
       section.require(!result.empty(), "Methods", "no method given");
       return result;
@@ -72,11 +76,6 @@ namespace softchain::reduction
       return y;
     }
   } // namespace
-
-  std::string method_name(RotationMethod method)
-  {
-    return method == RotationMethod::bounding_box ? "M1" : "M2";
-  }
 
   ReductionParameters ReductionParameters::read(const data::PrmFile &file)
   {

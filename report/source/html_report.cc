@@ -106,7 +106,7 @@ namespace softchain::report
       }
     page.paragraph(std::to_string(samples_.size()) + " FEM samples (" + std::to_string(failed) +
                    " failed), median " + fmt(median(fem_times)) + " s of wall time per sample. Chain: " +
-                   chain_.method + " at b = " + fmt(chain_.half_width_fraction) + " a.");
+                   data::method_name(chain_.method) + " at b = " + fmt(chain_.half_width_fraction) + " a.");
     if (!fs::exists(data::ChainFileSet(output_directory_).validation_summary))
       {
         page.paragraph("No chain validation (chain/validation_summary.csv is missing; see section 4).");
@@ -115,7 +115,7 @@ namespace softchain::report
     const auto summary = data::CsvTable::read(data::ChainFileSet(output_directory_).validation_summary);
     std::vector<std::vector<std::string>> rows;
     for (std::size_t r = 0; r < summary.n_rows(); ++r)
-      if (summary.text(r, "model") == chain_.method || summary.text(r, "model") == "baseline")
+      if (summary.text(r, "model") == data::method_name(chain_.method) || summary.text(r, "model") == "baseline")
         rows.push_back({summary.text(r, "model"), summary.text(r, "roles"), summary.text(r, "n_samples"),
                         summary.text(r, "n_failed"), fmt(summary.number(r, "max_tip_error_percent_L")),
                         fmt(summary.number(r, "mean_tip_error_percent_L")),
@@ -128,7 +128,7 @@ namespace softchain::report
         const auto          records = data::CsvTable::read(data::ChainFileSet(output_directory_).validation);
         std::vector<double> times;
         for (std::size_t r = 0; r < records.n_rows(); ++r)
-          if (records.text(r, "model") == chain_.method)
+          if (records.text(r, "model") == data::method_name(chain_.method))
             times.push_back(records.number(r, "solve_time_us"));
         page.paragraph("One chain equilibrium from rest: median " + fmt(median(times)) + " µs.");
       }
@@ -255,13 +255,13 @@ namespace softchain::report
     SvgFingerRenderer renderer(surface, mesh_.X);
     for (const auto *s : shown)
       renderer.include(s->x);
-    page.paragraph("The " + chain_.method + " chain's joints and tip (red) at its equilibrium under "
+    page.paragraph("The " + data::method_name(chain_.method) + " chain's joints and tip (red) at its equilibrium under "
                    "each validation sample's load, over the FEM finger under the same load.");
     for (const auto *s : shown)
       {
         std::vector<Eigen::Vector3d> chain;
         for (std::size_t r = 0; r < poses.n_rows(); ++r)
-          if (poses.text(r, "sample") == s->id && poses.text(r, "model") == chain_.method)
+          if (poses.text(r, "sample") == s->id && poses.text(r, "model") == data::method_name(chain_.method))
             chain.emplace_back(poses.number(r, "x"), poses.number(r, "y"), poses.number(r, "z"));
         const std::string title = fmt(s->actuation.pressure / 1e3) + " kPa, largest force " +
                                   fmt(largest_force(s->actuation)) + " N";
@@ -449,7 +449,7 @@ namespace softchain::report
     int extraction = 0;
     for (const auto &s : samples_)
       extraction += s.converged() && s.actuation.role != "validation" && s.actuation.obstacles.empty();
-    const PaperClaims claims({design_.name, output_directory_, chain_.method,
+    const PaperClaims claims({design_.name, output_directory_, data::method_name(chain_.method),
                               chain_.half_width_fraction, extraction});
     std::ostringstream html;
     html << "<table>\n<tr><th>#</th><th>claim and criterion</th><th>verdict</th><th>measured</th></tr>\n";

@@ -17,6 +17,9 @@ namespace softchain::report
 {
   namespace
   {
+    // The paper states its claims about the affine-fit method's tables.
+    constexpr data::RotationMethod M2 = data::RotationMethod::affine_fit;
+
     // Height (y extent) of the mesh nodes within 2 % of the length from the
     // base face and from the tip face.
     std::pair<double, double> end_heights(const data::MeshRecord &mesh)
@@ -174,7 +177,7 @@ namespace softchain::report
     return ((design == in_.design_name ? own : own.parent_path() / design) / data::folder::stiffness).string();
   }
 
-  std::string PaperClaims::label(const std::string &method) const
+  std::string PaperClaims::label(const data::RotationMethod method) const
   {
     return chain::StiffnessFiles::label(method, in_.half_width_fraction);
   }
@@ -184,7 +187,7 @@ namespace softchain::report
     const std::string statement =
       "k_φ is constant along a regular finger (parallelepiped, M2). Criterion: the joints "
       "between the one next to the base and the tip one lie within ±15 % of their mean.";
-    const std::string file = data::StiffnessFileSet(stiffness_directory("parallelepiped"), label("M2")).table;
+    const std::string file = data::StiffnessFileSet(stiffness_directory("parallelepiped"), label(M2)).table;
     if (!fs::exists(file))
       return claim("1a", statement, Verdict::not_measurable, missing(file, "parallelepiped"));
     const Series s = read_series(file, "k_phi");
@@ -209,7 +212,7 @@ namespace softchain::report
     std::map<std::string, double> means;
     for (const std::string design : {"p10", "p13"})
       {
-        const std::string file = data::StiffnessFileSet(stiffness_directory(design), label("M2")).table;
+        const std::string file = data::StiffnessFileSet(stiffness_directory(design), label(M2)).table;
         if (!fs::exists(file))
           return claim("1b", statement, Verdict::not_measurable, missing(file, design));
         means[design] = mean(read_series(file, "k_phi").value);
@@ -231,7 +234,7 @@ namespace softchain::report
     const std::string statement =
       "k_φ decreases along a tapered finger (M2). Criterion: negative least-squares slope of "
       "k_φ over x, leaving out the joint next to the base (stiffened by the clamp).";
-    const std::string file = stiffness_directory(in_.design_name) + "/" + label("M2") + ".csv";
+    const std::string file = data::StiffnessFileSet(stiffness_directory(in_.design_name), label(M2)).table;
     if (!fs::exists(file))
       return claim("2a", statement, Verdict::not_measurable, "no " + file);
     const Series k = read_series(file, "k_phi");
@@ -262,7 +265,7 @@ namespace softchain::report
       "k_φ decreases with pressure. Criterion: the mean k_φ over the joints (M2) is lower at "
       "the highest pressure than at the lowest.";
     const std::string file =
-      data::StiffnessFileSet(stiffness_directory(in_.design_name), label("M2")).kphi_vs_pressure;
+      data::StiffnessFileSet(stiffness_directory(in_.design_name), label(M2)).kphi_vs_pressure;
     if (!fs::exists(file))
       return claim("2b", statement, Verdict::not_measurable, "no " + file);
     const auto                    table = data::CsvTable::read(file);
@@ -330,7 +333,7 @@ namespace softchain::report
       "Lateral (k_θ) extraction fails past buckling, above 0.7 N. Criterion: past 0.7 N the "
       "per-sample k_θ = τ_y/θ of some joint departs by more than 20 % from its median up to "
       "0.7 N, or |θ| decreases as the force grows (M2).";
-    const std::string file = stiffness_directory(in_.design_name) + "/" + label("M2") + "_samples.csv";
+    const std::string file = data::StiffnessFileSet(stiffness_directory(in_.design_name), label(M2)).samples;
     if (!fs::exists(file))
       return claim("4a", statement, Verdict::not_measurable, "no " + file);
     int    worst_joint = 0;
@@ -376,7 +379,7 @@ namespace softchain::report
       "Lateral (k_θ) extraction is unreliable for small forces. Criterion: at the smallest "
       "lateral force the per-sample k_θ of some joint departs by more than 20 % from its "
       "median over the larger forces up to 0.7 N (M2).";
-    const std::string file = stiffness_directory(in_.design_name) + "/" + label("M2") + "_samples.csv";
+    const std::string file = data::StiffnessFileSet(stiffness_directory(in_.design_name), label(M2)).samples;
     if (!fs::exists(file))
       return claim("4b", statement, Verdict::not_measurable, "no " + file);
     const auto points = lateral_points(file);
@@ -414,7 +417,7 @@ namespace softchain::report
     const std::string statement =
       "k_ψ (torsion) is higher near the base. Criterion: the mean k_ψ of the first third of "
       "the joints exceeds that of the last third (M2).";
-    const std::string file = stiffness_directory(in_.design_name) + "/" + label("M2") + ".csv";
+    const std::string file = data::StiffnessFileSet(stiffness_directory(in_.design_name), label(M2)).table;
     if (!fs::exists(file))
       return claim("5", statement, Verdict::not_measurable, "no " + file);
     const Series s = read_series(file, "k_psi");

@@ -299,11 +299,13 @@ namespace softchain::fem
                     "direct: see Direct solver package; iterative: GMRES + AMG; auto: direct "
                     "below 'Direct solver maximum DoFs'.");
     section.declare("Direct solver maximum DoFs", "200000");
-    section.declare("Direct solver package", "UMFPACK",
-                    "UMFPACK (one MPI rank: MUMPS's LDL^T where the tangent is "
-                    "symmetric, else UMFPACK's LU; on several ranks Amesos_Mumps is "
-                    "used) or a Trilinos Amesos solver. Measured on P10 (8K DoFs, P2): "
-                    "UMFPACK 0.19 s, KLU 0.42 s per factorisation.");
+    section.declare("Direct solver package", "MUMPS_or_UMFPACK",
+                    "MUMPS_or_UMFPACK (one MPI rank: MUMPS's LDL^T where the tangent is "
+                    "symmetric, else UMFPACK's LU, each analysed once per sparsity pattern; "
+                    "several ranks: Amesos_Mumps), Amesos_Mumps or Amesos_Klu (Trilinos, a new "
+                    "factorisation per solve); not part of the design hash: each solves Newton's "
+                    "corrections to its tolerance, so the answer does not depend on it",
+                    false);
     section.declare("Krylov tolerance", "1e-10");
     section.declare("Line search", "true",
                     "A line search on the energy along each Newton step (with springs only the "
@@ -338,8 +340,11 @@ namespace softchain::fem
                                                        {"iterative", LinearSolver::iterative}});
     direct_solver_max_dofs = bounded_integer(section, "Direct solver maximum DoFs", 0,
                                              std::numeric_limits<int>::max());
-    direct_solver_package =
-      section.get_selection("Direct solver package", {"UMFPACK", "Amesos_Mumps", "Amesos_Klu"});
+    using DirectPackage   = SolverParameters::DirectPackage;
+    direct_solver_package = section.get_enum<DirectPackage>(
+      "Direct solver package", {{"MUMPS_or_UMFPACK", DirectPackage::mumps_or_umfpack},
+                                {"Amesos_Mumps", DirectPackage::amesos_mumps},
+                                {"Amesos_Klu", DirectPackage::amesos_klu}});
     krylov_tolerance = tolerance(section, "Krylov tolerance");
     line_search      = section.get_bool("Line search");
     secant_predictor = section.get_bool("Secant predictor");

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -80,10 +79,11 @@ namespace softchain::geometry
 
     void read_mesh_choice(const PrmSection &section, FingerDesign &design)
     {
-      design.shape = section.get("Shape");
-      const std::set<std::string> shapes{"p10", "p13", "parallelepiped", "stl"};
-      require(shapes.count(design.shape), section, "Shape",
-              "expected p10, p13, parallelepiped or stl");
+      using Shape  = FingerDesign::Shape;
+      design.shape = section.get_enum<Shape>("Shape", {{"p10", Shape::p10},
+                                                       {"p13", Shape::p13},
+                                                       {"parallelepiped", Shape::parallelepiped},
+                                                       {"stl", Shape::stl}});
       design.resolution = section.get_integer("Resolution");
       require(design.resolution >= 0 && design.resolution <= 2, section, "Resolution",
               "expected 0, 1 or 2");
@@ -118,7 +118,7 @@ namespace softchain::geometry
       require(design.springs.fabric_height < design.dimensions.bottom, section, "Fabric height",
               "the fabric must lie inside the bottom layer (below Bottom layer thickness)");
       const FingerDimensions &d = design.dimensions;
-      require(design.shape != "parallelepiped" ||
+      require(design.shape != FingerDesign::Shape::parallelepiped ||
                 (d.tip_width == d.base_width && d.tip_height == d.base_height),
               section, "Tip width", "a parallelepiped has Tip width/height = Base width/height");
     }

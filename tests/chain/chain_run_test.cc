@@ -90,10 +90,10 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
 
   chain::testing::UniformReduction m2, m1;
   m1.k *= 1.3;
-  const StiffnessFiles m2_files(out + "/stiffness", "M2", 0.5);
+  const StiffnessFiles m2_files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
   chain::testing::write_reduction(m2_files, m2);
-  chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", "M1", 0.5), m1);
-  write_database(dir.file("database.h5"), m2_files.read_model("M2", {0.09, 0, 0}, "value", true), mesh);
+  chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", data::RotationMethod::bounding_box, 0.5), m1);
+  write_database(dir.file("database.h5"), m2_files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true), mesh);
 
   REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
   const data::CsvTable table = data::CsvTable::read(out + "/chain/validation.csv");
@@ -192,7 +192,7 @@ TEST_CASE("the Chain subsection is read and checked")
   {
     std::ofstream(prm) << chain_prm;
     const ChainParameters p = ChainParameters::read(data::PrmFile::read(prm));
-    CHECK(p.method == "M2");
+    CHECK(p.method == data::RotationMethod::affine_fit);
     CHECK(p.validation_roles == std::vector<std::string>{"validation", "pressure"});
     CHECK(p.newton.max_iterations == 50);
     CHECK(p.pressure_link_geometry); // the default: links as the pressure shapes them
@@ -211,6 +211,15 @@ TEST_CASE("the Chain subsection is read and checked")
     CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
                       Catch::Contains(prm + ":2") && Catch::Contains("Stiffness method") &&
                         Catch::Contains("M3"));
+  }
+  SECTION("the stiffness column: value, fit, or an error naming the parameter")
+  {
+    std::ofstream(prm) << "subsection Chain\n  set Stiffness column = fit\nend\n";
+    CHECK(ChainParameters::read(data::PrmFile::read(prm)).stiffness_column == StiffnessColumn::fit);
+    std::ofstream(prm) << "subsection Chain\n  set Stiffness column = median\nend\n";
+    CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
+                      Catch::Contains(prm + ":2") && Catch::Contains("Stiffness column") &&
+                        Catch::Contains("'median' is not one of: value, fit"));
   }
   SECTION("a missing stiffness file of the selected method")
   {
@@ -234,9 +243,9 @@ TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's twist pivo
   const data::MeshRecord           mesh = chain::testing::box_mesh(spec);
   chain::testing::UniformReduction r;
   r.twist_height = 0.004;
-  const StiffnessFiles files(out + "/stiffness", "M2", 0.5);
+  const StiffnessFiles files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
   chain::testing::write_reduction(files, r);
-  write_database(dir.file("database.h5"), files.read_model("M2", {0.09, 0, 0}, "value", true), mesh);
+  write_database(dir.file("database.h5"), files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true), mesh);
   REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
   std::ifstream     xml(out + "/chain/finger.xml");
   const std::string text((std::istreambuf_iterator<char>(xml)), {});

@@ -19,6 +19,7 @@
 #include <fstream>
 
 using namespace softchain::chain;
+namespace data = softchain::data;
 using softchain::chain::testing::uniform_finger;
 
 namespace
@@ -111,27 +112,27 @@ TEST_CASE("a single joint with its tip moved across: the joint and the links in 
 TEST_CASE("the reduction's link compliance file is read, a bad one refused naming file and row")
 {
   softchain::testing::ScratchDirectory dir("chain_link_compliance");
-  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   testing::write_reduction(files, testing::UniformReduction{});
   const Eigen::Vector3d tip(0.09, 0, 0);
-  CHECK_FALSE(files.read_model("M2", tip, "value", true).has_link_compliance());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, true).has_link_compliance());
 
   const auto write = [&](const std::string &rows) {
     std::ofstream(files.link_compliance_path()) << "pressure,compliance,samples,chord_angle_deg\n" << rows;
   };
   write("");
-  CHECK_FALSE(files.read_model("M2", tip, "value", true).has_link_compliance());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, true).has_link_compliance());
   write("0,1e-3,1,0\n4e4,2e-3,1,3\n");
-  const ChainModel model = files.read_model("M2", tip, "value", true);
+  const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
   REQUIRE(model.has_link_compliance());
   CHECK(model.link_compliance(2e4) == Approx(1.5e-3).epsilon(1e-14));
-  CHECK_FALSE(files.read_model("M2", tip, "value", false).has_link_compliance());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, false).has_link_compliance());
   CHECK_FALSE(model.with_rigid_links().has_link_compliance());
 
   write("0,1e-3,1,0\n4e4,-2e-3,1,3\n");
   try
     {
-      files.read_model("M2", tip, "value", true);
+      files.read_model("M2", tip, StiffnessColumn::value, true);
       FAIL("no error");
     }
   catch (const softchain::data::InputError &e)

@@ -17,6 +17,7 @@
 #include <Eigen/Geometry>
 
 using namespace softchain::chain;
+namespace data = softchain::data;
 
 namespace
 {
@@ -140,7 +141,7 @@ TEST_CASE("the equilibrium on stretched links: closed form under pressure, exact
 TEST_CASE("the link geometry file: read with the pressure tables, its rest rows checked")
 {
   softchain::testing::ScratchDirectory dir("chain_link_geometry");
-  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   const testing::UniformReduction      r;
   testing::write_reduction(files, r);
   const Eigen::Vector3d tip(r.n * r.a, 0, 0);
@@ -161,27 +162,27 @@ TEST_CASE("the link geometry file: read with the pressure tables, its rest rows 
     table.write(files.link_geometry_path());
   };
   write(0.0);
-  const ChainModel model = files.read_model("M2", tip, "value", true);
+  const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
   REQUIRE(model.has_link_geometry());
   CHECK(model.chain_at(0.5 * r.p_max).link_tip().x() == Approx(1.01 * r.n * r.a).epsilon(1e-15));
   CHECK(model.with_rigid_links().chain_at(r.p_max).link_tip() == tip);
   // Without the pressure tables the links are the reference's.
-  CHECK_FALSE(files.read_model("M2", tip, "value", false).has_link_geometry());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, false).has_link_geometry());
   // Rest rows that are not the stiffness table's joints: another reduction's.
   write(1e-4);
-  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true),
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
                     Catch::Contains(files.link_geometry_path()) && Catch::Contains("joint 1") &&
                       Catch::Contains("different reductions"));
   // Joints out of order along x at a pressure: the chain would fold back.
   write(0.0, -0.015);
-  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true),
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
                     Catch::Contains(files.link_geometry_path()) && Catch::Contains("at pressure 80000") &&
                       Catch::Contains("joint 3 does not lie beyond joint 2"));
   // A pressure without the tip's row.
   write(0.0, 0.0, false);
-  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true),
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
                     Catch::Contains("no row for the tip at pressure 80000"));
   // Without the file (a reduction before link geometry): rigid links.
   std::filesystem::remove(files.link_geometry_path());
-  CHECK_FALSE(files.read_model("M2", tip, "value", true).has_link_geometry());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, true).has_link_geometry());
 }

@@ -15,6 +15,7 @@
 #endif
 
 using namespace softchain::chain;
+namespace data = softchain::data;
 
 namespace
 {
@@ -41,9 +42,9 @@ namespace
     softchain::chain::testing::UniformReduction r;
     r.twist_height = 0.004;
     r.jp           = {0.0, 0.0, 2e-7};
-    const StiffnessFiles files(dir.path().string(), "M2", 0.5);
+    const StiffnessFiles files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
     write_reduction(files, r);
-    return files.read_model("M2", {0.09, 0.006, 0.0}, "value", false);
+    return files.read_model("M2", {0.09, 0.006, 0.0}, StiffnessColumn::value, false);
   }
 } // namespace
 

@@ -15,6 +15,7 @@
 #include <sstream>
 
 using namespace softchain::chain;
+namespace data = softchain::data;
 using softchain::chain::testing::UniformReduction;
 using softchain::data::InputError;
 
@@ -76,9 +77,9 @@ namespace
 
 TEST_CASE("the file label is the method and b as a fraction of a with two decimals")
 {
-  CHECK(StiffnessFiles::label("M2", 0.5) == "M2_b0.50a");
-  CHECK(StiffnessFiles::label("M1", 1.0 / 3.0) == "M1_b0.33a");
-  const StiffnessFiles files("out/stiffness", "M1", 1.0);
+  CHECK(StiffnessFiles::label(data::RotationMethod::affine_fit, 0.5) == "M2_b0.50a");
+  CHECK(StiffnessFiles::label(data::RotationMethod::bounding_box, 1.0 / 3.0) == "M1_b0.33a");
+  const StiffnessFiles files("out/stiffness", data::RotationMethod::bounding_box, 1.0);
   CHECK(files.pressure_torque_path() == "out/stiffness/M1_b1.00a_pressure_torque.csv");
 }
 
@@ -88,7 +89,7 @@ TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
   // is distal to it, so the pressure transmits no torque and the reduction
   // writes no k_phi there.
   softchain::testing::ScratchDirectory dir("chain_rigid_joint");
-  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   const UniformReduction               r;
   testing::write_reduction(files, r);
   // Joint 1: k_phi (8th column) nan in the stiffness table, and no k_phi(p).
@@ -97,13 +98,13 @@ TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
     set_row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "nan");
   for (const bool in_pressure : {false, true})
     {
-      const ChainModel model = files.read_model("M2", tip, "value", in_pressure);
+      const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, in_pressure);
       INFO("k_phi interpolated in pressure: " << in_pressure);
       // Rigid: 1e6 x the largest k_phi of the table; joint 2 as written.
       // With Chain/Missing stiffness = error it is an error naming the row.
       try
         {
-          files.read_model("M2", tip, "value", in_pressure, false);
+          files.read_model("M2", tip, StiffnessColumn::value, in_pressure, false);
           FAIL("no error");
         }
       catch (const InputError &e)
@@ -123,7 +124,7 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
   // fill, the pressure torque about the bounding-box centre opposes the
   // bending and the reduction writes k_phi < 0.
   softchain::testing::ScratchDirectory dir("chain_negative_joint");
-  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   const UniformReduction               r;
   testing::write_reduction(files, r);
   set_row_field(files.stiffness_path(), "1", 7, "-0.02");
@@ -135,8 +136,8 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
   // with its count and values.
   std::ostringstream warnings;
   std::streambuf    *cerr = std::cerr.rdbuf(warnings.rdbuf());
-  const ChainModel model = files.read_model("M2", tip, "value", true);
-  files.read_model("M2", tip, "value", true);
+  const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
+  files.read_model("M2", tip, StiffnessColumn::value, true);
   std::cerr.rdbuf(cerr);
   CHECK(softchain::testing::occurrences(warnings.str(), "\n") == 2);
   CHECK(warnings.str().find(files.stiffness_path() + ": k_phi is not a positive stiffness at 1 joint (1: -0.02)") !=
@@ -145,7 +146,7 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
         std::string::npos);
   CHECK(model.stiffness().diagonal(r.p_max)[2] == Approx(1e6 * r.k[2]).epsilon(1e-12));
   CHECK(model.stiffness().diagonal(0.0)[5] == Approx((1 - r.k_phi_drop) * r.k[2]).epsilon(1e-12));
-  CHECK_THROWS_WITH(files.read_model("M2", tip, "value", true, false),
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true, false),
                     Catch::Contains(files.stiffness_path() + ", row 1") &&
                       Catch::Contains("k_phi = -0.02"));
 }
@@ -153,14 +154,14 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
 TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
 {
   softchain::testing::ScratchDirectory dir("chain_stiffness_files");
-  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   const UniformReduction               r;
   testing::write_reduction(files, r);
   REQUIRE(files.exist());
 
   SECTION("value column, constant in pressure")
   {
-    const ChainModel model = files.read_model("M2", tip, "value", false);
+    const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, false);
     CHECK(model.chain().n_joints() == r.n);
     CHECK(model.chain().joint_centre(3).x() == Approx(3.5 * r.a));
     CHECK(model.stiffness().diagonal(r.p_max).segment<3>(6) == r.k);
@@ -168,7 +169,7 @@ TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
   }
   SECTION("fit column, k_phi and J_p interpolated in pressure")
   {
-    const ChainModel model = files.read_model("M2", tip, "fit", true);
+    const ChainModel model = files.read_model("M2", tip, StiffnessColumn::fit, true);
     CHECK(model.stiffness().diagonal(0.0)[0] == r.k_fit[0]);
     // Halfway between the rows at p_max / 2 and p_max: linear interpolation,
     // exact up to round-off.
@@ -183,9 +184,9 @@ TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
 TEST_CASE("bad stiffness files are input errors naming file and row")
 {
   softchain::testing::ScratchDirectory dir("chain_bad_stiffness");
-  const StiffnessFiles                 files(dir.path().string(), "M1", 1.0);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::bounding_box, 1.0);
   testing::write_reduction(files, UniformReduction{});
-  const auto error_of = [&](const std::string &column) {
+  const auto error_of = [&](const StiffnessColumn column) {
     try
       {
         files.read_model("M1", tip, column, true);
@@ -201,28 +202,28 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
   SECTION("a missing joint")
   {
     rewrite_stiffness(files, [](std::string &t) { replace(t, "\n3,", "\n4,"); });
-    CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 3") && Catch::Contains("expected joint 3"));
+    CHECK_THAT(error_of(StiffnessColumn::value), Catch::Contains(path + ", row 3") && Catch::Contains("expected joint 3"));
   }
   SECTION("a negative stiffness: an error with Missing stiffness = error, else rigid")
   {
     set_row_field(path, "1", 6, "-0.05"); // joint 1, k_theta
     try
       {
-        files.read_model("M1", tip, "value", true, false);
+        files.read_model("M1", tip, StiffnessColumn::value, true, false);
         FAIL("no error");
       }
     catch (const InputError &e)
       {
         CHECK_THAT(e.what(), Catch::Contains(path + ", row 1") && Catch::Contains("k_theta = -0.05"));
       }
-    CHECK(error_of("value") == "no error");
+    CHECK(error_of(StiffnessColumn::value) == "no error");
   }
   SECTION("an infinite stiffness")
   {
     UniformReduction r;
     r.k[0] = INFINITY;
     testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("value"), Catch::Contains(path + ", row 1") && Catch::Contains("not a finite stiffness"));
+    CHECK_THAT(error_of(StiffnessColumn::value), Catch::Contains(path + ", row 1") && Catch::Contains("not a finite stiffness"));
   }
   SECTION("no stiffness about an axis at any joint: rigid about it, or an error")
   {
@@ -230,12 +231,12 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     UniformReduction r;
     r.k_fit[0] = NAN;
     testing::stiffness_table(r).write(path);
-    const ChainModel model = files.read_model("M1", tip, "fit", false);
+    const ChainModel model = files.read_model("M1", tip, StiffnessColumn::fit, false);
     // 1e6 x the largest fit stiffness of any axis (k_theta_fit = 0.06).
     for (int joint = 0; joint < r.n; ++joint)
       CHECK(model.stiffness().diagonal(0.0)[3 * joint] == Approx(1e6 * 0.06).epsilon(1e-12));
     CHECK(model.stiffness().diagonal(0.0)[1] == Approx(r.k_fit[1]).epsilon(1e-12));
-    CHECK_THROWS_WITH(files.read_model("M1", tip, "fit", false, false),
+    CHECK_THROWS_WITH(files.read_model("M1", tip, StiffnessColumn::fit, false, false),
                       Catch::Contains(path) && Catch::Contains("k_psi_fit has no positive value at any joint"));
   }
   SECTION("no stiffness at all")
@@ -243,33 +244,33 @@ TEST_CASE("bad stiffness files are input errors naming file and row")
     UniformReduction r;
     r.k = Eigen::Vector3d(NAN, -1.0, NAN);
     testing::stiffness_table(r).write(path);
-    CHECK_THAT(error_of("value"), Catch::Contains(path) && Catch::Contains("no positive stiffness at any joint and axis"));
+    CHECK_THAT(error_of(StiffnessColumn::value), Catch::Contains(path) && Catch::Contains("no positive stiffness at any joint and axis"));
   }
   SECTION("a missing column")
   {
     rewrite_stiffness(files, [](std::string &t) { replace(t, "k_phi_fit", "kphi_fit"); });
-    CHECK_THAT(error_of("fit"), Catch::Contains(path) && Catch::Contains("missing column 'k_phi_fit'"));
-    CHECK(error_of("value") == "no error"); // the value columns are all there
+    CHECK_THAT(error_of(StiffnessColumn::fit), Catch::Contains(path) && Catch::Contains("missing column 'k_phi_fit'"));
+    CHECK(error_of(StiffnessColumn::value) == "no error"); // the value columns are all there
   }
   SECTION("a pressure listed twice for a joint: same value accepted, different value not")
   {
     std::ofstream(files.pressure_torque_path(), std::ios::app) << "0,2,0,0,2e-07\n";
-    CHECK(error_of("value") == "no error");
+    CHECK(error_of(StiffnessColumn::value) == "no error");
     std::ofstream(files.pressure_torque_path(), std::ios::app) << "0,2,0,0,3e-07\n";
-    CHECK_THAT(error_of("value"), Catch::Contains(files.pressure_torque_path() + ", row 29") &&
+    CHECK_THAT(error_of(StiffnessColumn::value), Catch::Contains(files.pressure_torque_path() + ", row 29") &&
                                     Catch::Contains("twice"));
   }
   SECTION("a missing pressure torque file")
   {
     std::filesystem::remove(files.pressure_torque_path());
-    CHECK_THAT(error_of("value"), Catch::Contains(files.pressure_torque_path()));
+    CHECK_THAT(error_of(StiffnessColumn::value), Catch::Contains(files.pressure_torque_path()));
   }
 }
 
 TEST_CASE("k_theta and k_psi follow their pressure tables only when these hold several pressures")
 {
   softchain::testing::ScratchDirectory dir("chain_force_in_pressure");
-  const StiffnessFiles                 files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   const UniformReduction               r;
   testing::write_reduction(files, r);
   // k at p = 0 is 2x the stiffness table's, 4x at p_max: the chain must
@@ -285,13 +286,13 @@ TEST_CASE("k_theta and k_psi follow their pressure tables only when these hold s
     {
       INFO("axis " << axis);
       write_table(axis, {}); // no sample loads the axis: no rows, the stiffness table stands
-      CHECK(files.read_model("M2", tip, "value", true).stiffness().diagonal(0)[axis] ==
+      CHECK(files.read_model("M2", tip, StiffnessColumn::value, true).stiffness().diagonal(0)[axis] ==
             Approx(r.k[axis]).epsilon(1e-15));
       write_table(axis, {0.0}); // one pressure: no k(p), the stiffness table stands
-      CHECK(files.read_model("M2", tip, "value", true).stiffness().diagonal(0)[axis] ==
+      CHECK(files.read_model("M2", tip, StiffnessColumn::value, true).stiffness().diagonal(0)[axis] ==
             Approx(r.k[axis]).epsilon(1e-15));
       write_table(axis, {0.0, r.p_max});
-      const ChainModel model = files.read_model("M2", tip, "value", true);
+      const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
       for (int i = 0; i < r.n; ++i)
         {
           CHECK(model.stiffness().diagonal(0)[3 * i + axis] == Approx(2 * r.k[axis]).epsilon(1e-15));
@@ -299,7 +300,7 @@ TEST_CASE("k_theta and k_psi follow their pressure tables only when these hold s
                 Approx(3 * r.k[axis]).epsilon(1e-15));
         }
       // Without interpolation in pressure the tables are not read.
-      CHECK(files.read_model("M2", tip, "value", false).stiffness().diagonal(r.p_max)[axis] ==
+      CHECK(files.read_model("M2", tip, StiffnessColumn::value, false).stiffness().diagonal(r.p_max)[axis] ==
             Approx(r.k[axis]).epsilon(1e-15));
       std::filesystem::remove(files.force_in_pressure_path(axis));
     }

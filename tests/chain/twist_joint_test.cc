@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 using namespace softchain::chain;
+namespace data = softchain::data;
 using softchain::chain::testing::UniformReduction;
 
 namespace
@@ -56,11 +57,11 @@ namespace
 TEST_CASE("a joint with its own twist axis twists about S and bends about J")
 {
   softchain::testing::ScratchDirectory dir("twist_joint");
-  const StiffnessFiles files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   const double         h = 0.004;
   const auto           r = three_joints(h);
   write_reduction(files, r);
-  const ChainModel model = files.read_model("M2", tip, "value", true);
+  const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
   REQUIRE(model.chain().n_joints() == 3);
   REQUIRE(model.chain().has_twist_offsets());
   for (int i = 0; i < 3; ++i)
@@ -82,15 +83,15 @@ TEST_CASE("a joint with its own twist axis twists about S and bends about J")
   // Without twist axis columns every joint twists about its centre; so does
   // every joint when the twist axes are not asked for.
   write_reduction(files, three_joints(0.0));
-  CHECK_FALSE(files.read_model("M2", tip, "value", true).chain().has_twist_offsets());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, true).chain().has_twist_offsets());
   write_reduction(files, r);
-  CHECK_FALSE(files.read_model("M2", tip, "value", true, true, false).chain().has_twist_offsets());
+  CHECK_FALSE(files.read_model("M2", tip, StiffnessColumn::value, true, true, false).chain().has_twist_offsets());
 }
 
 TEST_CASE("a small tip force twists the chain about the joints' twist axes, in closed form")
 {
   softchain::testing::ScratchDirectory dir("twist_joint_force");
-  const StiffnessFiles files(dir.path().string(), "M2", 0.5);
+  const StiffnessFiles files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
   // F = 1e-5 N turns the joints by <= 1e-5 rad: the first-order closed form
   // holds to that relative size.
   const double F = 1e-5;
@@ -99,7 +100,7 @@ TEST_CASE("a small tip force twists the chain about the joints' twist axes, in c
       INFO("twist axis " << h << " m above the joints");
       const auto r = three_joints(h);
       write_reduction(files, r);
-      const double uz = chain_uz(files.read_model("M2", tip, "value", false), F);
+      const double uz = chain_uz(files.read_model("M2", tip, StiffnessColumn::value, false), F);
       CHECK(uz == Approx(closed_form_uz(r, F)).epsilon(2e-5));
     }
   // The axis matters far beyond that tolerance: raised by 4 of the tip's

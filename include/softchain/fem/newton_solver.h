@@ -77,6 +77,8 @@ namespace softchain::fem
       bool         converged() const { return status == Status::converged; }
     };
 
+    // Keeps a copy of `prm` (a small struct of numbers), so that a solver
+    // made from a temporary stays valid.
     NewtonSolver(const SolverParameters &prm, bool verbose, std::ostream &log);
 
     // Iterates on `system` from its current x. `final_state`: to Residual
@@ -85,9 +87,9 @@ namespace softchain::fem
     Outcome solve(NewtonSystem &system, bool final_state, std::vector<double> *history = nullptr);
 
   private:
-    const SolverParameters &prm;
-    const bool              verbose;
-    std::ostream           &log;
+    const SolverParameters prm;
+    const bool             verbose;
+    std::ostream          &log;
 
     // After x = x_old + dx: keeps the full step where |s(1)| <= 0.8 |s(0)|,
     // else goes to the secant's zero of s within [0.1, 1]; a step that

@@ -117,6 +117,16 @@ namespace softchain::fem
       direct,
       iterative // GMRES + AMG
     };
+    // The direct solver. On one MPI rank `mumps_or_umfpack` keeps its
+    // factorisations' analyses across Newton iterations (SerialDirectSolver):
+    // MUMPS's LDL^T of a symmetric tangent, UMFPACK's LU of a non-symmetric
+    // one; on several ranks it is Trilinos' Amesos_Mumps.
+    enum class DirectPackage
+    {
+      mumps_or_umfpack,
+      amesos_mumps,
+      amesos_klu
+    };
     double       residual_tolerance;     // relative to the external load norm
     double       displacement_tolerance; // relative Newton update
     // Both tolerances of the load steps before a path's last (whose state is
@@ -130,7 +140,7 @@ namespace softchain::fem
     unsigned int max_load_step_attempts = 1000;
     LinearSolver linear_solver = LinearSolver::automatic;
     unsigned int direct_solver_max_dofs;
-    std::string  direct_solver_package; // UMFPACK or a Trilinos Amesos solver name
+    DirectPackage direct_solver_package = DirectPackage::mumps_or_umfpack;
     double       krylov_tolerance;
     bool         line_search;
     bool         secant_predictor;

@@ -1,12 +1,12 @@
 #pragma once
 // TangentSolver: x = K^-1 b for Newton's corrections, K the tangent. One
 // factory, create(), chooses the solver from subsection Solver once:
-//  - direct on one rank with Direct solver package = UMFPACK: SoftChain's own
-//    SerialDirectSolver (MUMPS's LDL^T where K is symmetric, else UMFPACK's
-//    LU), which keeps its symbolic analysis across Newton iterations and its
-//    factors for a simplified Newton correction;
-//  - direct otherwise: Trilinos' Amesos (Amesos_Mumps for UMFPACK on
-//    several ranks, else the package named);
+//  - direct on one rank with Direct solver package = MUMPS_or_UMFPACK:
+//    SoftChain's own SerialDirectSolver (MUMPS's LDL^T where K is symmetric,
+//    else UMFPACK's LU), which keeps its symbolic analysis across Newton
+//    iterations and its factors for a simplified Newton correction;
+//  - direct otherwise: Trilinos' Amesos (Amesos_Mumps for MUMPS_or_UMFPACK
+//    on several ranks, else the package named);
 //  - iterative (Linear solver = iterative, or auto above Direct solver
 //    maximum DoFs): GMRES preconditioned by algebraic multigrid (ML) with
 //    the rigid-body translations as near-null space.

@@ -43,8 +43,19 @@ namespace softchain::geometry
     // Reads the .prm file at `prm_path` and parses it as above.
     static FingerDesign read(const std::string &prm_path);
 
+    // The paper's three parametric fingers differ only in their dimensions;
+    // a parallelepiped's tip section equals its base section; `stl` is a
+    // surface from a file.
+    enum class Shape
+    {
+      p10,
+      p13,
+      parallelepiped,
+      stl
+    };
+
     std::string      source;      // the .prm path, for messages
-    std::string      shape;       // p10 | p13 | parallelepiped | stl
+    Shape            shape = Shape::p10;
     int              resolution = 1; // 0 coarse, 1 default, 2 fine
     bool             hexahedra  = false;
     std::array<double, 3> mesh_sizes{{0.008, 0.004, 0.0018}}; // m, per resolution
@@ -52,7 +63,7 @@ namespace softchain::geometry
     SpringLayout     springs;
     SurfaceDesign    surface;
 
-    bool   parametric() const { return shape != "stl"; }
+    bool   parametric() const { return shape != Shape::stl; }
     double mesh_size() const { return mesh_sizes.at(resolution); } // m
     double length() const; // tip abscissa minus base abscissa
   };

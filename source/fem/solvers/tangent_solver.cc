@@ -55,8 +55,9 @@ namespace softchain::fem
     public:
       AmesosSolver(const SolverParameters &prm)
         : prm(prm)
-        , package(prm.direct_solver_package == "UMFPACK" ? std::string("Amesos_Mumps") :
-                                                           prm.direct_solver_package)
+        , package(prm.direct_solver_package == SolverParameters::DirectPackage::amesos_klu ?
+                    "Amesos_Klu" :
+                    "Amesos_Mumps")
       {}
       bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::MPI::Vector &b,
                  TrilinosWrappers::MPI::Vector &x, bool) override
@@ -123,7 +124,8 @@ namespace softchain::fem
                          space.dof_handler.n_dofs() <= prm.direct_solver_max_dofs);
     if (!direct)
       return std::make_unique<AmgGmresSolver>(prm, space, log);
-    if (prm.direct_solver_package == "UMFPACK" && Utilities::MPI::n_mpi_processes(space.communicator) == 1)
+    if (prm.direct_solver_package == SolverParameters::DirectPackage::mumps_or_umfpack &&
+        Utilities::MPI::n_mpi_processes(space.communicator) == 1)
       return std::make_unique<KeptFactorsSolver>(prm, log);
     return std::make_unique<AmesosSolver>(prm);
   }

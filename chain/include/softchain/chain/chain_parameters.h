@@ -15,6 +15,7 @@
 //   end
 // Bad values are InputErrors naming file, line and parameter.
 #include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/stiffness_files.h>
 #include <softchain/data/prm_file.h>
 
 #include <string>
@@ -24,9 +25,9 @@ namespace softchain::chain
 {
   struct ChainParameters
   {
-    std::string              method              = "M2";
+    data::RotationMethod     method              = data::RotationMethod::affine_fit;
     double                   half_width_fraction = 0.5;
-    std::string              stiffness_column    = "value";
+    StiffnessColumn          stiffness_column    = StiffnessColumn::value;
     bool                     in_pressure         = true;
     bool                     pressure_link_geometry = true; // links as the pressure shapes them (LinkGeometry)
     bool                     link_compliance     = true; // links in series with the joints (LinkCompliance)

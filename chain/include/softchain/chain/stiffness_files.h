@@ -23,20 +23,30 @@
 // NaN means "no value at this pressure" (the reduction's threshold) and the
 // row is skipped; a joint without any value is an error.
 #include <softchain/chain/chain_model.h>
+#include <softchain/data/rotation_method.h>
 
 #include <array>
 #include <string>
 
 namespace softchain::chain
 {
+  // Which stiffness of the table a chain uses: k at the largest load of
+  // each axis (columns k_psi, k_theta, k_phi) or the least-squares fit over
+  // the load set (k_psi_fit, k_theta_fit, k_phi_fit).
+  enum class StiffnessColumn
+  {
+    value,
+    fit
+  };
+
   class StiffnessFiles
   {
   public:
-    StiffnessFiles(const std::string &stiffness_directory, const std::string &method,
+    StiffnessFiles(const std::string &stiffness_directory, data::RotationMethod method,
                    double half_width_fraction);
 
     // "M2_b0.50a"
-    static std::string label(const std::string &method, double half_width_fraction);
+    static std::string label(data::RotationMethod method, double half_width_fraction);
 
     const std::string &stiffness_path() const { return stiffness_path_; }
     const std::string &bending_in_pressure_path() const { return bending_in_pressure_path_; }
@@ -47,9 +57,8 @@ namespace softchain::chain
     const std::string &force_in_pressure_path(int axis) const { return force_in_pressure_paths_[axis]; }
     bool               exist() const;
 
-    // The chain of these files with the given tip point. `column` is "value"
-    // (k at the largest load) or "fit" (least-squares over the load set);
-    // `in_pressure` makes k_phi, J_p, the link geometry and the link
+    // The chain of these files with the given tip point and the stiffness
+    // `column`; `in_pressure` makes k_phi, J_p, the link geometry and the link
     // compliance follow their pressure tables. A k
     // that is NaN or not positive at some joints holds them rigid
     // (`rigid_where_missing`) or is an InputError.
@@ -57,7 +66,7 @@ namespace softchain::chain
     // axis point S_i (columns Sx, Sy, Sz; J_i without them) and bends about
     // J_i (KinematicChain::with_twist_offsets).
     ChainModel read_model(const std::string &name, const Eigen::Vector3d &tip,
-                          const std::string &column, bool in_pressure,
+                          StiffnessColumn column, bool in_pressure,
                           bool rigid_where_missing = true, bool twist_axes = true) const;
 
   private:

@@ -11,6 +11,8 @@
 //   <output>/contact/contact_forces.csv          the reduction, the contact samples
 //   <output>/chain/                              the chain tier's validation
 // where <label> is "<method>_b<b/a with two decimals>a", e.g. M2_b0.50a.
+#include <softchain/data/rotation_method.h>
+
 #include <string>
 
 namespace softchain::data
@@ -24,7 +26,7 @@ namespace softchain::data
   } // namespace folder
 
   // "M2_b0.50a": a stiffness file set's label.
-  std::string stiffness_label(const std::string &method, double half_width_fraction);
+  std::string stiffness_label(RotationMethod method, double half_width_fraction);
 
   // The reduction's files of one label in `directory` (<output>/stiffness).
   struct StiffnessFileSet

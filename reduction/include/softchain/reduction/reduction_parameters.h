@@ -3,6 +3,7 @@
 // (reduction/README.md lists the entries). Everything else in the file belongs
 // to the other tiers and is ignored here.
 #include <softchain/data/prm_file.h>
+#include <softchain/data/rotation_method.h>
 
 #include <cmath>
 #include <string>
@@ -10,12 +11,7 @@
 
 namespace softchain::reduction
 {
-  // How a joint's rotation is read from its slab of nodes (paper Sec. III-C).
-  enum class RotationMethod
-  {
-    bounding_box, // M1: frame spanned by the deformed edges of the slab's box
-    affine_fit    // M2: rotation of the polar decomposition of the affine fit
-  };
+  using data::RotationMethod;
 
   // Where the joints sit and what orients the links (joint_geometry.h).
   enum class JointPlacement
@@ -23,9 +19,6 @@ namespace softchain::reduction
     paper,                // joints at the slab bounding-box centres (Sec. III-C)
     strain_limiting_layer // joints on the layer that does not stretch
   };
-
-  // "M1" or "M2", the names used in the .prm file and the CSV file names.
-  std::string method_name(RotationMethod method);
 
   struct ReductionParameters
   {

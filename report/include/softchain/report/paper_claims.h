@@ -9,6 +9,8 @@
 // sibling directories <output>/../<design>/stiffness/ when they exist.
 // The thresholds that turn a number into a verdict are stated in the
 // claim's text, so that the report's reader can judge them.
+#include <softchain/data/rotation_method.h>
+
 #include <string>
 #include <vector>
 
@@ -62,7 +64,7 @@ namespace softchain::report
     // <output>/stiffness of `design` (this one, or a sibling directory).
     std::string stiffness_directory(const std::string &design) const;
     // "<M>_b<f>a" of `method` at the chain's slab half-width.
-    std::string label(const std::string &method) const;
+    std::string label(data::RotationMethod method) const;
 
     ClaimInputs        in_;
     std::vector<Claim> claims_;
