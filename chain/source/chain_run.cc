@@ -107,9 +107,9 @@ namespace softchain::chain
       double       max       = 0.0;
       for (const MujocoTipDistance &d : mujoco_tip_distances(model, path, pressures, settings))
         {
-          std::cout << "chain: MuJoCo at rest at " << d.pressure << " Pa: tip " << 100 * d.with_tables / L
-                    << " % of L from the chain's (plain MuJoCo, K and J_p of " << options.pressure
-                    << " Pa: " << 100 * d.exported_constants / L << " %)\n";
+          std::cout << "chain: MuJoCo at rest at " << d.pressure / 1e3 << " kPa: tip " << 100 * d.with_tables / L
+                    << " % of L from the chain's (plain MuJoCo, K and J_p of " << options.pressure / 1e3
+                    << " kPa: " << 100 * d.exported_constants / L << " %)\n";
           max = std::max(max, d.with_tables);
         }
       std::cout << "mujoco vs chain over pressure: max tip distance " << 100 * max / L << " % of L\n";
