@@ -41,7 +41,7 @@ namespace softchain::chain
         mj_deleteModel(model_);
         throw;
       }
-    model_->opt.gravity[2] = 0.0;
+    mju_zero3(model_->opt.gravity);
   }
 
   MujocoQuasiStatic::~MujocoQuasiStatic()
