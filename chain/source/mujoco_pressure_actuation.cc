@@ -84,6 +84,9 @@ namespace softchain::chain
                                     "joint" + std::to_string(i + 1) + "_" + axis_names[axis], "hinge");
             const int dof   = model->jnt_dofadr[joint];
             const int wrap  = tendon < 0 ? -1 : tendon_wrap(model, tendon, joint);
+            if (!(model->jnt_stiffness[joint] > 0.0))
+              throw data::InputError("MuJoCo model: hinge joint" + std::to_string(i + 1) + "_" +
+                                     axis_names[axis] + " has no spring (stiffness not positive)");
             if (tables_.turns_hinge(3 * i + axis) && (wrap < 0 || pressure_motor_ < 0))
               throw data::InputError("MuJoCo model: the pressure turns hinge joint" + std::to_string(i + 1) +
                                      "_" + axis_names[axis] +
