@@ -117,13 +117,14 @@ namespace softchain::chain
   // the tip site at U_T - U_n.
   void MujocoPressureActuation::set_links(const Eigen::VectorXd &points, mjModel *model) const
   {
-    const int n = tables_.n_joints();
+    const int       n        = tables_.n_joints();
+    Eigen::Vector3d previous = Eigen::Vector3d::Zero(); // U_0
     for (int i = 0; i < n; ++i)
       {
-        const Eigen::Vector3d joint  = points.segment<3>(3 * i);
-        const Eigen::Vector3d before = i > 0 ? Eigen::Vector3d(points.segment<3>(3 * (i - 1))) : Eigen::Vector3d::Zero();
-        const Eigen::Vector3d link   = points.segment<3>(3 * (i + 1)) - joint;
-        Eigen::Map<Eigen::Vector3d>(model->body_pos + 3 * bodies_[i]) = joint - before;
+        const Eigen::Vector3d joint = points.segment<3>(3 * i);
+        const Eigen::Vector3d link  = points.segment<3>(3 * (i + 1)) - joint;
+        Eigen::Map<Eigen::Vector3d>(model->body_pos + 3 * bodies_[i]) = joint - previous;
+        previous                                                     = joint;
         const int g = capsules_[i];
         Eigen::Map<Eigen::Vector3d>(model->geom_pos + 3 * g) = 0.5 * link;
         mju_quatZ2Vec(model->geom_quat + 4 * g, link.data());
