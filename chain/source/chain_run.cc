@@ -83,11 +83,31 @@ namespace softchain::chain
       return p;
     }
 
-    // The MJCF of `model` with K and J_p at the database's largest pressure
-    // p* and the pressure tables up to p*. MuJoCo's finger at rest, set from
-    // the tables, against the chain's at 11 pressures 0, p*/10, ..., p*
-    // (and plain MuJoCo's, exact only at 0 and p*); the last line is the
-    // largest distance over the pressures set from the tables.
+    // MuJoCo's finger at rest in the MJCF at `path` against `model`'s at 11
+    // pressures 0, p*/10, ..., p*, set from the pressure tables and as plain
+    // MuJoCo (exact at p* only), in % of the finger's length L; the last line
+    // is the largest distance over the pressures set from the tables.
+    void compare_with_mujoco(const ChainModel &model, const std::string &path, const double p_star,
+                             const double L, const EquilibriumSettings &settings)
+    {
+      std::vector<double> pressures;
+      for (int i = 0; i <= 10; ++i)
+        pressures.push_back(p_star * i / 10);
+      const auto precision = std::cout.precision(3);
+      double     max       = 0.0;
+      for (const MujocoTipDistance &d : mujoco_tip_distances(model, path, pressures, settings))
+        {
+          std::cout << "chain: MuJoCo at rest at " << d.pressure / 1e3 << " kPa: tip " << 100 * d.with_tables / L
+                    << " % of L from the chain's (plain MuJoCo, K and J_p of " << p_star / 1e3
+                    << " kPa: " << 100 * d.exported_constants / L << " %)\n";
+          max = std::max(max, d.with_tables);
+        }
+      std::cout << "mujoco vs chain over pressure: max tip distance " << 100 * max / L << " % of L\n";
+      std::cout.precision(precision);
+    }
+
+    // The MJCF of `model` with K, J_p and the links at the database's largest
+    // pressure p* and the pressure tables up to p*, compared with the chain.
     void export_model(const ChainModel &model, const data::ActuationDatabase &database,
                       const std::string &path, const EquilibriumSettings &settings)
     {
@@ -99,21 +119,7 @@ namespace softchain::chain
       options.pressure     = options.max_pressure;
       MjcfExport(model.with_name(database.design().name + "_" + model.name()), options).write(path);
       std::cout << "chain: MuJoCo model " << path << "\n";
-      std::vector<double> pressures;
-      for (int i = 0; i <= 10; ++i)
-        pressures.push_back(options.pressure * i / 10);
-      const double L         = box.second.x() - box.first.x();
-      const auto   precision = std::cout.precision(3);
-      double       max       = 0.0;
-      for (const MujocoTipDistance &d : mujoco_tip_distances(model, path, pressures, settings))
-        {
-          std::cout << "chain: MuJoCo at rest at " << d.pressure / 1e3 << " kPa: tip " << 100 * d.with_tables / L
-                    << " % of L from the chain's (plain MuJoCo, K and J_p of " << options.pressure / 1e3
-                    << " kPa: " << 100 * d.exported_constants / L << " %)\n";
-          max = std::max(max, d.with_tables);
-        }
-      std::cout << "mujoco vs chain over pressure: max tip distance " << 100 * max / L << " % of L\n";
-      std::cout.precision(precision);
+      compare_with_mujoco(model, path, options.pressure, box.second.x() - box.first.x(), settings);
     }
 
     void report(const ChainValidation &validation, const std::string &directory)

@@ -17,9 +17,10 @@
 // makes MuJoCo's Euler step (implicit in damping) stable for timestep
 // < 2 c / k = 2 damping_time whatever the link inertia; the model uses
 // damping_time / 10. MJCF has one K and one J_p: with `pressure` > 0 those
-// of the chain at that pressure, K(p*) and J_p(p*), so that plain MuJoCo
-// finds the chain's pose exactly at p* (and at 0); otherwise the CSV's K and
-// the rest J_p. exported_model() is the chain plain MuJoCo then simulates.
+// of the chain at that pressure, K(p*) and J_p(p*), with the links of p*, so
+// that plain MuJoCo finds the chain's pose exactly at p* (and at 0 if the
+// links do not change with p); otherwise the CSV's K and the rest J_p.
+// exported_model() is the chain plain MuJoCo then simulates.
 // The chain's K(p), J_p(p) and link geometry U(p) go along as <custom>
 // tables (PressureTables) on [0, max(pressure, max_pressure)], from which
 // MujocoPressureActuation sets the model of any pressure in that range; the
@@ -48,8 +49,6 @@ namespace softchain::chain
     std::string text() const;
     // The chain with the exported constant K and J_p (what plain MuJoCo simulates).
     ChainModel exported_model() const;
-    // The chain's K(p), J_p(p) and U(p) as the MJCF's <custom> tables hold them.
-    const PressureTables &pressure_tables() const { return tables_; }
     // Writes the model to `path` (parent directories created); InputError
     // naming the file if it cannot be written.
     void write(const std::string &path) const;
