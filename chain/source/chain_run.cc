@@ -98,7 +98,7 @@ namespace softchain::chain
       for (const MujocoTipDistance &d : mujoco_tip_distances(model, path, pressures, settings))
         {
           std::cout << "chain: MuJoCo at rest at " << d.pressure / 1e3 << " kPa: tip " << 100 * d.with_tables / L
-                    << " % of L from the chain's (plain MuJoCo, K and J_p of " << p_star / 1e3
+                    << " % of L from the chain's (plain MuJoCo, K, J_p and links of " << p_star / 1e3
                     << " kPa: " << 100 * d.exported_constants / L << " %)\n";
           max = std::max(max, d.with_tables);
         }
