@@ -61,7 +61,7 @@ namespace softchain::chain::testing
 
   // Tolerance: the chain's Newton tolerance 1e-10 (relative residual) gives
   // angles to ~1e-10 of their size (0.2 rad); MuJoCo's rest criterion adds
-  // 1e-13 rad (MujocoQuasiStatic): 1e-10 rad per hinge, and 9 hinges times
+  // 1e-12 rad (MujocoQuasiStatic): 1e-10 rad per hinge, and 9 hinges times
   // 0.1 m arm bound the tip position error by 1e-10 m.
   inline void check_same_pose(const MujocoRestPose &mujoco, const Equilibrium &e, const ChainPose &pose)
   {
