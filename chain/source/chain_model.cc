@@ -53,6 +53,15 @@ namespace softchain::chain
     return link_compliance_ ? link_compliance_->tip_deflection(load, chain_) : Eigen::Vector3d::Zero();
   }
 
+  std::vector<double> ChainModel::table_pressures() const
+  {
+    std::vector<double> pressures = stiffness_.table_pressures();
+    merge_abscissae(actuation_.table_pressures(), pressures);
+    if (link_geometry_)
+      merge_abscissae(link_geometry_->table_pressures(), pressures);
+    return pressures;
+  }
+
   KinematicChain ChainModel::chain_at(const double pressure) const
   {
     return link_geometry_ ? link_geometry_->at(pressure, chain_) : chain_;

@@ -3,6 +3,7 @@
 #include <softchain/chain/chain_run.h>
 #include <softchain/chain/chain_validation.h>
 #include <softchain/chain/mjcf_export.h>
+#include <softchain/chain/mujoco_tip_distances.h>
 #include <softchain/chain/protocol_plot.h>
 #include <softchain/chain/protocol_torques.h>
 #include <softchain/chain/stiffness_files.h>
@@ -82,10 +83,31 @@ namespace softchain::chain
       return p;
     }
 
-    // The MJCF of `model` with K and J_p at the database's largest pressure
-    // p*, where MuJoCo finds the chain's pose exactly; at p*/2 the constant
-    // K and J_p differ from the chain's K(p), J_p(p), and the tip distance
-    // between the two chains is printed.
+    // MuJoCo's finger at rest in the MJCF at `path` against `model`'s at 11
+    // pressures 0, p*/10, ..., p*, set from the pressure tables and as plain
+    // MuJoCo (exact at p* only), in % of the finger's length L; the last line
+    // is the largest distance over the pressures set from the tables.
+    void compare_with_mujoco(const ChainModel &model, const std::string &path, const double p_star,
+                             const double L, const EquilibriumSettings &settings)
+    {
+      std::vector<double> pressures;
+      for (int i = 0; i <= 10; ++i)
+        pressures.push_back(p_star * i / 10);
+      const auto precision = std::cout.precision(3);
+      double     max       = 0.0;
+      for (const MujocoTipDistance &d : mujoco_tip_distances(model, path, pressures, settings))
+        {
+          std::cout << "chain: MuJoCo at rest at " << d.pressure / 1e3 << " kPa: tip " << 100 * d.with_tables / L
+                    << " % of L from the chain's (plain MuJoCo, K, J_p and links of " << p_star / 1e3
+                    << " kPa: " << 100 * d.exported_constants / L << " %)\n";
+          max = std::max(max, d.with_tables);
+        }
+      std::cout << "mujoco vs chain over pressure: max tip distance " << 100 * max / L << " % of L\n";
+      std::cout.precision(precision);
+    }
+
+    // The MJCF of `model` with K, J_p and the links at the database's largest
+    // pressure p* and the pressure tables up to p*, compared with the chain.
     void export_model(const ChainModel &model, const data::ActuationDatabase &database,
                       const std::string &path, const EquilibriumSettings &settings)
     {
@@ -95,22 +117,9 @@ namespace softchain::chain
       options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
       options.max_pressure = max_pressure(database);
       options.pressure     = options.max_pressure;
-      const ChainModel named = model.with_name(database.design().name + "_" + model.name());
-      const MjcfExport mjcf(named, options);
-      mjcf.write(path);
+      MjcfExport(model.with_name(database.design().name + "_" + model.name()), options).write(path);
       std::cout << "chain: MuJoCo model " << path << "\n";
-      if (options.pressure <= 0)
-        return;
-      const ChainModel  exported = mjcf.exported_model();
-      ChainEquilibrium  chain(model, settings), frozen(exported, settings);
-      const double      half = 0.5 * options.pressure;
-      const Equilibrium a = chain.solve({half, {}}), b = frozen.solve({half, {}});
-      if (a.converged && b.converged)
-        std::cout << "chain: the MuJoCo model is exact at " << options.pressure
-                  << " Pa; at " << half << " Pa its tip lies "
-                  << 100 * (chain.pose().tip_position - frozen.pose().tip_position).norm() /
-                       (box.second.x() - box.first.x())
-                  << " % of L from the chain's\n";
+      compare_with_mujoco(model, path, options.pressure, box.second.x() - box.first.x(), settings);
     }
 
     void report(const ChainValidation &validation, const std::string &directory)
@@ -212,8 +221,6 @@ namespace softchain::chain
     const ChainModel        selected =
       *std::find_if(models.begin(), models.end(),
                     [&](const auto &m) { return m.name() == data::method_name(p.method); });
-    if (export_mjcf)
-      export_model(selected, database, files.mjcf, p.newton);
     // The baseline's beam segments lie between the joints of the reduction's
     // table, each joint one spherical joint (no separate twist axis).
     const ChainModel plain = StiffnessFiles(stiffness_dir, p.method, p.half_width_fraction)
@@ -222,6 +229,8 @@ namespace softchain::chain
     models.push_back(baseline_of(plain, mesh, p.baseline_youngs_modulus));
     const int failed = validate(models, validation, p, files);
     compare_protocol(models, database, p, files);
+    if (export_mjcf)
+      export_model(selected, database, files.mjcf, p.newton);
     return failed > 0 ? 2 : 0;
   }
 } // namespace softchain::chain

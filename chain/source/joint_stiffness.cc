@@ -27,6 +27,14 @@ namespace softchain::chain
     return !in_pressure_[0].empty() || !in_pressure_[1].empty() || !in_pressure_[2].empty();
   }
 
+  std::vector<double> JointStiffness::table_pressures() const
+  {
+    std::vector<double> pressures;
+    for (const std::vector<PiecewiseLinear> &tables : in_pressure_)
+      merge_abscissae(tables, pressures);
+    return pressures;
+  }
+
   Eigen::VectorXd JointStiffness::diagonal(double pressure) const
   {
     Eigen::VectorXd k;

@@ -25,6 +25,20 @@ namespace softchain::chain
       throw std::invalid_argument("LinkGeometry: no joints");
   }
 
+  std::vector<double> LinkGeometry::table_pressures() const
+  {
+    std::vector<double> pressures;
+    const auto          merge = [&](const PointInPressure &point) {
+      for (const PiecewiseLinear &coordinate : point)
+        merge_abscissae(coordinate.abscissae(), pressures);
+    };
+    for (const PointInPressure &point : joints_)
+      merge(point);
+    merge(tip_);
+    merge(tip_frame_);
+    return pressures;
+  }
+
   KinematicChain LinkGeometry::at(const double pressure, const KinematicChain &reference) const
   {
     KinematicChain chain = reference;

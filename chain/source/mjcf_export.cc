@@ -1,6 +1,7 @@
 #include <softchain/chain/mjcf_export.h>
 #include <softchain/data/input_error.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,7 +42,7 @@ namespace softchain::chain
       const Eigen::VectorXd diagonal = model.stiffness().diagonal(pressure);
       for (int i = 0; i < model.chain().n_joints(); ++i)
         k.push_back(pressure > 0 ? Eigen::Vector3d(diagonal.segment<3>(3 * i)) : model.stiffness().joint(i));
-      const Eigen::VectorXd jp = pressure > 0 ? Eigen::VectorXd(model.actuation().torque(pressure) / pressure)
+      const Eigen::VectorXd jp = pressure > 0 ? model.actuation().torque_per_pascal(pressure)
                                               : model.actuation().rest_torque_per_pascal();
       return ChainModel(model.name(), model.chain_at(pressure), JointStiffness(k), PressureActuation(jp));
     }
@@ -50,6 +51,7 @@ namespace softchain::chain
   MjcfExport::MjcfExport(const ChainModel &model, MjcfOptions options)
     : options_(options)
     , exported_(constant_model(model, options.pressure))
+    , tables_(PressureTables::of_model(model, std::max(options.pressure, options.max_pressure)))
   {}
 
   ChainModel MjcfExport::exported_model() const { return exported_; }
@@ -88,12 +90,14 @@ namespace softchain::chain
     return s.str();
   }
 
+  // A fixed tendon over every hinge that the pressure turns at some tabulated
+  // pressure (coefficient J_p(p*), possibly 0), and the motor driving it.
   std::string MjcfExport::pressure_actuator() const
   {
     const Eigen::VectorXd &jp = exported_.actuation().rest_torque_per_pascal();
     std::ostringstream     coefficients;
     for (Eigen::Index j = 0; j < jp.size(); ++j)
-      if (jp[j] != 0.0)
+      if (tables_.turns_hinge(static_cast<int>(j)))
         coefficients << "      <joint joint=\"" << joint_name(int(j / 3), int(j % 3))
                      << "\" coef=\"" << number(jp[j]) << "\"/>\n";
     if (coefficients.str().empty())
@@ -111,7 +115,11 @@ namespace softchain::chain
     std::ostringstream s;
     s << "<mujoco model=\"" << exported_.name() << "\">\n"
       << "  <!-- SoftChain chain tier: spherical joint = hinges x, y, z (R = Rx Ry Rz),\n"
-      << "       stiffness from the reduction's CSV, control 'pressure' in Pa. -->\n"
+      << "       stiffness from the reduction's CSV, control 'pressure' in Pa. The custom\n"
+      << "       numeric fields are the chain's stiffness k(p), pressure torque per pascal\n"
+      << "       J_p(p) and link points U(p) (joints 1..n, tip) at the pressures of\n"
+      << "       softchain_pressure, linear between them; set them at every pressure for a\n"
+      << "       finger exact at all pressures (SoftChain docs/chain_fidelity.md, MuJoCo). -->\n"
       << "  <compiler angle=\"radian\"/>\n"
       << "  <option timestep=\"" << number(0.1 * options_.damping_time)
       << "\" integrator=\"Euler\"/>\n"
@@ -122,7 +130,7 @@ namespace softchain::chain
       << "  </default>\n"
       << "  <worldbody>\n"
       << body(0) << "  </worldbody>\n"
-      << pressure_actuator() << "</mujoco>\n";
+      << pressure_actuator() << tables_.mjcf("  ") << "</mujoco>\n";
     return s.str();
   }
 

@@ -27,4 +27,17 @@ namespace softchain::chain
     const double t     = (x - abscissae_[i - 1]) / (abscissae_[i] - abscissae_[i - 1]);
     return (1.0 - t) * values_[i - 1] + t * values_[i];
   }
+
+  void merge_abscissae(const std::vector<double> &abscissae, std::vector<double> &merged)
+  {
+    merged.insert(merged.end(), abscissae.begin(), abscissae.end());
+    std::sort(merged.begin(), merged.end());
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+  }
+
+  void merge_abscissae(const std::vector<PiecewiseLinear> &tables, std::vector<double> &merged)
+  {
+    for (const PiecewiseLinear &table : tables)
+      merge_abscissae(table.abscissae(), merged);
+  }
 } // namespace softchain::chain

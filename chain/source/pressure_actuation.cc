@@ -19,6 +19,26 @@ namespace softchain::chain
     in_pressure_ = std::move(torque_per_pascal_in_pressure);
   }
 
+  std::vector<double> PressureActuation::table_pressures() const
+  {
+    std::vector<double> pressures;
+    merge_abscissae(in_pressure_, pressures);
+    return pressures;
+  }
+
+  Eigen::VectorXd PressureActuation::torque_per_pascal(double pressure) const
+  {
+    Eigen::VectorXd jp(rest_.size());
+    for (Eigen::Index j = 0; j < rest_.size(); ++j)
+      jp[j] = per_pascal(j, pressure);
+    return jp;
+  }
+
+  double PressureActuation::per_pascal(const Eigen::Index j, const double pressure) const
+  {
+    return depends_on_pressure() ? in_pressure_[j](pressure) : rest_[j];
+  }
+
   Eigen::VectorXd PressureActuation::torque(double pressure) const
   {
     Eigen::VectorXd tau;
@@ -30,6 +50,6 @@ namespace softchain::chain
   {
     tau.resize(rest_.size());
     for (Eigen::Index j = 0; j < rest_.size(); ++j)
-      tau[j] = (depends_on_pressure() ? in_pressure_[j](pressure) : rest_[j]) * pressure;
+      tau[j] = per_pascal(j, pressure) * pressure;
   }
 } // namespace softchain::chain

@@ -85,7 +85,10 @@ namespace
      "  The kinematic-chain finger with the stiffness of subsection Chain, solved\n"
      "  for every database sample and compared with the FEM tip pose:\n"
      "  <output>/chain/validation*.csv, validation.png, fem_tip_poses.csv;\n"
-     "  --export-mjcf writes a MuJoCo model. See chain/README.md.\n",
+     "  --export-mjcf writes a MuJoCo model (<output>/chain/finger.xml) with the\n"
+     "  chain's pressure tables, and compares MuJoCo set from them with the chain\n"
+     "  at 11 pressures from 0 to the largest; the last line is the largest tip\n"
+     "  distance. See chain/README.md.\n",
      [](const Invocation &i) {
        const auto design = i.design();
        return chain::run_chain(i.file, design.database_path(), design.output_directory,

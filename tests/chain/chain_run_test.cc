@@ -15,12 +15,27 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <iostream>
+#include <sstream>
 
 using namespace softchain::chain;
 using namespace softchain;
 
 namespace
 {
+  // std::cout into `stream` while it lives.
+  class CoutTo
+  {
+  public:
+    explicit CoutTo(std::ostream &stream)
+      : old_(std::cout.rdbuf(stream.rdbuf()))
+    {}
+    ~CoutTo() { std::cout.rdbuf(old_); }
+
+  private:
+    std::streambuf *old_;
+  };
+
   const char *chain_prm = "subsection Finger design\n  set Length = 0.09\nend\n"
                           "subsection Chain\n"
                           "  set Stiffness method = M2\n"
@@ -246,10 +261,23 @@ TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's twist pivo
   const StiffnessFiles files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
   chain::testing::write_reduction(files, r);
   write_database(dir.file("database.h5"), files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true), mesh);
-  REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
+  std::ostringstream printed;
+  {
+    const CoutTo to(printed);
+    REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
+  }
   std::ifstream     xml(out + "/chain/finger.xml");
   const std::string text((std::istreambuf_iterator<char>(xml)), {});
   CHECK(softchain::testing::occurrences(text, "<body name=\"link") == 9);
   CHECK(softchain::testing::occurrences(text, "<joint name=") == 27);
   CHECK(softchain::testing::occurrences(text, "_psi\" axis=\"1 0 0\" pos=\"0 0.0040000000000000001 0\"") == 9);
+  // The last line: MuJoCo set from the pressure tables against the chain at
+  // 11 pressures up to p*. At rest to 1e-12 rad per hinge (MujocoQuasiStatic)
+  // its tip is the chain's to ~1e-12 m, 1e-9 % of L = 0.09 m.
+  const std::string lines = printed.str(), last = lines.substr(lines.rfind('\n', lines.size() - 2) + 1);
+  const std::string head  = "mujoco vs chain over pressure: max tip distance ";
+  INFO(lines);
+  REQUIRE(last.rfind(head, 0) == 0);
+  CHECK(last.substr(last.size() - 7) == "% of L\n");
+  CHECK(std::stod(last.substr(head.size())) < 1e-8);
 }

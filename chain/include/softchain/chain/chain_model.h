@@ -48,7 +48,10 @@ namespace softchain::chain
     bool                     has_link_geometry() const { return link_geometry_.has_value(); }
     const JointStiffness    &stiffness() const { return stiffness_; }
     const PressureActuation &actuation() const { return actuation_; }
-
+    // The tabulated pressures of K(p), J_p(p) and the link geometry U(p)
+    // together (sorted, unique): between consecutive ones all three are
+    // linear in p, so these rows sampled at them reproduce the model exactly.
+    std::vector<double>      table_pressures() const;
 
   private:
     std::string       name_;

@@ -27,6 +27,9 @@ namespace softchain::chain
     int                    n_joints() const { return static_cast<int>(per_joint_.size()); }
     const Eigen::Vector3d &joint(int i) const { return per_joint_[i]; }
     bool depends_on_pressure() const;
+    // The tabulated pressures of every k(p) table (sorted, unique; empty if
+    // K is constant): K(p) is linear between consecutive ones.
+    std::vector<double> table_pressures() const;
 
     // diag(K) = (k_psi,0, k_theta,0, k_phi,0, ...) at pressure p.
     Eigen::VectorXd diagonal(double pressure) const;

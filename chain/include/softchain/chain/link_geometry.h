@@ -31,6 +31,9 @@ namespace softchain::chain
     LinkGeometry(std::vector<PointInPressure> joints, PointInPressure tip, PointInPressure tip_frame);
 
     int n_joints() const { return static_cast<int>(joints_.size()); }
+    // The tabulated pressures of every point's table (sorted, unique): U(p)
+    // is linear between consecutive ones.
+    std::vector<double> table_pressures() const;
     // `reference` with the link geometry at `pressure`; std::invalid_argument
     // if the joint counts differ or the interpolated points are out of order.
     KinematicChain at(double pressure, const KinematicChain &reference) const;

@@ -17,10 +17,16 @@
 // makes MuJoCo's Euler step (implicit in damping) stable for timestep
 // < 2 c / k = 2 damping_time whatever the link inertia; the model uses
 // damping_time / 10. MJCF has one K and one J_p: with `pressure` > 0 those
-// of the chain at that pressure, K(p*) and J_p(p*), so that MuJoCo finds the
-// chain's pose exactly at p* (and at 0); otherwise the CSV's K and the rest
-// J_p. exported_model() is the chain MuJoCo then simulates.
+// of the chain at that pressure, K(p*) and J_p(p*), with the links of p*, so
+// that plain MuJoCo finds the chain's pose exactly at p* (and at 0 if the
+// links do not change with p); otherwise the CSV's K and the rest J_p.
+// exported_model() is the chain plain MuJoCo then simulates.
+// The chain's K(p), J_p(p) and link geometry U(p) go along as <custom>
+// tables (PressureTables) on [0, max(pressure, max_pressure)], from which
+// MujocoPressureActuation sets the model of any pressure in that range; the
+// pressure tendon lists every hinge whose J_p is non-zero at some pressure.
 #include <softchain/chain/chain_model.h>
+#include <softchain/chain/pressure_tables.h>
 
 #include <string>
 
@@ -41,7 +47,7 @@ namespace softchain::chain
     MjcfExport(const ChainModel &model, MjcfOptions options);
 
     std::string text() const;
-    // The chain with the exported constant K and J_p (what MuJoCo simulates).
+    // The chain with the exported constant K and J_p (what plain MuJoCo simulates).
     ChainModel exported_model() const;
     // Writes the model to `path` (parent directories created); InputError
     // naming the file if it cannot be written.
@@ -51,7 +57,8 @@ namespace softchain::chain
     std::string body(int i) const;
     std::string pressure_actuator() const;
 
-    MjcfOptions options_;
-    ChainModel  exported_;
+    MjcfOptions    options_;
+    ChainModel     exported_;
+    PressureTables tables_;
   };
 } // namespace softchain::chain

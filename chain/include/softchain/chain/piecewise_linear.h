@@ -22,4 +22,10 @@ namespace softchain::chain
     std::vector<double> abscissae_;
     std::vector<double> values_;
   };
+
+  // Adds `abscissae` to `merged`, kept sorted and unique.
+  void merge_abscissae(const std::vector<double> &abscissae, std::vector<double> &merged);
+  // Adds the abscissae of `tables` to `merged`: the points between which all
+  // of them (and whatever `merged` held) are linear.
+  void merge_abscissae(const std::vector<PiecewiseLinear> &tables, std::vector<double> &merged);
 } // namespace softchain::chain

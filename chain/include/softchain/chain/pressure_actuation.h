@@ -24,12 +24,20 @@ namespace softchain::chain
     const Eigen::VectorXd &rest_torque_per_pascal() const { return rest_; }
     bool depends_on_pressure() const { return !in_pressure_.empty(); }
 
+    // The tabulated pressures of the J_p(p) tables (sorted, unique; empty if
+    // J_p is the rest one): J_p(p) is linear between consecutive ones.
+    std::vector<double> table_pressures() const;
+
+    // J_p(p), N m / Pa.
+    Eigen::VectorXd torque_per_pascal(double pressure) const;
     // J_p(p) p.
     Eigen::VectorXd torque(double pressure) const;
     // The same into tau (sized 3n; no allocation).
     void            torque(double pressure, Eigen::VectorXd &tau) const;
 
   private:
+    double per_pascal(Eigen::Index j, double pressure) const;
+
     Eigen::VectorXd              rest_;
     std::vector<PiecewiseLinear> in_pressure_;
   };
