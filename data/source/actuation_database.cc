@@ -118,6 +118,7 @@ namespace softchain::data
           write_points(g, "position", {o.position}, path);
           write_points(g, "direction", {o.direction}, path);
           write_points(g, "half_sizes", {o.half_sizes}, path);
+          write_points(g, "rotation", {o.rotation}, path);
           write_points(g, "motion", {o.motion}, path);
           const ObstacleWrench w = k < sample.obstacle_wrenches.size() ?
                                      sample.obstacle_wrenches[k] :
@@ -162,7 +163,9 @@ namespace softchain::data
           o.position        = read_point(g, "position", where, path);
           o.direction       = read_point(g, "direction", where, path);
           o.half_sizes      = read_point(g, "half_sizes", where, path);
-          o.motion          = read_point(g, "motion", where, path);
+          if (H5Lexists(g, "rotation", H5P_DEFAULT) > 0) // absent in older databases: zero
+            o.rotation = read_point(g, "rotation", where, path);
+          o.motion = read_point(g, "motion", where, path);
           const auto wrench = read_points(g, "wrench", path);
           require(wrench.size() == 2, path, where + ": 'wrench' needs 2 rows");
           wrenches[k] = {wrench[0], wrench[1]};
@@ -356,7 +359,11 @@ namespace softchain::data
     for (const auto &v : {position, direction, half_sizes, motion})
       for (const double c : v)
         text += " " + canonical(c);
-    return text + " " + canonical(radius) + " " + canonical(friction) + "\n";
+    text += " " + canonical(radius) + " " + canonical(friction);
+    if (rotation != Point3{})
+      text += " rotation " + canonical(rotation[0]) + " " + canonical(rotation[1]) + " " +
+              canonical(rotation[2]);
+    return text + "\n";
   }
 
   std::string sample_id(const std::string &design_hash, const Actuation &actuation)

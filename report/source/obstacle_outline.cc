@@ -57,7 +57,9 @@ namespace softchain::report
       return outline;
     }
 
-    std::vector<Outline> box(const Eigen::Vector3d &c, const Eigen::Vector3d &h)
+    // The six faces of the box with centre c and half sizes h along the
+    // columns of R.
+    std::vector<Outline> box(const Eigen::Vector3d &c, const Eigen::Vector3d &h, const Eigen::Matrix3d &R)
     {
       std::vector<Outline> faces;
       for (int axis = 0; axis < 3; ++axis)
@@ -67,11 +69,11 @@ namespace softchain::report
             Outline         face;
             for (const auto &[s, t] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
               {
-                Eigen::Vector3d x = c;
-                x[axis] += side * h[axis];
-                x[i] += s * h[i];
-                x[j] += t * h[j];
-                face.push_back(x);
+                Eigen::Vector3d y = Eigen::Vector3d::Zero();
+                y[axis]           = side * h[axis];
+                y[i]              = s * h[i];
+                y[j]              = t * h[j];
+                face.push_back(c + R * y);
               }
             faces.push_back(face);
           }
@@ -90,7 +92,12 @@ namespace softchain::report
     if (o.shape == "sphere")
       return {circle(at, view.toward_viewer().normalized(), o.radius)};
     if (o.shape == "box")
-      return box(at, vector(o.half_sizes));
+      {
+        const Eigen::Vector3d v     = vector(o.rotation);
+        const double          angle = v.norm();
+        return box(at, vector(o.half_sizes),
+                   angle > 0 ? Eigen::AngleAxisd(angle, v / angle).toRotationMatrix() : Eigen::Matrix3d::Identity());
+      }
     return {};
   }
 } // namespace softchain::report

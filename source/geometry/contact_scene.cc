@@ -19,7 +19,10 @@ namespace softchain::geometry
       section.declare(p + "Normal", "0, 1, 0", "plane: unit normal pointing out of the obstacle");
       section.declare(p + "Axis", "0, 0, 1", "cylinder: direction of the axis");
       section.declare(p + "Radius", "0.01", "sphere, cylinder: m");
-      section.declare(p + "Half sizes", "0.01, 0.01, 0.01", "box: half edge lengths along x, y, z, m");
+      section.declare(p + "Half sizes", "0.01, 0.01, 0.01", "box: half edge lengths along its axes, m");
+      section.declare(p + "Rotation", "0, 0, 0",
+                      "box: its turn from the world axes x, y, z, as a rotation vector (the axis "
+                      "times the angle, rad)");
       section.declare(p + "Friction coefficient", "0", "Coulomb's mu >= 0");
       section.declare(p + "Motion", "0, 0, 0",
                       "translation at the end of the load path, m (the obstacle moves "
@@ -54,7 +57,10 @@ namespace softchain::geometry
       if (o.shape == "sphere" || o.shape == "cylinder")
         o.radius = positive_entry(section, p + "Radius");
       if (o.shape == "box")
-        o.half_sizes = triple(vector_entry(section, p + "Half sizes"));
+        {
+          o.half_sizes = triple(vector_entry(section, p + "Half sizes"));
+          o.rotation   = triple(vector_entry(section, p + "Rotation"));
+        }
       o.friction = section.get_double(p + "Friction coefficient");
       section.require(o.friction >= 0, p + "Friction coefficient", "must be >= 0");
       o.motion = triple(vector_entry(section, p + "Motion"));
@@ -70,6 +76,13 @@ namespace softchain::geometry
 
     Eigen::Vector3d eigen(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
 
+    // The rotation of the rotation vector v: about v / |v| by |v| rad.
+    Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d &v)
+    {
+      const double angle = v.norm();
+      return angle > 0 ? Eigen::AngleAxisd(angle, v / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
+    }
+
     std::shared_ptr<const RigidObstacle> body_of(const data::ObstacleRecord &o)
     {
       if (o.shape == "plane")
@@ -79,7 +92,8 @@ namespace softchain::geometry
       if (o.shape == "cylinder")
         return std::make_shared<CylinderObstacle>(eigen(o.position), eigen(o.direction), o.radius);
       if (o.shape == "box")
-        return std::make_shared<BoxObstacle>(eigen(o.position), eigen(o.half_sizes));
+        return std::make_shared<BoxObstacle>(eigen(o.position), eigen(o.half_sizes),
+                                             rotation_matrix(eigen(o.rotation)));
       throw data::InputError("obstacle '" + o.name + "': unknown shape '" + o.shape +
                              "' (plane, sphere, cylinder or box)");
     }

@@ -72,9 +72,11 @@ namespace softchain::geometry
     return radial(P * (x - point), radius, P);
   }
 
-  BoxObstacle::BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes)
+  BoxObstacle::BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes,
+                           const Eigen::Matrix3d &rotation)
     : center(center)
     , half_sizes(half_sizes)
+    , rotation(rotation)
   {
     for (int i = 0; i < 3; ++i)
       check_positive(half_sizes[i], "a box's half sizes");
@@ -82,7 +84,12 @@ namespace softchain::geometry
 
   SignedDistance BoxObstacle::distance_at_rest(const Eigen::Vector3d &x) const
   {
-    const Eigen::Vector3d y = x - center;
+    const SignedDistance b = distance_in_box_frame(rotation.transpose() * (x - center));
+    return {b.gap, rotation * b.normal, rotation * b.hessian * rotation.transpose()};
+  }
+
+  SignedDistance BoxObstacle::distance_in_box_frame(const Eigen::Vector3d &y) const
+  {
     const Eigen::Vector3d q = y.cwiseMax(-half_sizes).cwiseMin(half_sizes);
     const Eigen::Vector3d d = y - q;
     if (d.norm() > 0)

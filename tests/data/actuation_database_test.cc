@@ -309,19 +309,23 @@ TEST_CASE("a contact sample keeps its obstacles in order, their wrenches and its
   // group's, must come back.
   ObstacleRecord table{"table", "plane", {0, -0.005, 0}, {0, 1, 0}, 0, {}, 0, {}};
   ObstacleRecord can{"can", "cylinder", {0.05, -0.015, 0}, {0, 0, 1}, 0.01, {}, 0.5, {0, 0.002, 0}};
-  pressed.actuation.obstacles   = {table, can};
+  ObstacleRecord crate{"crate", "box", {0.05, -0.03, 0}, {}, 0, {0.01, 0.005, 0.02}, 0, {}, {0, 0, 0.3}};
+  pressed.actuation.obstacles   = {table, can, crate};
   pressed.actuation.contact_law = "surfaces all penalty 10";
-  pressed.obstacle_wrenches     = {{{0.1, -0.8, 0}, {0, 0, 0.07}}, {{0, -0.25, 0.01}, {0.001, 0, 0.02}}};
+  pressed.obstacle_wrenches     = {{{0.1, -0.8, 0}, {0, 0, 0.07}}, {{0, -0.25, 0.01}, {0.001, 0, 0.02}}, {}};
   pressed.id                    = sample_id("h1", pressed.actuation);
 
   // The obstacles, each field of them and the contact law name the sample;
   // a free finger's text is the one it had before contact existed.
   CHECK(pressed.id != free.id);
   CHECK(free.actuation.canonical_text().find("contact") == std::string::npos);
+  // An unturned obstacle's text is the one it had before boxes could turn.
+  CHECK(table.canonical_text().find("rotation") == std::string::npos);
   for (const auto change : {+[](Actuation &a) { a.obstacles[1].radius = 0.011; },
                             +[](Actuation &a) { a.obstacles[1].friction = 0.4; },
                             +[](Actuation &a) { a.obstacles[0].position[1] = -0.004; },
                             +[](Actuation &a) { a.obstacles[1].motion[1] = 0.003; },
+                            +[](Actuation &a) { a.obstacles[2].rotation[2] = 0.4; },
                             +[](Actuation &a) { std::swap(a.obstacles[0], a.obstacles[1]); },
                             +[](Actuation &a) { a.contact_law += " tolerance 0.02"; }})
     {
@@ -335,10 +339,11 @@ TEST_CASE("a contact sample keeps its obstacles in order, their wrenches and its
   const auto again = ActuationDatabase::open(path);
   const auto read  = again.read_sample(pressed.id);
   check_equal_samples(read, pressed);
-  REQUIRE(read.actuation.obstacles.size() == 2);
+  REQUIRE(read.actuation.obstacles.size() == 3);
   CHECK(read.actuation.obstacles[0].name == "table");
   CHECK(read.actuation.obstacles[1].shape == "cylinder");
   CHECK(read.actuation.obstacles[1].friction == 0.5);
+  CHECK(read.actuation.obstacles[2].rotation == crate.rotation);
   CHECK(read.actuation.contact_law == pressed.actuation.contact_law);
   CHECK(again.read_sample(free.id).actuation.obstacles.empty());
   CHECK(again.read_sample(free.id).obstacle_wrenches.empty());

@@ -75,6 +75,25 @@ TEST_CASE("a box's distance on its face, edge and corner regions and inside", "[
     check_derivatives(box, x);
 }
 
+TEST_CASE("a turned box is the unturned box seen in its own axes", "[geometry][contact]")
+{
+  // A box turned by 0.5 rad about (1, 2, 2)/3: the gap at c + R y equals the
+  // unturned box's at c + y, its normal and curvature turn with R.
+  const Vector3d                  c(0.1, -0.2, 0.3), h(1, 2, 3);
+  const Eigen::Matrix3d           R = Eigen::AngleAxisd(0.5, Vector3d(1, 2, 2) / 3).toRotationMatrix();
+  const BoxObstacle               turned(c, h, R), straight(c, h);
+  for (const Vector3d &y : {Vector3d(0.5, 2.5, 0), Vector3d(4, 6, 0), Vector3d(2, 4, 5), Vector3d(0.2, 1.5, 0)})
+    {
+      const SignedDistance a = turned.distance_at_rest(c + R * y), b = straight.distance_at_rest(c + y);
+      CHECK(a.gap == Approx(b.gap).margin(1e-14));
+      CHECK((a.normal - R * b.normal).norm() < 1e-14);
+      CHECK((a.hessian - R * b.hessian * R.transpose()).norm() < 1e-14);
+    }
+  for (const Vector3d &y : {Vector3d(0.3, 2.4, -1.0), Vector3d(1.5, 2.7, 0.2), Vector3d(1.4, -2.3, 3.5),
+                            Vector3d(0.1, 1.7, 0.2)})
+    check_derivatives(turned, c + R * y);
+}
+
 TEST_CASE("obstacles refuse degenerate shapes", "[geometry][contact]")
 {
   CHECK_THROWS_AS(SphereObstacle(Vector3d::Zero(), 0.0), softchain::data::InputError);

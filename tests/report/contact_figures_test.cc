@@ -47,4 +47,9 @@ TEST_CASE("An obstacle's outline lies on its surface, at the end of its motion")
   for (const auto &face : box)
     for (const auto &x : face)
       CHECK((std::abs(std::abs(x.x()) - 1) + std::abs(std::abs(x.y()) - 2) + std::abs(std::abs(x.z()) - 3)) < 1e-12);
+  // Turned by 90 degrees about z, its corners lie at (+-2, +-1, +-3).
+  const softchain::data::ObstacleRecord turned{"block", "box", {0, 0, 0}, {}, 0, {1, 2, 3}, 0, {}, {0, 0, M_PI / 2}};
+  for (const auto &face : obstacle_outline(turned, finger))
+    for (const auto &x : face)
+      CHECK((std::abs(std::abs(x.x()) - 2) + std::abs(std::abs(x.y()) - 1) + std::abs(std::abs(x.z()) - 3)) < 1e-12);
 }

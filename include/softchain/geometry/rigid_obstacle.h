@@ -78,19 +78,25 @@ namespace softchain::geometry
     double          radius;
   };
 
-  // A box with the given center and half sizes along the coordinate axes.
-  // Outside, with q the closest point (x clamped to the box) and o_i = 1 for
-  // the components clamped: g = |x - q|, n = (x - q) / g,
-  // H = (diag(o) - n n^T) / g (flat against a face, a cylinder's about an
-  // edge, a sphere's about a corner). Inside, the nearest face's plane.
+  // A box with the given center and half sizes along its own axes, turned
+  // from the world axes by the rotation R. In the box's frame, y = R^T (x - c):
+  // outside, with q the closest point (y clamped to the box) and o_i = 1 for
+  // the components clamped, g = |y - q|, n_b = (y - q) / g,
+  // H_b = (diag(o) - n_b n_b^T) / g (flat against a face, a cylinder's about
+  // an edge, a sphere's about a corner); inside, the nearest face's plane.
+  // In world axes n = R n_b and H = R H_b R^T (g is invariant).
   class BoxObstacle : public RigidObstacle
   {
   public:
-    BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes);
+    BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes,
+                const Eigen::Matrix3d &rotation = Eigen::Matrix3d::Identity());
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     std::string    shape() const override { return "box"; }
 
   private:
+    SignedDistance distance_in_box_frame(const Eigen::Vector3d &y) const;
+
     Eigen::Vector3d center, half_sizes;
+    Eigen::Matrix3d rotation;
   };
 } // namespace softchain::geometry

@@ -36,8 +36,8 @@
 //                         and a group obstacles/<name> per obstacle with the
 //                         attributes shape, order (its place in the sample's
 //                         list), radius, friction and the (1,3) datasets
-//                         position, direction, half_sizes, motion
-//                         (ObstacleRecord) and wrench (2,3): the force and the
+//                         position, direction, half_sizes, rotation (absent
+//                         in older databases: zero), motion (ObstacleRecord) and wrench (2,3): the force and the
 //                         moment about the origin the obstacle receives
 //   PATH.lock             empty; a writer holds an advisory lock on it
 // The database file is written once (atomically) when the database is

@@ -22,9 +22,12 @@ namespace softchain::data
     Point3      half_sizes{}; // box, m (else zero)
     double      friction = 0; // Coulomb's coefficient
     Point3      motion{};     // translation at the end of the load path, m
+    Point3      rotation{};   // box: its turn from the world axes, axis times angle, rad (else zero)
 
     // The fields in a fixed order with canonical doubles: part of a contact
-    // sample's canonical text, so of its id.
+    // sample's canonical text, so of its id. A box's rotation enters only
+    // where it is not zero, so that the ids of unrotated obstacles stay those
+    // of databases written before boxes could turn.
     std::string canonical_text() const;
   };
 
