@@ -208,8 +208,9 @@ TEST_CASE("GMRES with the factors of the symmetric approximation solves the fric
   REQUIRE(direct.solve(K, x, b, &N));
   CHECK(direct.last_factors() == SerialDirectSolver::Factors::krylov);
   INFO("GMRES iterations " << direct.krylov_iterations_taken());
-  // K - N differs from K on the contact points alone: a few iterations.
-  CHECK(direct.krylov_iterations_taken() <= 10);
+  // K - N differs from K on the contact points alone: a few iterations
+  // (measured: 9 to this test's 1e-12; 3 to 13 to Newton's 1e-8 on P10).
+  CHECK(direct.krylov_iterations_taken() <= 15);
 
   // Without a caller's relative residual GMRES stops at |b - K x| <=
   // 1e-12 |b| (FGMRES's residual is K's own; Trilinos' product sums in
