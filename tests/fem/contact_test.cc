@@ -11,14 +11,19 @@
 //    the force is the closed-form neo-Hookean one at the block's stretch;
 //  - the augmented Lagrangian: with a soft penalty, Uzawa's updates take
 //    the penetration below its tolerance and the force to the one of the
-//    prescribed compression.
+//    prescribed compression;
+//  - the friction tangent's solve by GMRES with the LDL^T factors of its
+//    symmetric approximation, against Trilinos' KLU.
 #include "fem_test_tools.h"
 
 #include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/serial_direct_solver.h>
 #include <softchain/fem/volume_controlled_inflation.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
 
 #include <catch2/catch.hpp>
 
@@ -161,6 +166,80 @@ TEST_CASE("the friction tangent matches finite differences where points stick an
   CHECK(stick > 0);
   CHECK(slip > 0);
   CHECK(error < 1e-6);
+}
+
+// The bender of the friction tangent test, its points sticking and slipping
+// on the sphere: K is unsymmetric, K - N symmetric (N the part
+// ObstacleContact assembles apart), and GMRES preconditioned by the LDL^T
+// factors of K - N solves K x = b as KLU's LU does.
+TEST_CASE("GMRES with the factors of the symmetric approximation solves the friction tangent",
+          "[fem][contact][friction][solver]")
+{
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    return; // SerialDirectSolver is the one-rank path
+  const std::string   sphere = "    set Shape = sphere\n    set Position = 0.06, -0.0085, 0.009\n"
+                               "    set Radius = 0.01\n    set Friction coefficient = 0.5\n";
+  const std::string   no_springs = "subsection Springs\n  set Generate for bender = false\nend\n";
+  test::SolverFixture f(test::parameters_from_text(
+    "friction_gmres", test::bender_prm("Q2", 4, no_springs + contact_section(obstacle("obstacle", sphere)))));
+  QuasiStaticSolver &solver = *f.solver;
+  solver.set_displacement(test::smooth_displacement(solver, 2e-3, 0.05, 1));
+  REQUIRE(solver.assemble(LoadState(), true));
+  const TrilinosWrappers::SparseMatrix &K = solver.tangent();
+  const TrilinosWrappers::MPI::Vector  &b = solver.negative_residual();
+
+  TrilinosWrappers::SparseMatrix N, contact_tangent;
+  N.reinit(K);
+  contact_tangent.reinit(K);
+  N               = 0;
+  contact_tangent = 0;
+  TrilinosWrappers::MPI::Vector contact_force(b);
+  contact_force = 0;
+  solver.obstacle_contact()->assemble(solver.displacement(), 0.0, solver.space().fixed_dofs, &contact_tangent,
+                                      contact_force, &N);
+  N.compress(VectorOperation::add);
+  REQUIRE(N.frobenius_norm() > 0);
+
+  // Without N the unsymmetric K goes to LU; with it, to GMRES.
+  TrilinosWrappers::MPI::Vector lu(b), x(b), r(b);
+  SerialDirectSolver            direct(K);
+  REQUIRE(direct.solve(K, lu, b));
+  REQUIRE(direct.last_factors() == SerialDirectSolver::Factors::lu);
+  REQUIRE(direct.solve(K, x, b, &N));
+  CHECK(direct.last_factors() == SerialDirectSolver::Factors::krylov);
+  INFO("GMRES iterations " << direct.krylov_iterations_taken());
+  // K - N differs from K on the contact points alone: a few iterations
+  // (measured: 9 to this test's 1e-12; 3 to 13 to Newton's 1e-8 on P10).
+  CHECK(direct.krylov_iterations_taken() <= 15);
+
+  // Without a caller's relative residual GMRES stops at |b - K x| <=
+  // 1e-12 |b| (FGMRES's residual is K's own; Trilinos' product sums in
+  // another order, round-off 1e-16 |K| |x|).
+  K.vmult(r, x);
+  r -= b;
+  CHECK(r.l2_norm() <= 1.01e-12 * b.l2_norm());
+  // KLU and UMFPACK's LU are backward stable: each differs from the GMRES
+  // solution by at most cond(K) times the relative residual 1e-12; the
+  // ratio of forward to backward error on the bender's tangents is 1e5 to
+  // 1e6 (serial_direct_solver_test.cc), so 1e-5 bounds it with margin.
+  TrilinosWrappers::MPI::Vector klu(b);
+  SolverControl                 control(1, 0);
+  TrilinosWrappers::SolverDirect(control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"))
+    .solve(K, klu, b);
+  for (const auto *other : {&klu, &lu})
+    {
+      TrilinosWrappers::MPI::Vector difference(x);
+      difference -= *other;
+      CHECK(difference.l2_norm() <= 1e-5 * other->l2_norm());
+    }
+  // The simplified Newton correction's second right-hand side reuses the
+  // factors and K.
+  TrilinosWrappers::MPI::Vector b2(b), x2(b);
+  b2 *= -3.0;
+  direct.solve_again(x2, b2);
+  K.vmult(r, x2);
+  r -= b2;
+  CHECK(r.l2_norm() <= 1.01e-12 * b2.l2_norm());
 }
 
 TEST_CASE("a block pressed by a rigid plane: uniform contact pressure, the closed-form force",

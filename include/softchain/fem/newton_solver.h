@@ -74,6 +74,11 @@ namespace softchain::fem
     {
       Status       status;
       unsigned int iterations;
+      // The iterations after which |R| <= Intermediate tolerance times the
+      // residual scale and the last update <= Intermediate tolerance |x|
+      // (`iterations` where the solve aims at the intermediate tolerance or
+      // never got there): how nonlinear the step was, whatever it aimed at.
+      unsigned int iterations_to_intermediate;
       bool         converged() const { return status == Status::converged; }
     };
 

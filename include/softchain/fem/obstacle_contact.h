@@ -27,7 +27,14 @@
 // tau = t* / |t*|. Without friction the tangent is symmetric (f derives
 // from Pi = int (max(0, lambda - epsilon g)^2 - lambda^2) / (2 epsilon) dA0
 // at fixed multipliers) and Newton's energy line search holds; with it, the
-// slip branch makes it non-symmetric.
+// slip branch makes it non-symmetric: its coupling mu epsilon tau n^T of the
+// friction force to the normal pressure has no mirror, and on a curved
+// obstacle n (H z)^T has none either (small: |z| <= mu t_N / epsilon).
+// What is left without them, the symmetric part of dt/dx with the slip
+// coupling dropped, is the tangent of a symmetric problem close to this one
+// (the friction force taken at a fixed bound); assemble() can hand the
+// difference, the friction's unsymmetric part, to a solver that factorises
+// the symmetric rest and iterates on the whole (SerialDirectSolver).
 //
 // With lambda = 0 this is the penalty method, whose penetration -g =
 // t_N / epsilon is t_N / (factor E) of h; where a converged state
@@ -57,11 +64,14 @@ namespace softchain::fem
     bool has_friction() const;
 
     // rhs += f (the contact forces on the body), matrix -= df/du (if given),
-    // with the obstacles moved by `motion` times their Motion.
+    // with the obstacles moved by `motion` times their Motion; and, if
+    // given, unsymmetric_part -= the part of df/du that the symmetric
+    // approximation leaves out (the header's comment; zero without friction).
     void assemble(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double motion,
                   const dealii::AffineConstraints<double> &constraints,
                   dealii::TrilinosWrappers::SparseMatrix  *matrix,
-                  dealii::TrilinosWrappers::MPI::Vector   &rhs) const;
+                  dealii::TrilinosWrappers::MPI::Vector   &rhs,
+                  dealii::TrilinosWrappers::SparseMatrix  *unsymmetric_part = nullptr) const;
 
     // The deepest penetration over all contact points, as a fraction of the
     // local face size (0 where nothing penetrates).
@@ -142,6 +152,10 @@ namespace softchain::fem
       double                   pressure;   // t_N
       Eigen::Vector3d          tangential; // t_T
       Eigen::Matrix3d          stiffness;  // -dt/dx, t = t_N n + t_T
+      // The part of `stiffness` outside its symmetric approximation: the
+      // stiffness minus the symmetric part of the stiffness without the slip
+      // coupling mu epsilon tau n^T.
+      Eigen::Matrix3d          unsymmetric_part;
       Status                   status;
     };
 

@@ -199,6 +199,9 @@ namespace softchain::fem
     bool pattern_couples_tip = false; // the matrix can hold a point contact's couplings
 
     dealii::TrilinosWrappers::SparseMatrix matrix;
+    // With friction, the part of `matrix` that makes it unsymmetric
+    // (ObstacleContact::assemble), for the linear solver; empty otherwise.
+    dealii::TrilinosWrappers::SparseMatrix friction_unsymmetric_part;
     dealii::TrilinosWrappers::MPI::Vector  rhs;       // writable ghosts
     dealii::TrilinosWrappers::MPI::Vector  u_owned;   // the displacement
     dealii::TrilinosWrappers::MPI::Vector  u_ghosted; // same, with ghost values

@@ -27,6 +27,18 @@
 // bound (docs/history.md, "LDL^T without pivoting first" and "Factors in
 // single precision, Newton's error estimate").
 //
+// An unsymmetric K whose caller names a part N of it such that K - N is
+// symmetric (Coulomb friction's slip coupling, ObstacleContact) is solved by
+// flexible GMRES on K (Saad, SIAM J. Sci. Comput. 14, 1993), right
+// preconditioned by the LDL^T factors of M = K - N: single precision without
+// pivoting, else double with threshold pivoting. N lives on the slipping and
+// sticking contact points alone, so M^-1 K = I + M^-1 N differs from the
+// identity on few directions and GMRES converges in a few iterations, each a
+// pair of triangular solves and a product with K: cheaper than UMFPACK's LU
+// of K, which is twice an LDL^T factorisation's flops and pivots for
+// stability. GMRES stops at the residual the refinement stops at (refine());
+// where it does not converge in max_krylov_iterations, K is factorised by LU.
+//
 // The tangent's sparsity pattern never changes during a solve, so the work
 // that depends on the pattern alone is done once (docs/results.md, "What a solve skips"):
 //   - the compressed-row copy of K (and, if Trilinos keeps a row's columns
@@ -68,9 +80,13 @@ namespace softchain::fem
 
     // Factorises `matrix` (same pattern as at construction) and solves;
     // false, leaving `solution` alone, if the matrix is numerically singular.
+    // `unsymmetric_part`, if given (same pattern), is a part N of an
+    // unsymmetric `matrix` K such that K - N is symmetric: GMRES solves K
+    // with the factors of K - N (above).
     bool solve(const dealii::TrilinosWrappers::SparseMatrix &matrix,
                dealii::TrilinosWrappers::MPI::Vector        &solution,
-               const dealii::TrilinosWrappers::MPI::Vector  &rhs);
+               const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+               const dealii::TrilinosWrappers::SparseMatrix *unsymmetric_part = nullptr);
     // Solves with the factorisation of the last successful solve() (a
     // second right-hand side of the same K, e.g. volume control's
     // unit-pressure load).
@@ -78,17 +94,21 @@ namespace softchain::fem
                      const dealii::TrilinosWrappers::MPI::Vector &rhs);
 
     // Which factors solved last: LDL^T in single precision with iterative
-    // refinement, LDL^T in double without or with pivoting, or LU.
+    // refinement, LDL^T in double without or with pivoting, GMRES with the
+    // LDL^T factors of K - N, or LU.
     enum class Factors
     {
       single,
       unpivoted,
       pivoted,
+      krylov,
       lu
     };
     Factors last_factors() const { return last; }
     // Did the last solve use an LDL^T factorisation (else LU)?
     bool used_ldlt() const { return last != Factors::lu; }
+    // GMRES iterations of the last solve with Factors::krylov.
+    unsigned int krylov_iterations_taken() const { return krylov_iterations; }
     // Did the last LDL^T solve need the pivoting factorisation?
     bool used_pivoting() const { return last == Factors::pivoted; }
     // Negative eigenvalues of the last K factorised by LDL^T.
@@ -97,16 +117,18 @@ namespace softchain::fem
     unsigned int refinement_steps_taken() const { return refinement_steps; }
 
   private:
-    void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+    void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix, std::vector<double> &into) const;
     template <typename Visit>
     bool visit_mirrors(const Visit &visit) const;
-    bool symmetric() const;
+    bool symmetric(const std::vector<double> &values) const;
     bool factorise_lu(); // false if K is singular
 
     // K in compressed rows with sorted columns. UMFPACK reads compressed
     // columns, so it sees K^T and solves with UMFPACK_At.
     std::vector<SuiteSparse_long> row_start, column;
     std::vector<double>           value;
+    // The values of M = K - N, GMRES's preconditioner (empty without N).
+    std::vector<double>           symmetric_approximation;
     // Entry k of the Trilinos matrix's local storage (rows in order) sits at
     // value[place[k]]; empty where that is k (every row's columns in
     // increasing order, as deal.II's matrices keep them).
@@ -122,6 +144,12 @@ namespace softchain::fem
     bool refine(const double *b, std::vector<double> &x); // with the single factors
     bool solve_double(const double *b, std::vector<double> &x);
     bool solve_unpivoted(const double *b, std::vector<double> &x);
+    // Factorises M = K - N by LDL^T (single, else double with pivoting);
+    // false if M is singular.
+    bool factorise_approximation();
+    // x = K^-1 b by GMRES preconditioned with the factors of M; false if it
+    // does not converge.
+    bool solve_krylov(const double *b, std::vector<double> &x);
     // r = b - K x; returns the normwise backward error |r|_inf / (|K|_inf
     // |x|_inf + |b|_inf) of x (Rigal and Gaches, Numer. Math. 1967).
     double residual(const double *b, const std::vector<double> &x, std::vector<double> &r) const;
@@ -129,12 +157,18 @@ namespace softchain::fem
     // refine()).
     static constexpr double       backward_error_bound = 1e-12;
     static constexpr unsigned int max_refinement_steps = 6;
+    // GMRES's budget (one Krylov basis, no restart): on P10 pressed with
+    // friction it took 4.6 iterations on average and 13 at most.
+    static constexpr unsigned int max_krylov_iterations = 40;
     const double                  relative_residual;
 
     std::unique_ptr<MultifrontalLDLT<float>>  single;           // each made when first needed
     std::unique_ptr<MultifrontalLDLT<double>> unpivoted, pivoted;
     Factors                                   last             = Factors::lu;
     unsigned int                              refinement_steps = 0;
+    unsigned int                              krylov_iterations = 0;
+    // Which factors hold M for GMRES: the single ones, else `pivoted`.
+    bool approximation_in_single = true;
     // False once a refinement failed (solve_single()).
     bool single_pays = true;
 

@@ -2,9 +2,11 @@
 // TangentSolver: x = K^-1 b for Newton's corrections, K the tangent. One
 // factory, create(), chooses the solver from subsection Solver once:
 //  - direct on one rank with Direct solver package = MUMPS_or_UMFPACK:
-//    SoftChain's own SerialDirectSolver (MUMPS's LDL^T where K is symmetric,
-//    else UMFPACK's LU), which keeps its symbolic analysis across Newton
-//    iterations and its factors for a simplified Newton correction;
+//    SoftChain's own SerialDirectSolver (MUMPS's LDL^T where K is symmetric;
+//    GMRES on K with the LDL^T factors of K - N where that is symmetric, N
+//    the friction's unsymmetric part; else UMFPACK's LU), which keeps its
+//    symbolic analysis across Newton iterations and its factors for a
+//    simplified Newton correction;
 //  - direct otherwise: Trilinos' Amesos (Amesos_Mumps for MUMPS_or_UMFPACK
 //    on several ranks, else the package named);
 //  - iterative (Linear solver = iterative, or auto above Direct solver
@@ -30,7 +32,11 @@ namespace softchain::fem
 
     // x = K^-1 b; `same_tangent`: with the factors of the last solve where
     // the solver keeps them (keeps_factorisation()), else with K.
+    // `unsymmetric_part`: nullptr, or a part N of K such that K - N is
+    // symmetric where the rest of K is (the friction's, ObstacleContact),
+    // for a solver that can use it.
     virtual bool solve(const dealii::TrilinosWrappers::SparseMatrix &K,
+                       const dealii::TrilinosWrappers::SparseMatrix *unsymmetric_part,
                        const dealii::TrilinosWrappers::MPI::Vector  &b,
                        dealii::TrilinosWrappers::MPI::Vector        &x,
                        bool                                          same_tangent) = 0;

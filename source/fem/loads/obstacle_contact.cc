@@ -163,6 +163,7 @@ namespace softchain::fem
     c.pressure   = std::max(0.0, state.lambda[index] - epsilon * c.distance.gap);
     c.tangential = Eigen::Vector3d::Zero();
     c.stiffness  = Eigen::Matrix3d::Zero();
+    c.unsymmetric_part = Eigen::Matrix3d::Zero();
     c.status     = Status::open;
     if (c.pressure <= 0)
       return c;
@@ -183,22 +184,27 @@ namespace softchain::fem
         c.status     = Status::stick;
         c.tangential = trial;
         c.stiffness -= dtrial;
+        c.unsymmetric_part = 0.5 * (c.stiffness - c.stiffness.transpose());
         return c;
       }
     const Eigen::Vector3d tau = trial / size;
     c.tangential              = bound * tau;
-    c.stiffness -= bound / size * (Eigen::Matrix3d::Identity() - tau * tau.transpose()) * dtrial -
-                   o.friction() * epsilon * tau * n.transpose();
+    const Eigen::Matrix3d slip_coupling = o.friction() * epsilon * tau * n.transpose();
+    c.stiffness -= bound / size * (Eigen::Matrix3d::Identity() - tau * tau.transpose()) * dtrial;
+    const Eigen::Matrix3d symmetric = 0.5 * (c.stiffness + c.stiffness.transpose());
+    c.stiffness += slip_coupling;
+    c.unsymmetric_part = c.stiffness - symmetric;
     return c;
   }
 
   void ObstacleContact::assemble(const TrilinosWrappers::MPI::Vector &u, const double motion,
                                  const AffineConstraints<double> &constraints,
                                  TrilinosWrappers::SparseMatrix *matrix,
-                                 TrilinosWrappers::MPI::Vector  &rhs) const
+                                 TrilinosWrappers::MPI::Vector  &rhs,
+                                 TrilinosWrappers::SparseMatrix *unsymmetric_part) const
   {
     std::vector<types::global_dof_index>        dofs; // the face nodes' DoFs
-    FullMatrix<double>                          K;
+    FullMatrix<double>                          K, N; // the face's stiffness, its unsymmetric part
     Vector<double>                              f;
     bool                                        touched = false;
     const auto flush = [&]() {
@@ -208,6 +214,8 @@ namespace softchain::fem
         constraints.distribute_local_to_global(K, f, dofs, *matrix, rhs);
       else
         constraints.distribute_local_to_global(f, dofs, rhs);
+      if (unsymmetric_part)
+        constraints.distribute_local_to_global(N, dofs, *unsymmetric_part);
     };
     const auto face_start = [&](const ContactFace &face, const std::vector<types::global_dof_index> &d) {
       flush();
@@ -220,6 +228,8 @@ namespace softchain::fem
       f.reinit(n);
       if (matrix)
         K.reinit(n, n);
+      if (unsymmetric_part)
+        N.reinit(n, n);
     };
     const auto at_point = [&](const ContactFace &face, const unsigned int q, const std::size_t point,
                               const Point<3> &x) {
@@ -242,6 +252,10 @@ namespace softchain::fem
                   for (std::size_t b = 0; b < n; ++b)
                     for (unsigned int j = 0; j < 3; ++j)
                       K(3 * a + i, 3 * b + j) += phi[a] * phi[b] * D(i, j) * dA;
+                if (unsymmetric_part)
+                  for (std::size_t b = 0; b < n; ++b)
+                    for (unsigned int j = 0; j < 3; ++j)
+                      N(3 * a + i, 3 * b + j) += phi[a] * phi[b] * c.unsymmetric_part(i, j) * dA;
               }
         }
     };

@@ -16,8 +16,9 @@ namespace softchain::fem
   }
 
   // Crisfield's rule: the next increment is the last one times
-  // sqrt(I_d / I), I the Newton iterations the last step took and I_d the
-  // desired count, within [1/2, 2] of the last.
+  // sqrt(I_d / I), I the Newton iterations the last step took to the
+  // intermediate tolerance (LoadPath) and I_d the desired count, within
+  // [1/2, 2] of the last.
   void AdaptiveLoadStepping::converged(const unsigned int newton_iterations)
   {
     s = next();

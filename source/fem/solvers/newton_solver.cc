@@ -22,6 +22,10 @@ namespace softchain::fem
     };
     double       s0              = 0.0; // dx . R before the step
     unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
+    unsigned int intermediate    = 0;   // iterations to the intermediate tolerance (0: not yet)
+    const auto   outcome         = [&](const Status status, const unsigned int it) {
+      return Outcome{status, it, intermediate > 0 ? intermediate : it};
+    };
     for (unsigned int it = 0; it <= prm.max_newton_iterations; ++it)
       {
         bool valid = system.assemble(true);
@@ -31,22 +35,26 @@ namespace softchain::fem
         // while each that failed had them in 5-12 iterations, with 20-45
         // halvings, a quarter of the solve's time.
         if (it > 0 && !valid && ++inverting_steps == 2)
-          return {Status::inverted, it};
+          return outcome(Status::inverted, it);
         if (it > 0 && prm.line_search && (!valid || system.energy_line_search()))
           valid = line_search(system, s0, valid);
         if (!valid)
-          return {Status::inverted, it};
+          return outcome(Status::inverted, it);
         const double residual = system.residual_norm();
         if (it == 0)
           system.first_residual(residual);
         if (history)
           history->push_back(residual);
         if (!std::isfinite(residual))
-          return {Status::not_finite, it};
+          return outcome(Status::not_finite, it);
         // An exact equilibrium (no load at rest), if the system's other
         // conditions hold there too (a volume control's volume).
         if (residual == 0.0 && system.residual_converged(residual, residual_tolerance))
-          return {Status::converged, it};
+          return outcome(Status::converged, it);
+        if (final_state && intermediate == 0 && it > 0 &&
+            system.residual_converged(residual, prm.intermediate_tolerance) &&
+            system.correction_norm() <= prm.intermediate_tolerance * system.solution_norm())
+          intermediate = it;
         bool correction_ready = false;
         if (it > 0 && system.residual_converged(residual, residual_tolerance))
           {
@@ -57,20 +65,20 @@ namespace softchain::fem
             // would then be applied and checked. Without kept factors the
             // correction is Newton's own next step.
             if (error_converged(system.correction_norm()))
-              return {Status::converged, it};
+              return outcome(Status::converged, it);
             if (!system.solve_correction(true))
-              return {Status::linear_failure, it};
+              return outcome(Status::linear_failure, it);
             if (verbose)
               log << "      error estimate |K^-1 R| = " << std::scientific << std::setprecision(3)
                   << system.correction_norm() << std::defaultfloat << '\n';
             if (error_converged(system.correction_norm()))
-              return {Status::converged, it};
+              return outcome(Status::converged, it);
             correction_ready = !system.keeps_factorisation();
           }
         if (it == prm.max_newton_iterations)
           break;
         if (!correction_ready && !system.solve_correction(false))
-          return {Status::linear_failure, it};
+          return outcome(Status::linear_failure, it);
         s0 = system.correction_slope();
         if (verbose)
           log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
@@ -78,7 +86,7 @@ namespace softchain::fem
               << std::defaultfloat << '\n';
         system.apply_correction();
       }
-    return {Status::not_converged, prm.max_newton_iterations};
+    return outcome(Status::not_converged, prm.max_newton_iterations);
   }
 
   // With s(a) = dx . R(x_old + a dx), s(0) = -dx.K dx < 0: the full step

@@ -140,6 +140,7 @@ namespace softchain::fem
     SparsityTools::distribute_sparsity_pattern(pattern, s.owned_dofs, s.communicator,
                                                writable_dofs);
     matrix.reinit(s.owned_dofs, s.owned_dofs, pattern, s.communicator);
+    friction_unsymmetric_part.clear(); // made with `matrix`'s pattern where friction needs it
     rhs.reinit(s.owned_dofs, writable_dofs, s.communicator, true);
     tangent_solver->pattern_changed();
     // The places need a pattern of the Dirichlet constraints alone (a point
@@ -300,8 +301,13 @@ namespace softchain::fem
                                         const AffineConstraints<double> &constraints)
   {
     TimerOutput::Scope timer_section(computing_timer, "assembly");
+    const bool friction = with_matrix && contact && contact->has_friction();
     if (with_matrix)
       matrix = 0;
+    if (friction && friction_unsymmetric_part.m() == 0)
+      friction_unsymmetric_part.reinit(matrix);
+    if (friction)
+      friction_unsymmetric_part = 0;
     rhs = 0;
     // External loads first: their norm scales the convergence test.
     if (state.pressure != 0.0)
@@ -315,13 +321,16 @@ namespace softchain::fem
     // norm scales the convergence test where they are the only load).
     if (contact)
       contact->assemble(u_ghosted, state.obstacle_motion, constraints,
-                        with_matrix ? &matrix : nullptr, rhs);
+                        with_matrix ? &matrix : nullptr, rhs,
+                        friction ? &friction_unsymmetric_part : nullptr);
     rhs.compress(VectorOperation::add);
     f_ext_norm = rhs.l2_norm();
 
     const bool valid = assemble_cells(with_matrix, state.gravity_factor, constraints);
     if (with_matrix)
       matrix.compress(VectorOperation::add);
+    if (friction)
+      friction_unsymmetric_part.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
     return valid;
   }
@@ -337,7 +346,8 @@ namespace softchain::fem
   {
     TimerOutput::Scope timer_section(computing_timer, "linear solve");
     x = 0;
-    if (!tangent_solver->solve(matrix, b, x, same_tangent))
+    const bool friction = contact && contact->has_friction();
+    if (!tangent_solver->solve(matrix, friction ? &friction_unsymmetric_part : nullptr, b, x, same_tangent))
       return false;
     (active_constraints ? *active_constraints : fe_space->fixed_dofs).distribute(x);
     return std::isfinite(x.l2_norm());

@@ -1,6 +1,8 @@
 #include <softchain/fem/serial_direct_solver.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/vector.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -26,6 +28,19 @@ namespace softchain::fem
     double norm(const std::vector<double> &v)
     {
       return std::sqrt(std::inner_product(v.begin(), v.end(), v.begin(), 0.0));
+    }
+
+    // A linear operator y = A x on deal.II vectors, for deal.II's solvers.
+    template <typename Apply>
+    struct LinearMap
+    {
+      Apply apply; // apply(x, y) writes y = A x
+      void  vmult(Vector<double> &y, const Vector<double> &x) const { apply(x.begin(), y.begin()); }
+    };
+    template <typename Apply>
+    LinearMap<Apply> linear_map(Apply apply)
+    {
+      return {apply};
     }
   } // namespace
 
@@ -103,15 +118,15 @@ namespace softchain::fem
     return true;
   }
 
-  bool SerialDirectSolver::symmetric() const
+  bool SerialDirectSolver::symmetric(const std::vector<double> &values) const
   {
     if (!symmetric_pattern)
       return false;
     double largest = 0.0, asymmetry = 0.0;
-    for (const double v : value)
+    for (const double v : values)
       largest = std::max(largest, std::abs(v));
     for (const auto &[k, m] : upper_mirrors)
-      asymmetry = std::max(asymmetry, std::abs(value[k] - value[m]));
+      asymmetry = std::max(asymmetry, std::abs(values[k] - values[m]));
     return asymmetry <= 1e-12 * largest;
   }
 
@@ -123,19 +138,23 @@ namespace softchain::fem
       umfpack_dl_free_symbolic(&symbolic);
   }
 
-  void SerialDirectSolver::copy_values(const TrilinosWrappers::SparseMatrix &matrix)
+  void SerialDirectSolver::copy_values(const TrilinosWrappers::SparseMatrix &matrix,
+                                       std::vector<double>                  &into) const
   {
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    AssertThrow(static_cast<std::size_t>(epetra.NumMyNonzeros()) == column.size(),
+                ExcMessage("SerialDirectSolver: a matrix of another sparsity pattern"));
+    into.resize(column.size());
     for (int row = 0; row < epetra.NumMyRows(); ++row)
       {
         int     n;
         double *values;
         epetra.ExtractMyRowView(row, n, values);
         if (place.empty())
-          std::copy(values, values + n, value.begin() + row_start[row]);
+          std::copy(values, values + n, into.begin() + row_start[row]);
         else
           for (int k = 0; k < n; ++k)
-            value[place[row_start[row] + k]] = values[k];
+            into[place[row_start[row] + k]] = values[k];
       }
   }
 
@@ -159,11 +178,26 @@ namespace softchain::fem
 
   bool SerialDirectSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                                  TrilinosWrappers::MPI::Vector        &solution,
-                                 const TrilinosWrappers::MPI::Vector  &rhs)
+                                 const TrilinosWrappers::MPI::Vector  &rhs,
+                                 const TrilinosWrappers::SparseMatrix *unsymmetric_part)
   {
-    copy_values(matrix);
-    if (!symmetric())
+    copy_values(matrix, value);
+    if (!symmetric(value))
       {
+        if (unsymmetric_part)
+          {
+            copy_values(*unsymmetric_part, symmetric_approximation);
+            for (std::size_t k = 0; k < value.size(); ++k)
+              symmetric_approximation[k] = value[k] - symmetric_approximation[k];
+            std::vector<double> x(rhs.locally_owned_size());
+            if (symmetric(symmetric_approximation) && factorise_approximation() &&
+                solve_krylov(rhs.begin(), x))
+              {
+                last = Factors::krylov;
+                std::copy(x.begin(), x.end(), solution.begin());
+                return true;
+              }
+          }
         last = Factors::lu;
         if (!factorise_lu())
           return false;
@@ -273,6 +307,61 @@ namespace softchain::fem
     return false;
   }
 
+  bool SerialDirectSolver::factorise_approximation()
+  {
+    if (!single)
+      single = std::make_unique<MultifrontalLDLT<float>>(row_start, column,
+                                                         MultifrontalLDLT<float>::Pivoting::none);
+    approximation_in_single = single->factorise(symmetric_approximation);
+    if (approximation_in_single)
+      return true;
+    if (!pivoted)
+      pivoted = std::make_unique<MultifrontalLDLT<double>>(row_start, column,
+                                                           MultifrontalLDLT<double>::Pivoting::threshold);
+    return pivoted->factorise(symmetric_approximation);
+  }
+
+  // Flexible GMRES: right preconditioning with factors in single precision
+  // is a linear map only up to their round-off, which FGMRES's kept
+  // preconditioned vectors absorb; its residual is then K's own. It stops at
+  // |b - K x| <= eta |b| with eta the caller's relative residual (Dembo,
+  // Eisenstat and Steihaug's forcing term, refine()), or 1e-12 without one.
+  bool SerialDirectSolver::solve_krylov(const double *b, std::vector<double> &x)
+  {
+    const std::size_t n = x.size();
+    Vector<double>    rhs(b, b + n), solution(n);
+    const auto        product = linear_map([this](const double *in, double *out) {
+      for (std::size_t i = 0; i + 1 < row_start.size(); ++i)
+        {
+          double sum = 0;
+          for (SuiteSparse_long k = row_start[i]; k < row_start[i + 1]; ++k)
+            sum += value[k] * in[column[k]];
+          out[i] = sum;
+        }
+    });
+    const auto preconditioner = linear_map([this](const double *in, double *out) {
+      if (approximation_in_single)
+        single->solve(in, out);
+      else
+        pivoted->solve(in, out);
+    });
+    const double  eta = relative_residual > 0 ? relative_residual : backward_error_bound;
+    SolverControl control(max_krylov_iterations, eta * rhs.l2_norm(), false, false);
+    SolverFGMRES<Vector<double>> gmres(control, SolverFGMRES<Vector<double>>::AdditionalData(max_krylov_iterations));
+    try
+      {
+        gmres.solve(product, solution, rhs, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        krylov_iterations = control.last_step();
+        return false;
+      }
+    krylov_iterations = control.last_step();
+    std::copy(solution.begin(), solution.end(), x.begin());
+    return true;
+  }
+
   // Without pivoting the factorisation is as stable as its pivots allow: a
   // small pivot of an indefinite K shows in the solution's backward error.
   // A backward-stable solve has one of the order of the unit round-off times
@@ -341,6 +430,19 @@ namespace softchain::fem
         case Factors::pivoted:
           pivoted->solve(rhs.begin(), solution.begin());
           break;
+        case Factors::krylov:
+          {
+            std::vector<double> x(rhs.locally_owned_size());
+            if (solve_krylov(rhs.begin(), x))
+              {
+                std::copy(x.begin(), x.end(), solution.begin());
+                break;
+              }
+            // GMRES did not converge for this right-hand side: LU of the same K.
+            AssertThrow(factorise_lu(), ExcMessage("a tangent solved by GMRES is singular"));
+            last = Factors::lu;
+          }
+          [[fallthrough]];
         case Factors::lu:
           check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column.data(), value.data(),
                                  solution.begin(), rhs.begin(), numeric, control.data(), nullptr),

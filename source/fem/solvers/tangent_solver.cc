@@ -21,8 +21,9 @@ namespace softchain::fem
         : prm(prm)
         , log(log)
       {}
-      bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::MPI::Vector &b,
-                 TrilinosWrappers::MPI::Vector &x, const bool same_tangent) override
+      bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::SparseMatrix *unsymmetric_part,
+                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x,
+                 const bool same_tangent) override
       {
         // The linear residual Newton's steps may leave: at most a hundredth
         // of the residual tolerance relative to |R|, so that near the
@@ -35,7 +36,7 @@ namespace softchain::fem
             factors->solve_again(x, b);
             return true;
           }
-        if (factors->solve(K, x, b))
+        if (factors->solve(K, x, b, unsymmetric_part))
           return true;
         log << "      the tangent is singular\n";
         return false;
@@ -59,8 +60,8 @@ namespace softchain::fem
                     "Amesos_Klu" :
                     "Amesos_Mumps")
       {}
-      bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::MPI::Vector &b,
-                 TrilinosWrappers::MPI::Vector &x, bool) override
+      bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::SparseMatrix *,
+                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x, bool) override
       {
         SolverControl                  control(1000, prm.krylov_tolerance * b.l2_norm());
         TrilinosWrappers::SolverDirect solver(control, TrilinosWrappers::SolverDirect::AdditionalData(false, package));
@@ -88,8 +89,8 @@ namespace softchain::fem
         amg.smoother_sweeps       = 2;
         amg.aggregation_threshold = 0.02;
       }
-      bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::MPI::Vector &b,
-                 TrilinosWrappers::MPI::Vector &x, bool) override
+      bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::SparseMatrix *,
+                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x, bool) override
       {
         SolverControl                     control(1000, prm.krylov_tolerance * b.l2_norm());
         TrilinosWrappers::PreconditionAMG preconditioner;
