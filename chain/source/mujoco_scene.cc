@@ -1,4 +1,5 @@
 #include <softchain/chain/mujoco_scene.h>
+#include <softchain/chain/mujoco_model_file.h>
 #include <softchain/data/input_error.h>
 
 #include <algorithm>
@@ -73,15 +74,6 @@ namespace softchain::chain
       return xml.insert(end, "  " + obstacle_geom(o) + "\n  ");
     }
 
-    mjModel *load(const std::string &path)
-    {
-      char     error[1000] = "";
-      mjModel *model       = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
-      if (!model)
-        throw data::InputError("MuJoCo cannot load '" + path + "': " + error);
-      return model;
-    }
-
     // The scene's MJCF written to `scene_path`, or the finger's own without obstacle.
     std::string scene_file(const std::string &finger_mjcf, const std::optional<data::ObstacleRecord> &obstacle,
                            const std::string &scene_path)
@@ -101,7 +93,7 @@ namespace softchain::chain
 
   MujocoScene::MujocoScene(const std::string &finger_mjcf, const std::optional<data::ObstacleRecord> &obstacle,
                            const double collision_radius, const std::string &scene_path)
-    : model_(load(scene_file(finger_mjcf, obstacle, scene_path)))
+    : model_(load_mujoco_model(scene_file(finger_mjcf, obstacle, scene_path)))
     , data_(mj_makeData(model_))
     , obstacle_geom_(mj_name2id(model_, mjOBJ_GEOM, "obstacle"))
     , tip_site_(-1)
