@@ -71,10 +71,13 @@ namespace softchain::chain
     // mj_step leaves the poses and contacts of its forward pass at the
     // step's start time in mjData, the angles of its end: the row takes
     // the angles before the step, so that all its columns are of one time.
-    std::vector<double> angles{d->time, pressure};
+    std::vector<double> angles;
     if (due)
-      angles.insert(angles.end(), d->qpos, d->qpos + scene_.model()->nq);
-    if (pressure != applied_pressure_)
+      {
+        angles = {d->time, pressure};
+        angles.insert(angles.end(), d->qpos, d->qpos + scene_.model()->nq);
+      }
+    if (pressure != applied_pressure_) // a hold keeps the model's fields
       scene_.actuation().apply(pressure, scene_.model(), d);
     applied_pressure_ = pressure;
     mj_step(scene_.model(), d);
