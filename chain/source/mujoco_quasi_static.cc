@@ -1,4 +1,5 @@
 #include <softchain/chain/mujoco_quasi_static.h>
+#include <softchain/chain/mujoco_model_file.h>
 #include <softchain/data/input_error.h>
 
 #include <cmath>
@@ -8,22 +9,13 @@ namespace softchain::chain
 {
   namespace
   {
-    mjModel *load(const std::string &path)
-    {
-      char     error[1000] = "";
-      mjModel *model       = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
-      if (!model)
-        throw data::InputError("MuJoCo cannot load '" + path + "': " + error);
-      return model;
-    }
-
     constexpr double rest_speed = 1e-11; // rad/s
     constexpr double rest_angle = 1e-12; // rad, unbalanced torque / k
     constexpr long   max_steps  = 2000000;
   } // namespace
 
   MujocoQuasiStatic::MujocoQuasiStatic(const std::string &path, const Pressure pressure)
-    : model_(load(path))
+    : model_(load_mujoco_model(path))
     , data_(mj_makeData(model_))
     , tip_site_(mj_name2id(model_, mjOBJ_SITE, "tip"))
     , pressure_motor_(mj_name2id(model_, mjOBJ_ACTUATOR, "pressure"))

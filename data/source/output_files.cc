@@ -41,4 +41,13 @@ namespace softchain::data
     , protocol_plot(directory + "/protocol_torques.png")
     , mjcf(directory + "/finger.xml")
   {}
+
+  SimulateFileSet::SimulateFileSet(const std::string &output_directory, const std::string &scene)
+    : directory(output_directory + "/" + folder::simulate)
+    , scene_mjcf(directory + "/" + scene + ".xml")
+    , joint_angles(directory + "/" + scene + "_joint_angles.csv")
+    , tip_pose(directory + "/" + scene + "_tip_pose.csv")
+    , contact_force(directory + "/" + scene + "_contact_force.csv")
+    , contact_vs_fem(directory + "/contact_vs_fem.csv")
+  {}
 } // namespace softchain::data

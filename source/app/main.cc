@@ -1,6 +1,7 @@
 // softchain: the command line of the three-tier pipeline
 // (docs/conventions.md, "Command line and exit codes").
 #include <softchain/chain/chain_run.h>
+#include <softchain/chain/simulate_run.h>
 #include <softchain/app/commands.h>
 #include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/lone_process_mpi.h>
@@ -36,6 +37,18 @@ namespace
         if (std::strcmp(argv[k], flag) == 0)
           return true;
       return false;
+    }
+    // The word after `option` ("" if absent); InputError if nothing follows it.
+    std::string option_value(const char *option) const
+    {
+      for (int k = 3; k < argc; ++k)
+        if (std::strcmp(argv[k], option) == 0)
+          {
+            if (k + 1 == argc)
+              throw data::InputError(std::string(option) + " needs a value");
+            return argv[k + 1];
+          }
+      return "";
     }
     // Design/Output directory and the database in it, for the tiers that
     // read only their own subsections and Design (they work on any
@@ -94,6 +107,21 @@ namespace
        return chain::run_chain(i.file, design.database_path(), design.output_directory,
                                i.has_flag("--export-mjcf"));
      }},
+    {"simulate", "MuJoCo scene of the exported finger and an obstacle of Contact under a\n"
+                 "           slow pressure ramp; its contact force against the FEM's",
+     "softchain simulate FILE.prm [--scene NAME]\n"
+     "  The finger of <output>/chain/finger.xml (softchain chain --export-mjcf) in\n"
+     "  MuJoCo with the obstacle NAME of subsection Contact (default: the first, or\n"
+     "  none) under a slow pressure ramp through that obstacle's contact-sample\n"
+     "  pressures (<output>/contact/contact_forces.csv). Writes <output>/simulate/:\n"
+     "  the scene's MJCF, time series of joint angles, tip pose and contact force,\n"
+     "  and contact_vs_fem.csv, MuJoCo's steady contact force against the FEM's.\n"
+     "  See chain/README.md, \"MuJoCo scenes\".\n",
+     [](const Invocation &i) {
+       const auto design = i.design();
+       return chain::run_simulate(i.file, design.database_path(), design.output_directory,
+                                  i.option_value("--scene"));
+     }},
     {"run", "the whole pipeline: sweep, reduce, chain, report; lists the output files",
      "softchain run FILE.prm\n"
      "  sweep, reduce, chain and report in one go, one progress line per stage and\n"
@@ -123,13 +151,13 @@ namespace
 
   std::string usage()
   {
-    std::string text = "usage: softchain COMMAND FILE.prm [--export-mjcf]\n\ncommands:\n";
+    std::string text = "usage: softchain COMMAND FILE.prm [--export-mjcf | --scene NAME]\n\ncommands:\n";
     for (const Command &c : commands)
       text += "  " + std::string(c.name) + std::string(9 - std::strlen(c.name), ' ') + c.summary + "\n";
     return text + "  help     this text; help COMMAND (or COMMAND --help): that command in detail\n"
                   "\n"
                   "Outputs go to the .prm's Design/Output directory (default output/<name>/):\n"
-                  "database.h5, vtu/, stiffness/, contact/, chain/, report.html.\n"
+                  "database.h5, vtu/, stiffness/, contact/, chain/, simulate/, report.html.\n"
                   "Exit status: 0 success, 1 bad input, 2 a solve or sample did not converge.\n";
   }
 

@@ -10,6 +10,7 @@
 //   <output>/stiffness/<label>*.csv              the reduction, per method and b (StiffnessFileSet)
 //   <output>/contact/contact_forces.csv          the reduction, the contact samples
 //   <output>/chain/                              the chain tier's validation
+//   <output>/simulate/                           MuJoCo scenes (softchain simulate)
 // where <label> is "<method>_b<b/a with two decimals>a", e.g. M2_b0.50a.
 #include <softchain/data/rotation_method.h>
 
@@ -23,6 +24,7 @@ namespace softchain::data
     inline const std::string stiffness = "stiffness";
     inline const std::string contact   = "contact";
     inline const std::string chain     = "chain";
+    inline const std::string simulate  = "simulate";
   } // namespace folder
 
   // "M2_b0.50a": a stiffness file set's label.
@@ -61,5 +63,19 @@ namespace softchain::data
     std::string protocol_summary;   // protocol_summary.csv
     std::string protocol_plot;      // protocol_torques.png
     std::string mjcf;               // finger.xml (softchain chain --export-mjcf)
+  };
+
+  // The files of `softchain simulate` in <output>/simulate, one scene's
+  // (named after its obstacle, or "free") in each run.
+  struct SimulateFileSet
+  {
+    SimulateFileSet(const std::string &output_directory, const std::string &scene);
+
+    std::string directory;      // <output>/simulate
+    std::string scene_mjcf;     // <scene>.xml: the finger and the obstacle
+    std::string joint_angles;   // <scene>_joint_angles.csv: time series
+    std::string tip_pose;       // <scene>_tip_pose.csv: time series
+    std::string contact_force;  // <scene>_contact_force.csv: time series
+    std::string contact_vs_fem; // contact_vs_fem.csv: steady force per pressure against the FEM's
   };
 } // namespace softchain::data

@@ -1,0 +1,117 @@
+#include <softchain/chain/pressure_ramp_simulation.h>
+#include <softchain/chain/simulate_run.h>
+#include <softchain/data/input_error.h>
+#include <softchain/data/output_files.h>
+#include <softchain/geometry/contact_scene.h>
+
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <optional>
+
+namespace softchain::chain
+{
+  namespace
+  {
+    // The obstacle `name` of subsection Contact, the first if `name` is
+    // empty, none if the subsection has none.
+    std::optional<data::ObstacleRecord> chosen_obstacle(const data::PrmFile &prm, const std::string &name)
+    {
+      const geometry::ContactScene contact = geometry::ContactScene::read(prm);
+      if (name.empty())
+        return contact.empty() ? std::nullopt : std::optional(contact.obstacles.front().description);
+      if (const geometry::Obstacle *o = contact.find(name))
+        return o->description;
+      std::string known;
+      for (const auto &o : contact.obstacles)
+        known += (known.empty() ? "" : ", ") + o.name();
+      throw data::InputError("--scene " + name + ": " + prm.path() + " has no obstacle '" + name +
+                             "' in subsection Contact (its obstacles: " + (known.empty() ? "none" : known) +
+                             ")");
+    }
+
+    // The rows of the FEM's converged contact samples on `obstacle`, by pressure.
+    data::CsvTable fem_contact_forces(const std::string &output_dir, const std::string &obstacle)
+    {
+      const std::string file = data::contact_forces_file(output_dir);
+      if (!std::filesystem::exists(file))
+        throw data::InputError("softchain simulate needs the FEM's contact forces " + file +
+                               " (softchain sweep and reduce with Samples/Contact samples on '" + obstacle + "')");
+      const data::CsvTable all = data::CsvTable::read(file);
+      data::CsvTable       rows(all.columns());
+      for (std::size_t r = 0; r < all.n_rows(); ++r)
+        if (all.text(r, "obstacle") == obstacle && all.text(r, "status") == "converged")
+          {
+            std::vector<std::string> cells;
+            for (const std::string &c : all.columns())
+              cells.push_back(all.text(r, c));
+            rows.add_row(cells);
+          }
+      if (rows.n_rows() == 0)
+        throw data::InputError(file + " holds no converged contact sample on '" + obstacle + "'");
+      return rows;
+    }
+
+    // The steady forces against the FEM's, printed and as a table.
+    data::CsvTable compare(const std::string &obstacle, const std::vector<SteadyContact> &mujoco,
+                           const data::CsvTable &fem)
+    {
+      data::CsvTable table({"obstacle", "pressure", "mujoco_force_x", "mujoco_force_y", "mujoco_force_z",
+                            "mujoco_force_norm", "fem_force_x", "fem_force_y", "fem_force_z", "fem_force_norm",
+                            "difference_percent"});
+      for (std::size_t r = 0; r < mujoco.size(); ++r)
+        {
+          const Eigen::Vector3d m = mujoco[r].force;
+          const Eigen::Vector3d f(fem.number(r, "force_x"), fem.number(r, "force_y"), fem.number(r, "force_z"));
+          // Relative to the FEM's force; a sample without contact in the FEM has none.
+          const double difference = f.norm() > 0 ? 100 * (m.norm() - f.norm()) / f.norm()
+                                                 : std::numeric_limits<double>::quiet_NaN();
+          table.add_row({obstacle, data::CsvTable::cell(mujoco[r].pressure), data::CsvTable::cell(m.x()),
+                         data::CsvTable::cell(m.y()), data::CsvTable::cell(m.z()), data::CsvTable::cell(m.norm()),
+                         data::CsvTable::cell(f.x()), data::CsvTable::cell(f.y()), data::CsvTable::cell(f.z()),
+                         data::CsvTable::cell(f.norm()), data::CsvTable::cell(difference)});
+          std::cout << "simulate: " << obstacle << " at " << mujoco[r].pressure / 1e3 << " kPa: MuJoCo "
+                    << m.norm() << " N, FEM " << f.norm() << " N (" << difference << " %)\n";
+        }
+      return table;
+    }
+
+    void write_time_series(const PressureRampSimulation &run, const data::SimulateFileSet &files)
+    {
+      run.joint_angles().write(files.joint_angles);
+      run.tip_pose().write(files.tip_pose);
+      run.contact_force().write(files.contact_force);
+      std::cout << "simulate: " << run.simulated_time() << " s simulated; time series " << files.joint_angles
+                << ", " << files.tip_pose << ", " << files.contact_force << "\n";
+    }
+  } // namespace
+
+  int run_simulate(const data::PrmFile &prm, const std::string &database_path, const std::string &output_dir,
+                   const std::string &scene_name)
+  {
+    const std::optional<data::ObstacleRecord> obstacle = chosen_obstacle(prm, scene_name);
+    const data::SimulateFileSet files(output_dir, obstacle ? obstacle->name : "free");
+    const std::string           finger = data::ChainFileSet(output_dir).mjcf;
+    const double radius = palm_capsule_radius(data::ActuationDatabase::open(database_path).mesh(),
+                                              MujocoScene(finger, std::nullopt, 0.0, "").actuation().tables());
+    MujocoScene  scene(finger, obstacle, radius, files.scene_mjcf);
+    std::cout << "simulate: scene " << (obstacle ? obstacle->name + " (" + obstacle->shape + ")" : "free")
+              << ", capsules of radius " << 1e3 * radius << " mm\n";
+    PressureRampSimulation run(scene);
+    if (!obstacle)
+      {
+        run.run({scene.actuation().tables().pressures().back()});
+        write_time_series(run, files);
+        return 0;
+      }
+    const data::CsvTable fem = fem_contact_forces(output_dir, obstacle->name);
+    std::vector<double>  pressures;
+    for (std::size_t r = 0; r < fem.n_rows(); ++r)
+      pressures.push_back(fem.number(r, "pressure"));
+    const std::vector<SteadyContact> steady = run.run(pressures);
+    write_time_series(run, files);
+    compare(obstacle->name, steady, fem).write(files.contact_vs_fem);
+    std::cout << "simulate: " << files.contact_vs_fem << "\n";
+    return 0;
+  }
+} // namespace softchain::chain
