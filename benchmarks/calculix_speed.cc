@@ -18,6 +18,7 @@
 #include <calculix_deck.h>
 #include <fem_test_tools.h>
 
+#include <softchain/data/statistics.h>
 #include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/lone_process_mpi.h>
 #include <softchain/fem/boundary_ids.h>
@@ -37,6 +38,7 @@
 
 using namespace dealii;
 using namespace softchain::fem;
+using softchain::data::median;
 
 namespace
 {
@@ -141,12 +143,6 @@ namespace
         std::exit(2);
       }
     return {seconds, calculix_iterations(name + ".sta"), u.at(corner).norm(), 0};
-  }
-
-  double median(std::vector<double> v)
-  {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
   }
 } // namespace
 

@@ -8,6 +8,7 @@
 // (median of the last ten over median of the first ten). A store whose cost
 // does not grow with the number of samples already stored has R near 1.
 #include <softchain/data/actuation_database.h>
+#include <softchain/data/statistics.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +26,7 @@ namespace
 {
   namespace fs   = std::filesystem;
   namespace data = softchain::data;
+  using data::median;
 
   // A synthetic mesh: NODES points on a grid, read as hexahedra of eight
   // consecutive nodes. The data layer checks index ranges only, so any
@@ -57,13 +59,6 @@ namespace
     for (const auto &X : mesh.X)
       sample.x.push_back({X[0] + shift, X[1] - shift, X[2] + shift * X[2]});
     return sample;
-  }
-
-  double median(std::vector<double> values)
-  {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
   }
 
   double mean(const std::vector<double> &values)

@@ -301,7 +301,9 @@ namespace softchain::fem
     section.declare("Direct solver maximum DoFs", "200000");
     section.declare("Direct solver package", "MUMPS_or_UMFPACK",
                     "MUMPS_or_UMFPACK (one MPI rank: MUMPS's LDL^T where the tangent is "
-                    "symmetric, else UMFPACK's LU, each analysed once per sparsity pattern; "
+                    "symmetric, GMRES on the LDL^T factors of its symmetric part where only "
+                    "friction makes it unsymmetric, else UMFPACK's LU, each analysed once per "
+                    "sparsity pattern; "
                     "several ranks: Amesos_Mumps), Amesos_Mumps or Amesos_Klu (Trilinos, a new "
                     "factorisation per solve); not part of the design hash: each solves Newton's "
                     "corrections to its tolerance, so the answer does not depend on it",

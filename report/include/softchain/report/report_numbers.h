@@ -1,13 +1,13 @@
 #pragma once
-// Numbers as the report shows them: the median of measured values and a
-// value to a few significant digits.
+// Numbers as the report shows them: the median of measured values
+// (data::median) and a value to a few significant digits.
+#include <softchain/data/statistics.h>
+
 #include <string>
-#include <vector>
 
 namespace softchain::report
 {
-  // Median of `values` (NaN when empty).
-  double median(std::vector<double> values);
+  using data::median;
   // `value` with `digits` significant digits.
   std::string fmt(double value, int digits = 3);
 } // namespace softchain::report
