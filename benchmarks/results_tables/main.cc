@@ -1,7 +1,7 @@
 // results_tables: regenerates the result tables of documentation pages from
 // the CSV files the benchmarks wrote (ResultsPage, ResultsTable).
-//   results_tables PAGE.md...           rewrites each page whose tables changed
-//   results_tables --check PAGE.md...   changes nothing; exit 1 if a page's
+//   results_tables PAGE...           rewrites each page whose tables changed
+//   results_tables --check PAGE...   changes nothing; exit 1 if a page's
 //                                       tables differ from their CSV files
 // A benchmark calls the first form after writing its CSV; the test suite
 // runs the second on docs/, so that no table can drift from its data.
@@ -49,7 +49,7 @@ int main(int argc, char **argv)
   std::vector<std::string> pages(argv + 1 + (checking ? 1 : 0), argv + argc);
   if (pages.empty())
     {
-      std::cerr << "usage: results_tables [--check] PAGE.md...\n";
+      std::cerr << "usage: results_tables [--check] PAGE...\n";
       return 1;
     }
   try

@@ -90,8 +90,8 @@ TEST_CASE("a page's tables are regenerated between their comments, and a stale o
   const std::string before = "# Results\n\nSome text.\n\n" + spec + "\n";
   const std::string after  = "<!-- end table -->\n\nMore text.\n";
 
-  std::ofstream(dir.file("page.md")) << before << current << after;
-  const ResultsPage page = ResultsPage::read(dir.file("page.md"));
+  std::ofstream(dir.file("page.txt")) << before << current << after;
+  const ResultsPage page = ResultsPage::read(dir.file("page.txt"));
   CHECK(page.regenerated() == page.text());
   REQUIRE(page.tables().size() == 1);
   CHECK(page.tables()[0].current);
@@ -101,12 +101,12 @@ TEST_CASE("a page's tables are regenerated between their comments, and a stale o
   // regenerated page restores the CSV's.
   std::string edited = current;
   edited.replace(edited.find("-3.4123"), 7, "-3.41");
-  std::ofstream(dir.file("page.md")) << before << edited << after;
-  const ResultsPage stale = ResultsPage::read(dir.file("page.md"));
+  std::ofstream(dir.file("page.txt")) << before << edited << after;
+  const ResultsPage stale = ResultsPage::read(dir.file("page.txt"));
   CHECK_FALSE(stale.tables()[0].current);
   CHECK(stale.regenerated() == before + current + after);
 
-  std::ofstream(dir.file("page.md")) << before << current;
-  CHECK_THROWS_WITH(ResultsPage::read(dir.file("page.md")).regenerated(),
-                    Contains("page.md:5") && Contains("without '<!-- end table -->'"));
+  std::ofstream(dir.file("page.txt")) << before << current;
+  CHECK_THROWS_WITH(ResultsPage::read(dir.file("page.txt")).regenerated(),
+                    Contains("page.txt:5") && Contains("without '<!-- end table -->'"));
 }
