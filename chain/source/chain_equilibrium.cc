@@ -1,6 +1,9 @@
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/angle_units.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -59,11 +62,13 @@ namespace softchain::chain
       }
     std::stable_sort(loads_.begin(), loads_.end(),
                      [](const AttachedLoad &a, const AttachedLoad &b) { return a.link < b.link; });
+    contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness);
   }
 
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
   {
     chain_.update_pose(q, pose_);
+    const double contact = contact_.update(pose_);
     accumulate_distal_loads();
     const double strain = 0.5 * q.dot(stiffness_.cwiseProduct(q));
     const double work   = pressure_torque_.dot(q);
@@ -71,12 +76,14 @@ namespace softchain::chain
     residual_scale_     = stiffness_.cwiseProduct(q).lpNorm<Eigen::Infinity>() +
                       pressure_torque_.lpNorm<Eigen::Infinity>() +
                       generalised_force_.lpNorm<Eigen::Infinity>();
-    energy_ += strain - work;
-    energy_magnitude_ += strain + std::abs(work);
+    energy_ += strain - work + contact;
+    energy_magnitude_ += strain + std::abs(work) + contact;
   }
 
   // Backward pass from the tip: M_m, B_m (header) and Q_m = A_m^T M_m, with
-  // the potential of the dead loads, -sum f.x, left in energy_.
+  // the potential of the dead loads, -sum f.x, left in energy_. The contact
+  // forces enter M and B like dead loads at their points (their potential
+  // is the contact's energy).
   void ChainEquilibrium::accumulate_distal_loads()
   {
     Eigen::Vector3d force  = Eigen::Vector3d::Zero(); // sum f_k
@@ -85,8 +92,15 @@ namespace softchain::chain
     energy_                = 0.0;
     energy_magnitude_      = 0.0;
     auto load              = loads_.rbegin();
+    auto touch             = contact_.touches().rbegin();
     for (int m = chain_.n_joints() - 1; m >= 0; --m)
       {
+        for (; touch != contact_.touches().rend() && touch->link == m; ++touch)
+          {
+            force += touch->force;
+            moment += touch->position.cross(touch->force);
+            dyad += touch->position * touch->force.transpose();
+          }
         for (; load != loads_.rend() && load->link == m; ++load)
           {
             const Eigen::Vector3d x =
@@ -164,6 +178,21 @@ namespace softchain::chain
       shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
     tangent_.solve(residual_, direction_);
     direction_ *= -1.0;
+    if (!contact_.touches().empty())
+      {
+        contact_.tangent_rows(pose_, chain_.n_angles(), contact_rows_, contact_weights_);
+        const Eigen::Index r = contact_rows_.rows();
+        Eigen::MatrixXd    Y(chain_.n_angles(), r);
+        Eigen::VectorXd    column(chain_.n_angles());
+        for (Eigen::Index i = 0; i < r; ++i)
+          {
+            tangent_.solve(contact_rows_.row(i).transpose(), column);
+            Y.col(i) = column;
+          }
+        const Eigen::MatrixXd WV = contact_weights_.asDiagonal() * contact_rows_;
+        const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(r, r) + WV * Y;
+        direction_ -= Y * S.partialPivLu().solve(WV * direction_);
+      }
     const double big = direction_.lpNorm<Eigen::Infinity>();
     if (big > settings_.max_step_angle)
       direction_ *= settings_.max_step_angle / big;
@@ -216,7 +245,16 @@ namespace softchain::chain
   std::string ChainEquilibrium::instability()
   {
     prepare_tangent();
-    if (tangent_.factor(0.0))
+    bool stable = false;
+    if (contact_.touches().empty())
+      stable = tangent_.factor(0.0);
+    else
+      {
+        Eigen::MatrixXd dense = tangent_.dense();
+        add_contact_tangent(dense);
+        stable = dense.llt().info() == Eigen::Success;
+      }
+    if (stable)
       return {};
     return "unstable equilibrium: the tangent stiffness is not positive definite (buckling)";
   }
@@ -291,6 +329,19 @@ namespace softchain::chain
   {
     evaluate(q);
     prepare_tangent();
-    return tangent_.dense();
+    Eigen::MatrixXd dense = tangent_.dense();
+    add_contact_tangent(dense);
+    return dense;
+  }
+
+  // + V^T diag(w) V of the contact (ChainContact).
+  void ChainEquilibrium::add_contact_tangent(Eigen::MatrixXd &dense) const
+  {
+    if (contact_.touches().empty())
+      return;
+    Eigen::MatrixXd rows;
+    Eigen::VectorXd weights;
+    contact_.tangent_rows(pose_, chain_.n_angles(), rows, weights);
+    dense += rows.transpose() * weights.asDiagonal() * rows;
   }
 } // namespace softchain::chain

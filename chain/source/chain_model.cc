@@ -28,12 +28,25 @@ namespace softchain::chain
     ChainModel rigid = *this;
     rigid.link_geometry_.reset();
     rigid.link_compliance_.reset();
+    rigid.collision_surface_.reset(); // shaped for the links it leaves
     return rigid;
   }
 
   void ChainModel::set_link_compliance(LinkCompliance compliance)
   {
     link_compliance_ = std::move(compliance);
+  }
+
+  void ChainModel::set_collision_surface(CollisionSurface surface)
+  {
+    if (surface.link_begin().size() != static_cast<std::size_t>(chain_.n_joints()) + 1)
+      throw std::invalid_argument("ChainModel: the collision surface has another number of links");
+    collision_surface_ = std::move(surface);
+  }
+
+  const CollisionSurface *ChainModel::collision_surface() const
+  {
+    return collision_surface_ ? &*collision_surface_ : nullptr;
   }
 
   ChainModel ChainModel::without_link_compliance() const

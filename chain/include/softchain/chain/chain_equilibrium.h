@@ -39,6 +39,16 @@
 // needed or the last one had to shift H, e.g. a straight finger under an
 // axial compressive load beyond buckling), is reported as failed with the
 // reason; the pose is then not an answer.
+//
+// Contact (ChainContact): with obstacles in the load, the model's collision
+// surface adds its penalty energy U_c to U, its point forces to J^T f, and
+// to H a low-rank part V^T diag(w) V, which the Newton step takes by the
+// Woodbury identity around the O(n) factor:
+//   (H + V^T W V)^-1 b = H^-1 b - Y (I + W V Y)^-1 W V H^-1 b,   Y = H^-1 V^T,
+// r solves of ChainTangent and an r x r system for r rows (touching points
+// and their curvatures). The stability check then factors the whole
+// tangent.
+#include <softchain/chain/chain_contact.h>
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/chain_model.h>
 
@@ -54,6 +64,7 @@ namespace softchain::chain
     double tolerance      = 1e-10; // relative residual
     int    max_iterations = 50;
     double max_step_angle = 1.5;   // rad per angle and Newton step
+    double contact_stiffness = 1e5; // k_c of ChainContact, N/m per surface point
   };
 
   struct Equilibrium
@@ -89,6 +100,8 @@ namespace softchain::chain
     // model's at the pressure of the last set_load (ChainModel::chain_at).
     const ChainPose      &pose() const { return pose_; }
     const KinematicChain &chain() const { return chain_; }
+    // The contact of the last evaluation: touching points, obstacle wrenches.
+    const ChainContact   &contact() const { return contact_; }
 
   private:
     struct AttachedLoad
@@ -101,6 +114,7 @@ namespace softchain::chain
     Equilibrium iterate(const Eigen::VectorXd &start);
     void   evaluate(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
+    void   add_contact_tangent(Eigen::MatrixXd &dense) const;
     Eigen::Vector3d twist_moment(int m) const;
     void   prepare_tangent();
     bool   converged() const;
@@ -118,6 +132,9 @@ namespace softchain::chain
     Eigen::VectorXd           stiffness_;       // diag K
     Eigen::VectorXd           pressure_torque_; // J_p p
     std::vector<AttachedLoad> loads_;           // sorted by link
+    ChainContact              contact_;         // the load's obstacles
+    Eigen::MatrixXd           contact_rows_;    // V of the contact's tangent
+    Eigen::VectorXd           contact_weights_; // w
 
     // State of the last evaluation
     ChainPose                    pose_;

@@ -1,6 +1,9 @@
 #pragma once
 // ChainLoad: what acts on the finger in one equilibrium problem, the chain
-// tier's version of the database's actuation S = (p, force points, forces).
+// tier's version of the database's actuation S = (p, force points, forces)
+// and, for a contact sample, its obstacles.
+#include <softchain/data/obstacle_record.h>
+
 #include <Eigen/Core>
 #include <vector>
 
@@ -18,5 +21,8 @@ namespace softchain::chain
   {
     double                 pressure = 0.0; // Pa
     std::vector<PointLoad> point_loads;
+    // Rigid obstacles the finger may touch (ChainContact), at the end of
+    // their motion; none: a free finger.
+    std::vector<data::ObstacleRecord> obstacles = {};
   };
 } // namespace softchain::chain

@@ -2,8 +2,10 @@
 // ChainModel: one finger of the chain tier, i.e. the geometry (KinematicChain,
 // optionally with links shaped by the pressure: LinkGeometry), the joint
 // stiffness K, the pressure actuation J_p and, optionally, the links' series
-// compliance (LinkCompliance); everything the equilibrium
-// K q = J_p p + J(q)^T f needs besides the load.
+// compliance (LinkCompliance) and the surface it touches obstacles with
+// (CollisionSurface); everything the equilibrium K q = J_p p + J(q)^T f
+// needs besides the load.
+#include <softchain/chain/collision_surface.h>
 #include <softchain/chain/joint_stiffness.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/chain/link_compliance.h>
@@ -46,6 +48,9 @@ namespace softchain::chain
     // without link compliance), m, world.
     Eigen::Vector3d          link_deflection(const ChainLoad &load) const;
     bool                     has_link_geometry() const { return link_geometry_.has_value(); }
+    void                     set_collision_surface(CollisionSurface surface);
+    // The collision surface, or nullptr (the model cannot touch).
+    const CollisionSurface  *collision_surface() const;
     const JointStiffness    &stiffness() const { return stiffness_; }
     const PressureActuation &actuation() const { return actuation_; }
     // The tabulated pressures of K(p), J_p(p) and the link geometry U(p)
@@ -60,5 +65,6 @@ namespace softchain::chain
     PressureActuation actuation_;
     std::optional<LinkGeometry> link_geometry_;
     std::optional<LinkCompliance> link_compliance_;
+    std::optional<CollisionSurface> collision_surface_;
   };
 } // namespace softchain::chain

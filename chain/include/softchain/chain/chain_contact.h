@@ -1,0 +1,87 @@
+#pragma once
+// ChainContact: the chain's collision surface (CollisionSurface) against
+// rigid obstacles (geometry::Obstacle, the FEM's analytic signed distances),
+// frictionless and unilateral, by a penalty on the penetration. For each
+// surface point x_k and obstacle with signed distance g (n = grad g, H_g =
+// grad grad g, rigid_obstacle.h) the contact energy and the force on the
+// finger are
+//     U_c = sum_k 1/2 k_c <-g(x_k)>^2,     f_k = k_c <-g(x_k)> n(x_k),
+// <.> the positive part: only penetrating points push, along the outward
+// normal. f_k acts at the material point x_k of its link, so the chain's
+// generalised force is J_k^T f_k and its energy gradient that of U_c. The
+// consistent tangent of U_c adds to ChainEquilibrium's (which already holds
+// f_k's part as a point load at x_k, the change of the lever J_k)
+//     J_k^T k_c (n n^T + g H_g) J_k,
+// the normal stiffness and the curvature of a round obstacle (negative:
+// g < 0 where it acts). It is low rank -- one row n^T J_k per touching point,
+// and one per non-zero curvature e^T J_k -- so ChainEquilibrium adds it to
+// its O(n) tangent by the Woodbury identity instead of forming a dense one.
+//
+// The penalty k_c [N/m] per point makes the penetration k_c^-1 |f_k|: with
+// the default 1e5 N/m, 10 um under a force of 1 N on one point, and the
+// force's error relative to an exact constraint ~ k_joint / (k_c l^2), the
+// joints' stiffness against the penalty's at the lever l. An obstacle with
+// friction is refused (std::invalid_argument naming it): the chain's contact
+// has none, and a frictionless answer would be silently wrong. A moving
+// obstacle stands at the end of its motion (a static problem).
+#include <softchain/chain/collision_surface.h>
+#include <softchain/chain/kinematic_chain.h>
+#include <softchain/geometry/contact_scene.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace softchain::chain
+{
+  class ChainContact
+  {
+  public:
+    // A surface point inside an obstacle.
+    struct Touch
+    {
+      int             link = 0, point = 0, obstacle = 0;
+      Eigen::Vector3d position = Eigen::Vector3d::Zero(); // x_k, m, world
+      Eigen::Vector3d normal   = Eigen::Vector3d::Zero(); // n, the obstacle's outward normal
+      Eigen::Vector3d force    = Eigen::Vector3d::Zero(); // f_k on the finger, N
+      double          gap      = 0.0;                     // g < 0, m
+      Eigen::Matrix3d curvature = Eigen::Matrix3d::Zero(); // H_g, 1/m
+    };
+
+    // The obstacles of one load and the surface at its pressure (`surface`
+    // must outlive the contact; none: no contact). Throws
+    // std::invalid_argument if there are obstacles but no surface, an
+    // obstacle has friction, or the stiffness is not positive.
+    void set(const CollisionSurface *surface, double pressure,
+             const std::vector<data::ObstacleRecord> &obstacles, double stiffness);
+    bool empty() const { return obstacles_.empty(); }
+
+    // Finds the touching points at `pose` (sorted by link) and returns U_c.
+    double update(const ChainPose &pose);
+    const std::vector<Touch> &touches() const { return touches_; }
+    double                    stiffness() const { return stiffness_; }
+
+    // The tangent's low-rank part at the last update, J^T k_c (n n^T + g H_g) J
+    // = V^T diag(w) V: rows V (one per row, n_angles columns) and weights w.
+    void tangent_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
+                      Eigen::VectorXd &weights) const;
+
+    // What each obstacle receives at the last update: the force [N] and its
+    // moment about the origin [N m], world axes, in the obstacles' order.
+    std::vector<data::ObstacleWrench> obstacle_wrenches() const;
+    // The deepest penetration at the last update, m (0 without touches).
+    double max_penetration() const;
+
+  private:
+    // e^T dx_k/dq: (i, alpha) entry a_{i,alpha} . ((x - p_{i,alpha}) x e)
+    // for the joints i up to the point's link (pivot s_i for psi).
+    void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
+                      Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
+
+    const CollisionSurface        *surface_ = nullptr;
+    std::vector<geometry::Obstacle> obstacles_;
+    std::vector<Eigen::Vector3d>    offsets_; // L_k(p)
+    double                          stiffness_ = 0.0;
+    std::vector<Touch>              touches_;
+  };
+} // namespace softchain::chain

@@ -1,0 +1,63 @@
+#pragma once
+// CollisionSurface: where the chain's links touch the world. The FEM finger
+// touches an obstacle with its skin -- the palm, the tip face's lower edge --
+// not with the line of joints, so the chain carries the FEM's own outer
+// surface: the vertices of the database mesh's boundary faces that are
+// neither cavity nor clamped base, each a material point of the link that
+// carries it (KinematicChain::link_of). A point k of link b sits at
+//     x_k = c_b + R_b L_k(p)
+// with L_k(p) its offset in the link's frame. The offsets are shaped by the
+// pressure like the links (LinkGeometry): at each pressure-only sample p_s
+// of the database the chain's own equilibrium pose (c_b, R_b at
+// q_s = K^-1 J_p p_s) is taken and
+//     L_k(p_s) = R_b^T (y_k(p_s) - c_b),
+// y_k the FEM's deformed vertex, so that the chain at p_s carries the FEM's
+// inflated surface exactly (its bulging cross-sections too); in between the
+// offsets are linear in p and held beyond the last sample, the rest row
+// (p = 0) being the reference surface. Rigid links (the paper's, and the
+// beam-theory baseline) carry the reference surface at every pressure.
+//
+// Each link also has a bounding sphere of its points over all pressures
+// (centre and radius in its frame), which lets a contact search skip the
+// links far from an obstacle. The surface is built from a database by
+// finger_collision_surface.h.
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace softchain::chain
+{
+  class CollisionSurface
+  {
+  public:
+    // One offset per point at each tabulated pressure.
+    struct Row
+    {
+      double                       pressure = 0.0; // Pa
+      std::vector<Eigen::Vector3d> offsets;        // L_k(p), m, in link frames
+    };
+
+    // Points sorted by link (`links[k]` the link of point k, 0-based, none on
+    // the base); rows by increasing pressure, the first at 0. Throws
+    // std::invalid_argument otherwise.
+    CollisionSurface(std::vector<int> links, std::vector<Row> rows, int n_links);
+
+    int                     n_points() const { return static_cast<int>(links_.size()); }
+    const std::vector<int> &links() const { return links_; }
+    // The first point of each link and one past its last (size n_links + 1).
+    const std::vector<int> &link_begin() const { return link_begin_; }
+    std::vector<double>     table_pressures() const;
+    // L_k(p) of every point into `offsets` (sized n_points; no allocation).
+    void offsets_at(double pressure, std::vector<Eigen::Vector3d> &offsets) const;
+    // Bounding sphere of link b's points over all pressures, in its frame.
+    const Eigen::Vector3d &sphere_centre(int link) const { return sphere_centres_[link]; }
+    double                 sphere_radius(int link) const { return sphere_radii_[link]; }
+
+  private:
+    std::vector<int>             links_;
+    std::vector<Row>             rows_;
+    std::vector<int>             link_begin_;
+    std::vector<Eigen::Vector3d> sphere_centres_;
+    std::vector<double>          sphere_radii_;
+  };
+} // namespace softchain::chain

@@ -1,0 +1,33 @@
+#pragma once
+// The CollisionSurface of a finger from its FEM database: the outer surface
+// of the database mesh (boundary faces of its cells that are not cavity
+// faces; vertices of the clamped base left out), carried by the links of a
+// ChainModel.
+#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/chain_model.h>
+#include <softchain/chain/collision_surface.h>
+#include <softchain/data/actuation_database.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace softchain::chain
+{
+  // The vertices of `mesh`'s outer surface: those of the faces that belong to
+  // one cell only, without the faces whose vertices are all cavity vertices,
+  // and without the clamped base's vertices. Sorted node indices.
+  std::vector<std::int64_t> outer_surface_nodes(const data::MeshRecord &mesh);
+
+  // The outer surface carried rigidly by the links of `model`'s reference
+  // chain: one row, at p = 0 (the paper's rigid links, the baseline).
+  CollisionSurface rigid_collision_surface(const ChainModel &model, const data::MeshRecord &mesh);
+
+  // The same surface shaped by the pressure: one row per converged
+  // pressure-only sample of `database` (no forces, tip motion, obstacles or
+  // volume control; role "pressure"), the offsets from the chain's own
+  // equilibrium pose at that pressure (CollisionSurface). A pressure whose
+  // chain equilibrium fails is left out.
+  CollisionSurface pressure_shaped_collision_surface(const ChainModel &model,
+                                                     const data::ActuationDatabase &database,
+                                                     const EquilibriumSettings &settings);
+} // namespace softchain::chain

@@ -1,0 +1,146 @@
+#include <softchain/chain/chain_contact.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace softchain::chain
+{
+  void ChainContact::set(const CollisionSurface *surface, const double pressure,
+                         const std::vector<data::ObstacleRecord> &obstacles, const double stiffness)
+  {
+    obstacles_.clear();
+    touches_.clear();
+    surface_   = surface;
+    stiffness_ = stiffness;
+    if (obstacles.empty())
+      return;
+    if (surface == nullptr)
+      throw std::invalid_argument("chain contact: the model has no collision surface for obstacle '" +
+                                  obstacles.front().name + "'");
+    if (!(stiffness > 0.0) || !std::isfinite(stiffness))
+      throw std::invalid_argument("chain contact: the contact stiffness must be positive and finite");
+    for (const data::ObstacleRecord &record : obstacles)
+      {
+        if (record.friction != 0.0)
+          throw std::invalid_argument("chain contact: obstacle '" + record.name + "' has friction " +
+                                      std::to_string(record.friction) +
+                                      "; the chain's contact is frictionless");
+        obstacles_.emplace_back(record);
+      }
+    surface->offsets_at(pressure, offsets_);
+  }
+
+  // Link by link, so that the touches come sorted by link; a link whose
+  // bounding sphere lies outside an obstacle (g(centre) > radius, g being
+  // 1-Lipschitz) has no point inside it.
+  double ChainContact::update(const ChainPose &pose)
+  {
+    touches_.clear();
+    double energy = 0.0;
+    if (obstacles_.empty())
+      return energy;
+    const std::vector<int> &begin = surface_->link_begin();
+    for (int b = 0; b + 1 < static_cast<int>(begin.size()); ++b)
+      {
+        if (begin[b] == begin[b + 1])
+          continue;
+        const Eigen::Matrix3d &R = pose.link_rotations[b];
+        const Eigen::Vector3d &c = pose.joint_positions[b];
+        const Eigen::Vector3d  centre = c + R * surface_->sphere_centre(b);
+        for (std::size_t o = 0; o < obstacles_.size(); ++o)
+          {
+            const geometry::Obstacle &obstacle = obstacles_[o];
+            const Eigen::Vector3d     motion   = obstacle.motion();
+            if (obstacle.body->distance(centre, motion).gap > surface_->sphere_radius(b))
+              continue;
+            for (int k = begin[b]; k < begin[b + 1]; ++k)
+              {
+                const Eigen::Vector3d          x = c + R * offsets_[k];
+                const geometry::SignedDistance d = obstacle.body->distance(x, motion);
+                if (!(d.gap < 0.0))
+                  continue;
+                touches_.push_back({b, k, static_cast<int>(o), x, d.normal,
+                                    -stiffness_ * d.gap * d.normal, d.gap, d.hessian});
+                energy += 0.5 * stiffness_ * d.gap * d.gap;
+              }
+          }
+      }
+    return energy;
+  }
+
+  void ChainContact::jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
+                                  Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const
+  {
+    row.setZero();
+    for (int i = 0; i <= touch.link; ++i)
+      for (int alpha = 0; alpha < 3; ++alpha)
+        {
+          const Eigen::Vector3d &pivot = alpha == 0 ? pose.twist_pivots[i] : pose.joint_positions[i];
+          row[3 * i + alpha] = pose.joint_axes[i].col(alpha).dot((touch.position - pivot).cross(e));
+        }
+  }
+
+  // Per touch: the normal row with weight k_c, and each eigenvector e of
+  // H_g with eigenvalue mu != 0 (a round obstacle's 1/radius) with weight
+  // k_c g mu.
+  void ChainContact::tangent_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
+                                  Eigen::VectorXd &weights) const
+  {
+    std::vector<std::pair<Eigen::Vector3d, double>> directions; // (e, weight) per row
+    std::vector<int>                                touch_of;
+    for (std::size_t t = 0; t < touches_.size(); ++t)
+      {
+        const Touch &touch = touches_[t];
+        directions.emplace_back(touch.normal, stiffness_);
+        touch_of.push_back(static_cast<int>(t));
+        if (touch.curvature.isZero())
+          continue;
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+        eigen.computeDirect(touch.curvature);
+        const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
+        for (int i = 0; i < 3; ++i)
+          if (std::abs(eigen.eigenvalues()[i]) > 1e-9 * largest)
+            {
+              directions.emplace_back(eigen.eigenvectors().col(i),
+                                      stiffness_ * touch.gap * eigen.eigenvalues()[i]);
+              touch_of.push_back(static_cast<int>(t));
+            }
+      }
+    rows.resize(static_cast<Eigen::Index>(directions.size()), n_angles);
+    weights.resize(static_cast<Eigen::Index>(directions.size()));
+    for (std::size_t r = 0; r < directions.size(); ++r)
+      {
+        jacobian_row(pose, touches_[touch_of[r]], directions[r].first, rows.row(r));
+        weights[r] = directions[r].second;
+      }
+  }
+
+  std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const
+  {
+    std::vector<Eigen::Vector3d> force(obstacles_.size(), Eigen::Vector3d::Zero()),
+      moment(obstacles_.size(), Eigen::Vector3d::Zero());
+    for (const Touch &touch : touches_)
+      {
+        force[touch.obstacle] -= touch.force;
+        moment[touch.obstacle] -= touch.position.cross(touch.force);
+      }
+    std::vector<data::ObstacleWrench> wrenches(obstacles_.size());
+    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+      for (int i = 0; i < 3; ++i)
+        {
+          wrenches[o].force[i]  = force[o][i];
+          wrenches[o].moment[i] = moment[o][i];
+        }
+    return wrenches;
+  }
+
+  double ChainContact::max_penetration() const
+  {
+    double deepest = 0.0;
+    for (const Touch &touch : touches_)
+      deepest = std::max(deepest, -touch.gap);
+    return deepest;
+  }
+} // namespace softchain::chain

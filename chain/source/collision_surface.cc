@@ -1,0 +1,65 @@
+#include <softchain/chain/collision_surface.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace softchain::chain
+{
+  CollisionSurface::CollisionSurface(std::vector<int> links, std::vector<Row> rows, const int n_links)
+    : links_(std::move(links))
+    , rows_(std::move(rows))
+    , link_begin_(n_links + 1, 0)
+    , sphere_centres_(n_links, Eigen::Vector3d::Zero())
+    , sphere_radii_(n_links, 0.0)
+  {
+    if (rows_.empty() || rows_.front().pressure != 0.0)
+      throw std::invalid_argument("CollisionSurface: the first row must be the rest surface (p = 0)");
+    for (std::size_t r = 0; r < rows_.size(); ++r)
+      if (rows_[r].offsets.size() != links_.size() || (r > 0 && !(rows_[r].pressure > rows_[r - 1].pressure)))
+        throw std::invalid_argument(
+          "CollisionSurface: every row needs one offset per point, rows by increasing pressure");
+    if (!std::is_sorted(links_.begin(), links_.end()) ||
+        (!links_.empty() && (links_.front() < 0 || links_.back() >= n_links)))
+      throw std::invalid_argument("CollisionSurface: points must be sorted by link, on links 0..n-1");
+    for (int b = 0; b < n_links; ++b)
+      link_begin_[b + 1] = static_cast<int>(std::upper_bound(links_.begin(), links_.end(), b) - links_.begin());
+    // Centre: the rest points' mean; radius: the farthest point at any row.
+    for (int b = 0; b < n_links; ++b)
+      {
+        const int begin = link_begin_[b], end = link_begin_[b + 1];
+        if (begin == end)
+          continue;
+        for (int k = begin; k < end; ++k)
+          sphere_centres_[b] += rows_.front().offsets[k] / (end - begin);
+        for (const Row &row : rows_)
+          for (int k = begin; k < end; ++k)
+            sphere_radii_[b] = std::max(sphere_radii_[b], (row.offsets[k] - sphere_centres_[b]).norm());
+      }
+  }
+
+  std::vector<double> CollisionSurface::table_pressures() const
+  {
+    std::vector<double> pressures;
+    for (const Row &row : rows_)
+      pressures.push_back(row.pressure);
+    return pressures;
+  }
+
+  // Linear between the two rows around p, the last row beyond it (negative
+  // pressures take the rest row).
+  void CollisionSurface::offsets_at(const double pressure, std::vector<Eigen::Vector3d> &offsets) const
+  {
+    offsets.resize(links_.size());
+    const auto above = std::upper_bound(rows_.begin(), rows_.end(), pressure,
+                                        [](double p, const Row &row) { return p < row.pressure; });
+    if (above == rows_.begin() || above == rows_.end())
+      {
+        offsets = above == rows_.end() ? rows_.back().offsets : rows_.front().offsets;
+        return;
+      }
+    const Row   &low = *(above - 1), &high = *above;
+    const double t   = (pressure - low.pressure) / (high.pressure - low.pressure);
+    for (std::size_t k = 0; k < links_.size(); ++k)
+      offsets[k] = (1.0 - t) * low.offsets[k] + t * high.offsets[k];
+  }
+} // namespace softchain::chain

@@ -1,0 +1,222 @@
+// ChainContact inside ChainEquilibrium: a single joint bent onto a table
+// against the closed form of the penalty model and its exact-constraint
+// limit; the contact's energy gradient and consistent tangent (plane and
+// cylinder, the curvature term included) against central differences; the
+// Woodbury Newton step against the dense solve; the collision surface's
+// interpolation, outer surface and errors.
+#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/finger_collision_surface.h>
+
+#include "box_mesh.h"
+#include "central_differences.h"
+#include "uniform_finger.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace softchain::chain;
+using softchain::chain::testing::uniform_finger;
+
+namespace
+{
+  softchain::data::ObstacleRecord plane(const double y)
+  {
+    softchain::data::ObstacleRecord o;
+    o.name      = "table";
+    o.shape     = "plane";
+    o.position  = {0.0, y, 0.0};
+    o.direction = {0.0, 1.0, 0.0};
+    return o;
+  }
+
+  softchain::data::ObstacleRecord cylinder(const Eigen::Vector3d &centre, const double radius)
+  {
+    softchain::data::ObstacleRecord o;
+    o.name      = "cylinder";
+    o.shape     = "cylinder";
+    o.position  = {centre.x(), centre.y(), centre.z()};
+    o.direction = {0.0, 0.0, 1.0};
+    o.radius    = radius;
+    return o;
+  }
+
+  // Points under each link of a straight chain of n links of length a (joint
+  // i at (i + 1/2) a): `per_link` along it, `depth` below the joint line,
+  // at z = +-w.
+  CollisionSurface palm_points(const int n, const double a, const int per_link, const double depth,
+                               const double w)
+  {
+    std::vector<int>             links;
+    std::vector<Eigen::Vector3d> offsets;
+    for (int b = 0; b < n; ++b)
+      for (int s = 0; s < per_link; ++s)
+        for (const double z : {-w, w})
+          {
+            links.push_back(b);
+            offsets.emplace_back(a * (s + 0.5) / per_link, -depth, z);
+          }
+    return CollisionSurface(links, {{0.0, offsets}}, n);
+  }
+} // namespace
+
+TEST_CASE("a joint bent onto a table: the penalty model's closed form and the exact contact's limit")
+{
+  const double a = 0.1, l = a / 2, k = 0.1, tau = -0.08, h = 0.02, k_c = 1e5;
+  ChainModel   model = uniform_finger(1, a, {1.0, 1.0, k}, {0.0, 0.0, tau});
+  model.set_collision_surface(CollisionSurface({0}, {{0.0, {Eigen::Vector3d(l, 0, 0)}}}, 1));
+  EquilibriumSettings settings;
+  settings.contact_stiffness = k_c;
+  ChainEquilibrium solver(model, settings);
+  const Equilibrium e = solver.solve(ChainLoad{1.0, {}, {plane(-h)}});
+  REQUIRE(e.converged);
+
+  // k phi - tau + k_c l cos(phi) (l sin(phi) + h) = 0 by bisection between
+  // the free angle tau / k (negative) and the angle that reaches the table.
+  const auto f = [&](double phi) { return k * phi - tau + k_c * l * std::cos(phi) * (l * std::sin(phi) + h); };
+  double     low = tau / k, high = -std::asin(h / l);
+  for (int i = 0; i < 200; ++i)
+    (f(0.5 * (low + high)) < 0 ? low : high) = 0.5 * (low + high);
+  const double phi = 0.5 * (low + high);
+  CHECK(e.angles[2] == Approx(phi).epsilon(1e-9));
+  const double force = -k_c * (l * std::sin(phi) + h);
+  const auto   wrench = solver.contact().obstacle_wrenches();
+  REQUIRE(wrench.size() == 1);
+  CHECK(wrench[0].force[1] == Approx(-force).epsilon(1e-8)); // the table is pushed down
+  CHECK(std::abs(wrench[0].force[0]) < 1e-12);
+
+  // The exact (rigid) contact: the tip on the table, F = (k phi* - tau) /
+  // (l cos phi*). The penalty is a spring k_c in series with the joint's
+  // stiffness at the tip, k / (l cos phi)^2: the force errs by about their
+  // ratio.
+  const double phi_exact = -std::asin(h / l);
+  const double exact     = (k * phi_exact - tau) / (l * std::cos(phi_exact));
+  const double ratio     = k / std::pow(l * std::cos(phi_exact), 2) / k_c;
+  CHECK(std::abs(force - exact) / exact < 2 * ratio);
+  CHECK(std::abs(force - exact) / exact > 0.1 * ratio); // the penalty is felt, and measured
+}
+
+TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangent = central differences")
+{
+  const int n = 4;
+  const double a = 0.02;
+  ChainModel model = uniform_finger(n, a, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
+  model.set_collision_surface(palm_points(n, a, 3, 0.004, 0.006));
+  for (const auto &obstacles : {std::vector{plane(-0.012)},
+                                std::vector{cylinder({0.05, -0.016, 0.0}, 0.008)}})
+    {
+      // Near the equilibrium, where the contact forces are those of the
+      // problem (far from it the penalty's are huge), turned out of plane;
+      // a soft penalty, so that the penetrations (~1 mm) dwarf the
+      // perturbation and the differences' steps.
+      EquilibriumSettings soft;
+      soft.contact_stiffness = 100.0;
+      ChainEquilibrium  solver(model, soft);
+      const Equilibrium e = solver.solve(ChainLoad{1e4, {}, obstacles});
+      REQUIRE(e.converged);
+      Eigen::VectorXd q = e.angles;
+      for (int i = 0; i < 3 * n; ++i)
+        q[i] += 2e-3 * std::sin(1.0 + i);
+      solver.residual(q);
+      const auto &touches = solver.contact().touches();
+      REQUIRE(touches.size() >= 2);
+      // No point within reach of the differences' step of the kink at g = 0.
+      for (const auto &t : touches)
+        REQUIRE(-t.gap > 1e-5);
+      const Eigen::VectorXd r = solver.residual(q);
+      const Eigen::VectorXd g = testing::energy_gradient(solver, q, 1e-6);
+      // Central differences err by h^2 |U'''| / 6 + eps |U| / h, ~1e-9 here.
+      CHECK((r - g).lpNorm<Eigen::Infinity>() < 1e-7 * r.lpNorm<Eigen::Infinity>());
+      const Eigen::MatrixXd H = solver.tangent(q);
+      const Eigen::MatrixXd D = testing::central_differences(solver, q, 1e-7);
+      CHECK((H - D).lpNorm<Eigen::Infinity>() < 1e-6 * H.lpNorm<Eigen::Infinity>());
+      // Without the curvature rows the cylinder's tangent would be off by
+      // about f / R per touching point: checked to be seen.
+      if (obstacles.front().shape == "cylinder")
+        {
+          Eigen::MatrixXd rows;
+          Eigen::VectorXd weights;
+          solver.contact().tangent_rows(solver.pose(), 3 * n, rows, weights);
+          CHECK(rows.rows() > static_cast<Eigen::Index>(touches.size()));
+        }
+      // The Woodbury step around the O(n) factor is the dense Newton step
+      // (both capped at 1.5 rad per angle).
+      const Eigen::VectorXd step  = solver.newton_step(q);
+      Eigen::VectorXd       dense = -H.llt().solve(r);
+      dense *= std::min(1.0, 1.5 / dense.lpNorm<Eigen::Infinity>());
+      CHECK((step - dense).lpNorm<Eigen::Infinity>() < 1e-9 * dense.lpNorm<Eigen::Infinity>());
+    }
+}
+
+TEST_CASE("a finger pressed on a table converges, pushes only where it penetrates, and the table "
+          "takes the joints' torque")
+{
+  const int    n = 6;
+  const double a = 0.015;
+  ChainModel   model = uniform_finger(n, a, {0.3, 0.2, 0.05}, {0.0, 0.0, -1e-7});
+  model.set_collision_surface(palm_points(n, a, 4, 0.003, 0.005));
+  ChainEquilibrium  solver(model);
+  const ChainLoad   load{3e4, {}, {plane(-0.012)}};
+  const Equilibrium e = solver.solve(load);
+  REQUIRE(e.converged);
+  CHECK(e.iterations < 20);
+  const auto &touches = solver.contact().touches();
+  REQUIRE(!touches.empty());
+  for (const auto &t : touches)
+    CHECK(t.force.y() > 0.0);
+  // Every other surface point stands above the table.
+  std::vector<Eigen::Vector3d> offsets;
+  model.collision_surface()->offsets_at(load.pressure, offsets);
+  for (int k = 0; k < model.collision_surface()->n_points(); ++k)
+    {
+      const int             b = model.collision_surface()->links()[k];
+      const Eigen::Vector3d x = solver.pose().joint_positions[b] + solver.pose().link_rotations[b] * offsets[k];
+      const bool touching = std::any_of(touches.begin(), touches.end(), [&](const auto &t) { return t.point == k; });
+      CHECK(touching == (x.y() < -0.012));
+    }
+  // Joint 1's moment balance: k phi_1 = J_p p + (moment of the contact forces about c_1)_z.
+  double moment = 0.0;
+  for (const auto &t : touches)
+    moment += (t.position - solver.pose().joint_positions[0]).cross(t.force).z();
+  CHECK(0.05 * e.angles[2] == Approx(-1e-7 * 3e4 + moment).epsilon(1e-8));
+  // The penetration the penalty leaves: |f| / k_c per point.
+  CHECK(solver.contact().max_penetration() == Approx(touches.front().force.norm() / 1e5).epsilon(1.0));
+}
+
+TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer surface nodes; errors")
+{
+  const CollisionSurface surface({0, 1}, {{0.0, {{0, 0, 0}, {1, 0, 0}}}, {1e4, {{0, 2, 0}, {1, 4, 0}}}}, 2);
+  std::vector<Eigen::Vector3d> offsets;
+  surface.offsets_at(2.5e3, offsets);
+  CHECK(offsets[0].y() == Approx(0.5));
+  CHECK(offsets[1].y() == Approx(1.0));
+  surface.offsets_at(3e4, offsets);
+  CHECK(offsets[1].y() == Approx(4.0));
+  CHECK(surface.link_begin() == std::vector<int>{0, 1, 2});
+  CHECK(surface.sphere_radius(1) == Approx(4.0));
+  CHECK_THROWS_AS(CollisionSurface({1, 0}, {{0.0, {{0, 0, 0}, {0, 0, 0}}}}, 2), std::invalid_argument);
+  CHECK_THROWS_AS(CollisionSurface({0}, {{1.0, {{0, 0, 0}}}}, 1), std::invalid_argument);
+
+  // A solid box of nx x ny x nz hexahedra has (nx+1)(ny+1)(nz+1) -
+  // (nx-1)(ny-1)(nz-1) boundary vertices, less the (ny+1)(nz+1) of the base
+  // face; a hollow one adds none (its cavity faces are left out).
+  for (const bool tetrahedra : {false, true})
+    {
+      testing::BoxMeshSpec spec;
+      spec.nx = 6, spec.ny = 4, spec.nz = 4, spec.tetrahedra = tetrahedra;
+      const auto solid = outer_surface_nodes(testing::box_mesh(spec));
+      CHECK(solid.size() == std::size_t(7 * 5 * 5 - 5 * 3 * 3 - 5 * 5));
+    }
+
+  const int    n     = 2;
+  ChainModel   model = uniform_finger(n, 0.02, {0.3, 0.2, 0.1});
+  auto with_friction = plane(-0.01);
+  with_friction.friction = 0.3;
+  ChainEquilibrium solver(model);
+  CHECK_THROWS_WITH(solver.solve(ChainLoad{0.0, {}, {plane(-0.01)}}),
+                    Catch::Contains("no collision surface for obstacle 'table'"));
+  model.set_collision_surface(palm_points(n, 0.02, 2, 0.003, 0.005));
+  ChainEquilibrium frictional(model);
+  CHECK_THROWS_WITH(frictional.solve(ChainLoad{0.0, {}, {with_friction}}),
+                    Catch::Contains("obstacle 'table' has friction") && Catch::Contains("frictionless"));
+}
