@@ -1,5 +1,5 @@
 // Speed of the chain tier: one equilibrium of a 9-joint finger from
-// rest, a sweep of 100 pressures with warm starts, a 5-finger hand (45
+// rest (free, and in contact with a table and a cylinder), a sweep of 100 pressures with warm starts, a 5-finger hand (45
 // joints), and the heap memory of one finger (model + solver workspace).
 // The paper's SOFA chain took about 6 ms per finger (Sec. V).
 // Run: chain_benchmark --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
@@ -10,6 +10,8 @@
 
 #include <malloc.h>
 
+#include <algorithm>
+#include <string>
 #include <memory>
 #include <stdexcept>
 
@@ -73,6 +75,57 @@ namespace
   // A contact-like force at the fingertip, in world axes.
   ChainLoad load(double pressure) { return {pressure, {{{n_joints * a, 0.0, 0.0}, {0.0, 0.3, 0.05}}}}; }
 
+  // The skin of a 90 x 12 x 16 mm box finger (palm 2 mm below the joints),
+  // a point every 7.5 mm along and 4 mm across, carried rigidly by the links:
+  // about the 217 surface vertices of P10's default mesh.
+  CollisionSurface box_skin(const ChainModel &model)
+  {
+    std::vector<std::pair<int, Eigen::Vector3d>> points;
+    const auto add = [&](const Eigen::Vector3d &X) {
+      const int b = model.chain().link_of(X);
+      if (b >= 0)
+        points.emplace_back(b, X - model.chain().joint_centre(b));
+    };
+    for (int i = 1; i <= 12; ++i)
+      for (int j = 0; j <= 3; ++j)
+        for (int k = 0; k <= 4; ++k)
+          if (j == 0 || j == 3 || k == 0 || k == 4 || i == 12)
+            add({0.0075 * i, -0.002 + 0.004 * j, -0.008 + 0.004 * k});
+    std::sort(points.begin(), points.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
+    std::vector<int>             links;
+    std::vector<Eigen::Vector3d> offsets;
+    for (const auto &[link, offset] : points)
+      {
+        links.push_back(link);
+        offsets.push_back(offset);
+      }
+    return CollisionSurface(links, {{0.0, offsets}}, model.chain().n_joints());
+  }
+
+  ChainModel finger_with_skin()
+  {
+    ChainModel model = finger_as_reduced();
+    model.set_collision_surface(box_skin(model));
+    return model;
+  }
+
+  softchain::data::ObstacleRecord obstacle(const std::string &shape, const Eigen::Vector3d &at)
+  {
+    softchain::data::ObstacleRecord o;
+    o.name      = shape;
+    o.shape     = shape;
+    o.position  = {at.x(), at.y(), at.z()};
+    o.direction = shape == "plane" ? softchain::data::Point3{0, -1, 0} : softchain::data::Point3{0, 0, 1};
+    o.radius    = shape == "cylinder" ? 0.01 : 0.0;
+    return o;
+  }
+
+  // This finger bends towards +y: the tip pressed on a table 10 mm above
+  // its upper side; the middle wrapped round a 10 mm cylinder 4 mm above it
+  // (P10's contact samples, on this finger).
+  ChainLoad on_table(double pressure) { return {pressure, {}, {obstacle("plane", {0, 0.02, 0})}}; }
+  ChainLoad on_cylinder(double pressure) { return {pressure, {}, {obstacle("cylinder", {0.05, 0.024, 0})}}; }
+
   void require(const Equilibrium &e)
   {
     if (!e.converged)
@@ -112,6 +165,10 @@ BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_twist_axes, finger_w
 // And with links shaped by the pressure: the reduction's default chain.
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_as_reduced, finger_as_reduced(), ChainLoad{0.5 * p_max, {}});
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_as_reduced, finger_as_reduced(), load(0.5 * p_max));
+// Contact (ChainContact): the reduced finger's skin pressed on a table and
+// wrapped round a cylinder at p_max / 2.
+BENCHMARK_CAPTURE(equilibrium_from_rest, blocked_on_table, finger_with_skin(), on_table(0.5 * p_max));
+BENCHMARK_CAPTURE(equilibrium_from_rest, grasp_of_cylinder, finger_with_skin(), on_cylinder(0.5 * p_max));
 
 // 100 pressures 0..p_max with the tip force, each from the previous pose.
 static void pressure_sweep_100_warm_start(benchmark::State &state)

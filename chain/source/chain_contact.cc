@@ -11,6 +11,7 @@ namespace softchain::chain
                          const std::vector<data::ObstacleRecord> &obstacles, const double stiffness)
   {
     obstacles_.clear();
+    motions_.clear();
     touches_.clear();
     surface_   = surface;
     stiffness_ = stiffness;
@@ -28,40 +29,37 @@ namespace softchain::chain
                                       std::to_string(record.friction) +
                                       "; the chain's contact is frictionless");
         obstacles_.emplace_back(record);
+        motions_.push_back(obstacles_.back().motion());
       }
     surface->offsets_at(pressure, offsets_);
   }
 
-  // Link by link, so that the touches come sorted by link; a link whose
-  // bounding sphere lies outside an obstacle (g(centre) > radius, g being
-  // 1-Lipschitz) has no point inside it.
+  // Cluster by cluster (CollisionSurface), so that the touches come sorted
+  // by link; a cluster whose bounding sphere lies outside an obstacle
+  // (g(centre) > radius, g being 1-Lipschitz) has no point inside it.
   double ChainContact::update(const ChainPose &pose)
   {
     touches_.clear();
     double energy = 0.0;
     if (obstacles_.empty())
       return energy;
-    const std::vector<int> &begin = surface_->link_begin();
-    for (int b = 0; b + 1 < static_cast<int>(begin.size()); ++b)
+    for (const CollisionSurface::Cluster &cluster : surface_->clusters())
       {
-        if (begin[b] == begin[b + 1])
-          continue;
-        const Eigen::Matrix3d &R = pose.link_rotations[b];
-        const Eigen::Vector3d &c = pose.joint_positions[b];
-        const Eigen::Vector3d  centre = c + R * surface_->sphere_centre(b);
+        const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
+        const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
+        const Eigen::Vector3d  centre = c + R * cluster.centre;
         for (std::size_t o = 0; o < obstacles_.size(); ++o)
           {
             const geometry::Obstacle &obstacle = obstacles_[o];
-            const Eigen::Vector3d     motion   = obstacle.motion();
-            if (obstacle.body->distance(centre, motion).gap > surface_->sphere_radius(b))
+            if (obstacle.body->gap(centre, motions_[o]) > cluster.radius)
               continue;
-            for (int k = begin[b]; k < begin[b + 1]; ++k)
+            for (int k = cluster.begin; k < cluster.end; ++k)
               {
-                const Eigen::Vector3d          x = c + R * offsets_[k];
-                const geometry::SignedDistance d = obstacle.body->distance(x, motion);
-                if (!(d.gap < 0.0))
+                const Eigen::Vector3d x = c + R * offsets_[k];
+                if (!(obstacle.body->gap(x, motions_[o]) < 0.0))
                   continue;
-                touches_.push_back({b, k, static_cast<int>(o), x, d.normal,
+                const geometry::SignedDistance d = obstacle.body->distance(x, motions_[o]);
+                touches_.push_back({cluster.link, k, static_cast<int>(o), x, d.normal,
                                     -stiffness_ * d.gap * d.normal, d.gap, d.hessian});
                 energy += 0.5 * stiffness_ * d.gap * d.gap;
               }

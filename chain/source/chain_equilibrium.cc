@@ -174,28 +174,87 @@ namespace softchain::chain
   void ChainEquilibrium::newton_direction()
   {
     shifted_ = false;
-    for (double shift = 0.0; !tangent_.factor(shift); shifted_ = true)
-      shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
-    tangent_.solve(residual_, direction_);
-    direction_ *= -1.0;
-    if (!contact_.touches().empty())
+    if (contact_.touches().empty())
       {
-        contact_.tangent_rows(pose_, chain_.n_angles(), contact_rows_, contact_weights_);
-        const Eigen::Index r = contact_rows_.rows();
-        Eigen::MatrixXd    Y(chain_.n_angles(), r);
-        Eigen::VectorXd    column(chain_.n_angles());
-        for (Eigen::Index i = 0; i < r; ++i)
-          {
-            tangent_.solve(contact_rows_.row(i).transpose(), column);
-            Y.col(i) = column;
-          }
-        const Eigen::MatrixXd WV = contact_weights_.asDiagonal() * contact_rows_;
-        const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(r, r) + WV * Y;
-        direction_ -= Y * S.partialPivLu().solve(WV * direction_);
+        for (double shift = 0.0; !tangent_.factor(shift); shifted_ = true)
+          shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
+        tangent_.solve(residual_, direction_);
+        direction_ *= -1.0;
       }
+    else
+      contact_direction();
     const double big = direction_.lpNorm<Eigen::Infinity>();
     if (big > settings_.max_step_angle)
       direction_ *= settings_.max_step_angle / big;
+  }
+
+  // With touching points, the tangent is H + V^T W V. Where H is positive
+  // definite (the usual case), by Woodbury around its O(n) factor; if the
+  // round obstacles' curvature rows (negative weights) make the step no
+  // descent direction, again without them (then H + V^T W V is positive
+  // definite). Where H alone is not (a contact force that would buckle the
+  // free finger, or the deep penetrations of the first iterates), the dense
+  // tangent: whole, without the curvature rows, or shifted until positive
+  // definite.
+  void ChainEquilibrium::contact_direction()
+  {
+    contact_.tangent_rows(pose_, chain_.n_angles(), contact_rows_, contact_weights_);
+    if (tangent_.factor(0.0))
+      {
+        woodbury_direction();
+        if (residual_.dot(direction_) < 0.0 || contact_weights_.minCoeff() >= 0.0)
+          return;
+        without_curvature_rows();
+        woodbury_direction();
+        return;
+      }
+    Eigen::MatrixXd dense = tangent_.dense();
+    Eigen::LLT<Eigen::MatrixXd> factor(dense + contact_rows_.transpose() * contact_weights_.asDiagonal() * contact_rows_);
+    if (factor.info() != Eigen::Success)
+      {
+        without_curvature_rows();
+        dense += contact_rows_.transpose() * contact_weights_.asDiagonal() * contact_rows_;
+        const double scale = dense.diagonal().cwiseAbs().maxCoeff();
+        for (double shift = 0.0; factor.compute(dense).info() != Eigen::Success; shifted_ = true)
+          {
+            const double more = shift == 0.0 ? 1e-8 * scale : 9.0 * shift;
+            dense.diagonal().array() += more;
+            shift += more;
+          }
+      }
+    direction_ = -factor.solve(residual_);
+  }
+
+  // direction_ = -(H + V^T W V)^-1 r from H's factor (header).
+  void ChainEquilibrium::woodbury_direction()
+  {
+    tangent_.solve(residual_, direction_);
+    direction_ *= -1.0;
+    const Eigen::Index r = contact_rows_.rows();
+    Eigen::MatrixXd    Y(chain_.n_angles(), r);
+    Eigen::VectorXd    column(chain_.n_angles());
+    for (Eigen::Index i = 0; i < r; ++i)
+      {
+        tangent_.solve(contact_rows_.row(i).transpose(), column);
+        Y.col(i) = column;
+      }
+    const Eigen::MatrixXd WV = contact_weights_.asDiagonal() * contact_rows_;
+    const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(r, r) + WV * Y;
+    direction_ -= Y * S.partialPivLu().solve(WV * direction_);
+  }
+
+  // Keeps the rows of non-negative weight (the normals).
+  void ChainEquilibrium::without_curvature_rows()
+  {
+    Eigen::Index kept = 0;
+    for (Eigen::Index i = 0; i < contact_rows_.rows(); ++i)
+      if (contact_weights_[i] >= 0.0)
+        {
+          contact_rows_.row(kept)  = contact_rows_.row(i);
+          contact_weights_[kept++] = contact_weights_[i];
+        }
+    contact_rows_.conservativeResize(kept, Eigen::NoChange);
+    contact_weights_.conservativeResize(kept);
   }
 
   // Backtracking until U decreases enough (Armijo); `slack` admits the
@@ -265,7 +324,50 @@ namespace softchain::chain
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load)
   {
     set_load(load);
-    return iterate(pressure_torque_.cwiseQuotient(stiffness_));
+    const Eigen::VectorXd free = pressure_torque_.cwiseQuotient(stiffness_);
+    if (contact_.empty())
+      return iterate(free);
+    // A stiff penalty met from outside makes the line search halve many
+    // steps (the first Newton steps know no contact yet); with one 100
+    // times softer the finger finds its contacts in a few, then the stiff
+    // one starts within 1 % of the answer's penetrations.
+    const Eigen::VectorXd start = before_first_contact(free);
+    contact_.set_stiffness(1e-2 * settings_.contact_stiffness);
+    const Equilibrium soft = iterate(start);
+    contact_.set_stiffness(settings_.contact_stiffness);
+    Equilibrium stiff = iterate(soft.converged ? soft.angles : start);
+    stiff.iterations += soft.iterations;
+    return stiff;
+  }
+
+  // The free pose may lie deep inside an obstacle, where the nearest surface
+  // can push the finger out on the wrong side (through a cylinder it should
+  // wrap), or beyond it (a finger curled around it). Newton starts instead
+  // from t q_free with the smallest t in [0, 1] at which a surface point
+  // penetrates, less 2^-11: the path of the pressure's shape from rest,
+  // scanned in eighths and then bisected, stopped at the first touch; the
+  // line search lets the contact build up from there. An obstacle that the
+  // finger at rest already penetrates leaves the free start.
+  Eigen::VectorXd ChainEquilibrium::before_first_contact(const Eigen::VectorXd &free)
+  {
+    const auto penetrates = [&](double t) {
+      chain_.update_pose(t * free, pose_);
+      contact_.update(pose_);
+      return !contact_.touches().empty();
+    };
+    if (penetrates(0.0))
+      return free;
+    double outside = 0.0, inside = 0.125;
+    while (inside <= 1.0 && !penetrates(inside))
+      {
+        outside = inside;
+        inside += 0.125;
+      }
+    if (inside > 1.0)
+      return free;
+    for (int i = 0; i < 8; ++i)
+      (penetrates(0.5 * (outside + inside)) ? inside : outside) = 0.5 * (outside + inside);
+    return outside * free;
   }
 
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load, const Eigen::VectorXd &start)
@@ -292,6 +394,7 @@ namespace softchain::chain
             prepare_tangent();
             newton_direction();
             ++result.iterations;
+            if (getenv("DBG")) fprintf(stderr, "it %d res %.3e touches %zu energy %.6e shifted %d slope %.3e |d| %.3e\n", result.iterations, relative_residual(), contact_.touches().size(), energy_, (int)shifted_, residual_.dot(direction_), direction_.lpNorm<Eigen::Infinity>());
             if (!line_search(result.angles))
               result.failure = "line search found no decrease of the energy";
           }

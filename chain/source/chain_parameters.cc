@@ -27,8 +27,12 @@ namespace softchain::chain
                       "a joint axis whose k is NaN or not positive in the CSV (no usable sample, "
                       "e.g. a joint in the solid base fill, or a torque opposite to the "
                       "rotation): rigid (held, k = 1e6 x the largest) or error");
-      section.declare("Validation roles", "validation, pressure",
-                      "roles of the database samples compared with the chain");
+      section.declare("Validation roles", "validation, pressure, contact",
+                      "roles of the database samples compared with the chain (contact: the "
+                      "finger pressed on obstacles, each compared in force too)");
+      section.declare("Contact stiffness", "1e5",
+                      "N/m, the penalty per point of the collision surface: a point that "
+                      "carries f penetrates by f / stiffness");
       section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");
       section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
       section.declare("Maximum Newton iterations", "50", "per equilibrium");
@@ -65,6 +69,8 @@ namespace softchain::chain
     section.require(p.baseline_youngs_modulus > 0, "Baseline Young's modulus", "must be positive");
     p.newton.tolerance = section.get_double("Newton tolerance");
     section.require(p.newton.tolerance > 0, "Newton tolerance", "must be positive");
+    p.newton.contact_stiffness = section.get_double("Contact stiffness");
+    section.require(p.newton.contact_stiffness > 0, "Contact stiffness", "must be positive");
     p.newton.max_iterations = section.get_integer("Maximum Newton iterations");
     section.require(p.newton.max_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
     return p;

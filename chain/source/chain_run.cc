@@ -2,6 +2,7 @@
 #include <softchain/chain/chain_parameters.h>
 #include <softchain/chain/chain_run.h>
 #include <softchain/chain/chain_validation.h>
+#include <softchain/chain/finger_collision_surface.h>
 #include <softchain/chain/mjcf_export.h>
 #include <softchain/chain/mujoco_tip_distances.h>
 #include <softchain/chain/protocol_plot.h>
@@ -122,6 +123,42 @@ namespace softchain::chain
       compare_with_mujoco(model, path, options.pressure, box.second.x() - box.first.x(), settings);
     }
 
+    // The FEM's outer surface on every model's links: shaped by the pressure
+    // where the links are, rigid otherwise (the baseline). Only if the
+    // database holds contact samples.
+    void add_collision_surfaces(std::vector<ChainModel> &models, const data::ActuationDatabase &database,
+                                const EquilibriumSettings &settings)
+    {
+      const auto ids = database.sample_ids();
+      if (std::none_of(ids.begin(), ids.end(), [&](const std::string &id) {
+            return !database.read_sample(id).actuation.obstacles.empty();
+          }))
+        return;
+      for (ChainModel &model : models)
+        model.set_collision_surface(model.has_link_geometry()
+                                      ? pressure_shaped_collision_surface(model, database, settings)
+                                      : rigid_collision_surface(model, database.mesh()));
+    }
+
+    // Blocked force and grasp per model, if there are contact samples.
+    void report_contact(const ChainValidation &validation, const std::string &file)
+    {
+      const data::CsvTable summary = validation.grasp_summary_table();
+      if (summary.n_rows() == 0)
+        return;
+      summary.write(file);
+      const auto precision = std::cout.precision(3);
+      for (std::size_t r = 0; r < summary.n_rows(); ++r)
+        std::cout << "chain: " << summary.text(r, "model") << " in contact: blocked force error "
+                  << summary.number(r, "blocked_force_error_percent") << " %, grasp force error "
+                  << summary.number(r, "grasp_force_error_percent") << " %, tip "
+                  << summary.number(r, "tip_error_percent_L") << " % of L and "
+                  << summary.number(r, "orientation_error_deg") << " deg (max over "
+                  << summary.text(r, "n_samples") << " samples, " << summary.text(r, "n_failed")
+                  << " failed); median solve " << summary.number(r, "median_solve_time_us") << " us\n";
+      std::cout.precision(precision);
+    }
+
     void report(const ChainValidation &validation, const std::string &directory)
     {
       const data::CsvTable summary   = validation.summary_table();
@@ -160,6 +197,7 @@ namespace softchain::chain
       validation.per_sample_table().write(files.validation);
       validation.summary_table().write(files.validation_summary);
       validation.pose_table().write(files.chain_poses);
+      report_contact(validation, files.grasp_summary);
       if (!ValidationPlot(directory, names).draw())
         std::cout << "chain: gnuplot missing or failed, validation.png not drawn (script validation.gp)\n";
       report(validation, directory);
@@ -227,6 +265,7 @@ namespace softchain::chain
                                .read_model(selected.name(), selected.chain().tip(), p.stiffness_column,
                                            p.in_pressure, p.rigid_where_missing, false);
     models.push_back(baseline_of(plain, mesh, p.baseline_youngs_modulus));
+    add_collision_surfaces(models, database, p.newton);
     const int failed = validate(models, validation, p, files);
     compare_protocol(models, database, p, files);
     if (export_mjcf)

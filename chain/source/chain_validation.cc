@@ -1,5 +1,6 @@
 #include <softchain/chain/chain_validation.h>
 #include <softchain/chain/angle_units.h>
+#include <softchain/data/statistics.h>
 #include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
@@ -15,10 +16,27 @@ namespace softchain::chain
 
     ChainLoad load_of(const data::Actuation &actuation)
     {
-      ChainLoad load{actuation.pressure, {}};
+      ChainLoad load{actuation.pressure, {}, actuation.obstacles};
       for (const data::PointForce &f : actuation.point_forces)
         load.point_loads.push_back({data::vector_of(f.point), data::vector_of(f.force)});
       return load;
+    }
+
+    // The role a sample is reported under: a contact sample's by its obstacle.
+    std::string reported_role(const data::Actuation &actuation)
+    {
+      if (actuation.role != "contact" || actuation.obstacles.empty())
+        return actuation.role;
+      return actuation.obstacles.front().shape == "plane" ? "blocked force" : "grasp";
+    }
+
+    // Sum of the forces the obstacles receive.
+    Eigen::Vector3d total_force(const std::vector<data::ObstacleWrench> &wrenches)
+    {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (const data::ObstacleWrench &w : wrenches)
+        sum += data::vector_of(w.force);
+      return sum;
     }
 
     double force_norm(const ChainLoad &load)
@@ -70,8 +88,11 @@ namespace softchain::chain
         const std::string       &role   = sample.actuation.role;
         if (!sample.converged() || std::find(roles.begin(), roles.end(), role) == roles.end())
           continue;
-        samples_.push_back({id, role, load_of(sample.actuation),
-                            fit.fit(data::select_nodes(sample.x, mesh.tip_nodes))});
+        FemSample fem{id, reported_role(sample.actuation), load_of(sample.actuation),
+                      fit.fit(data::select_nodes(sample.x, mesh.tip_nodes))};
+        if (!sample.actuation.obstacles.empty())
+          fem.contact_force = total_force(sample.obstacle_wrenches);
+        samples_.push_back(fem);
       }
     // Grouped by role, then by increasing load: the order of the table and plot.
     std::stable_sort(samples_.begin(), samples_.end(), [](const FemSample &a, const FemSample &b) {
@@ -100,6 +121,7 @@ namespace softchain::chain
         r.converged  = e.converged;
         r.failure    = e.failure;
         r.solve_time = elapsed.count();
+        r.fem_contact_force = s.contact_force;
         if (e.converged)
           {
             const ChainPose &pose = solver.pose();
@@ -111,6 +133,8 @@ namespace softchain::chain
             r.joint_positions = pose.joint_positions;
             r.tip_rotation_angle =
               data::rotation_angle_between(Eigen::Matrix3d::Identity(), pose.tip_rotation);
+            if (r.contact())
+              r.contact_force = total_force(solver.contact().obstacle_wrenches());
           }
         records_.push_back(r);
       }
@@ -128,7 +152,8 @@ namespace softchain::chain
     CsvTable table({"sample_index", "sample", "role", "pressure", "force_norm", "model",
                     "tip_error_mm", "tip_error_percent_L", "orientation_error_deg",
                     "chain_iterations", "chain_status", "chain_tip_x_mm", "chain_tip_y_mm",
-                    "chain_tip_z_mm", "chain_tip_rotation_angle_deg", "solve_time_us"});
+                    "chain_tip_z_mm", "chain_tip_rotation_angle_deg", "solve_time_us",
+                    "contact_force_N", "fem_contact_force_N", "contact_force_error_percent"});
     for (std::size_t i = 0; i < records_.size(); ++i)
       {
         const ValidationRecord &r = records_[i];
@@ -143,7 +168,51 @@ namespace softchain::chain
                        CsvTable::cell(1e3 * r.tip_position.y()),
                        CsvTable::cell(1e3 * r.tip_position.z()),
                        CsvTable::cell(degrees(r.tip_rotation_angle)),
-                       CsvTable::cell(1e6 * r.solve_time)});
+                       CsvTable::cell(1e6 * r.solve_time), CsvTable::cell(r.contact_force.norm()),
+                       CsvTable::cell(r.fem_contact_force.norm()),
+                       CsvTable::cell(r.contact_force_error_percent())});
+      }
+    return table;
+  }
+
+  double ValidationRecord::contact_force_error_percent() const
+  {
+    const double fem = fem_contact_force.norm();
+    return fem > 0.0 ? 100.0 * (contact_force.norm() - fem) / fem : NAN;
+  }
+
+  // NaN for no value: a model without samples of a kind.
+  CsvTable ChainValidation::grasp_summary_table() const
+  {
+    CsvTable table({"model", "n_samples", "n_failed", "blocked_force_error_percent",
+                    "grasp_force_error_percent", "tip_error_percent_L", "orientation_error_deg",
+                    "median_solve_time_us"});
+    std::vector<std::string> models;
+    for (const ValidationRecord &r : records_)
+      if (r.contact() && std::find(models.begin(), models.end(), r.model) == models.end())
+        models.push_back(r.model);
+    for (const std::string &model : models)
+      {
+        int                 n = 0, failed = 0;
+        double              blocked = NAN, grasp = NAN, tip = NAN, angle = NAN;
+        std::vector<double> times;
+        const auto larger = [](double &max, double value) {
+          if (std::isfinite(value))
+            max = std::isfinite(max) ? std::max(max, value) : value;
+        };
+        for (const ValidationRecord &r : records_)
+          if (r.model == model && r.contact())
+            {
+              ++n;
+              failed += r.converged ? 0 : 1;
+              times.push_back(1e6 * r.solve_time);
+              larger(r.role == "blocked force" ? blocked : grasp, std::abs(r.contact_force_error_percent()));
+              larger(tip, 100.0 * r.position_error / finger_length_);
+              larger(angle, degrees(r.orientation_error));
+            }
+        table.add_row({model, CsvTable::cell(n), CsvTable::cell(failed), CsvTable::cell(blocked),
+                       CsvTable::cell(grasp), CsvTable::cell(tip), CsvTable::cell(angle),
+                       CsvTable::cell(data::median(times))});
       }
     return table;
   }

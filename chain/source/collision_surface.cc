@@ -9,8 +9,6 @@ namespace softchain::chain
     : links_(std::move(links))
     , rows_(std::move(rows))
     , link_begin_(n_links + 1, 0)
-    , sphere_centres_(n_links, Eigen::Vector3d::Zero())
-    , sphere_radii_(n_links, 0.0)
   {
     if (rows_.empty() || rows_.front().pressure != 0.0)
       throw std::invalid_argument("CollisionSurface: the first row must be the rest surface (p = 0)");
@@ -23,17 +21,56 @@ namespace softchain::chain
       throw std::invalid_argument("CollisionSurface: points must be sorted by link, on links 0..n-1");
     for (int b = 0; b < n_links; ++b)
       link_begin_[b + 1] = static_cast<int>(std::upper_bound(links_.begin(), links_.end(), b) - links_.begin());
-    // Centre: the rest points' mean; radius: the farthest point at any row.
     for (int b = 0; b < n_links; ++b)
+      if (link_begin_[b] < link_begin_[b + 1])
+        split(b, link_begin_[b], link_begin_[b + 1]);
+  }
+
+  // Halves [begin, end) at the median of the rest offsets along their
+  // longest extent until a run has at most 8 points; its sphere: the rest
+  // points' mean as centre, the farthest point at any pressure as radius.
+  void CollisionSurface::split(const int link, const int begin, const int end)
+  {
+    const std::vector<Eigen::Vector3d> &rest = rows_.front().offsets;
+    if (end - begin > 8)
       {
-        const int begin = link_begin_[b], end = link_begin_[b + 1];
-        if (begin == end)
-          continue;
+        Eigen::Vector3d low = rest[begin], high = rest[begin];
         for (int k = begin; k < end; ++k)
-          sphere_centres_[b] += rows_.front().offsets[k] / (end - begin);
-        for (const Row &row : rows_)
-          for (int k = begin; k < end; ++k)
-            sphere_radii_[b] = std::max(sphere_radii_[b], (row.offsets[k] - sphere_centres_[b]).norm());
+          {
+            low  = low.cwiseMin(rest[k]);
+            high = high.cwiseMax(rest[k]);
+          }
+        Eigen::Index axis;
+        (high - low).maxCoeff(&axis);
+        std::vector<int> order(links_.size());
+        for (std::size_t k = 0; k < order.size(); ++k)
+          order[k] = static_cast<int>(k);
+        std::stable_sort(order.begin() + begin, order.begin() + end,
+                         [&](int a, int b) { return rest[a][axis] < rest[b][axis]; });
+        reorder(order);
+        const int middle = (begin + end) / 2;
+        split(link, begin, middle);
+        split(link, middle, end);
+        return;
+      }
+    Cluster cluster{link, begin, end, Eigen::Vector3d::Zero(), 0.0};
+    for (int k = begin; k < end; ++k)
+      cluster.centre += rest[k] / (end - begin);
+    for (const Row &row : rows_)
+      for (int k = begin; k < end; ++k)
+        cluster.radius = std::max(cluster.radius, (row.offsets[k] - cluster.centre).norm());
+    clusters_.push_back(cluster);
+  }
+
+  // Point k becomes point order[k]'s in every row.
+  void CollisionSurface::reorder(const std::vector<int> &order)
+  {
+    for (Row &row : rows_)
+      {
+        std::vector<Eigen::Vector3d> moved(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k)
+          moved[k] = row.offsets[order[k]];
+        row.offsets = std::move(moved);
       }
   }
 

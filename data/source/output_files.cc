@@ -40,6 +40,7 @@ namespace softchain::data
     , protocol_summary(directory + "/protocol_summary.csv")
     , protocol_plot(directory + "/protocol_torques.png")
     , mjcf(directory + "/finger.xml")
+    , grasp_summary(directory + "/grasp_summary.csv")
   {}
 
   SimulateFileSet::SimulateFileSet(const std::string &output_directory, const std::string &scene)

@@ -45,6 +45,8 @@ namespace softchain::geometry
     return {(x - point).dot(normal), normal, Eigen::Matrix3d::Zero()};
   }
 
+  double PlaneObstacle::gap_at_rest(const Eigen::Vector3d &x) const { return (x - point).dot(normal); }
+
   SphereObstacle::SphereObstacle(const Eigen::Vector3d &center, const double radius)
     : center(center)
     , radius(radius)
@@ -56,6 +58,8 @@ namespace softchain::geometry
   {
     return radial(x - center, radius, Eigen::Matrix3d::Identity());
   }
+
+  double SphereObstacle::gap_at_rest(const Eigen::Vector3d &x) const { return (x - center).norm() - radius; }
 
   CylinderObstacle::CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis,
                                      const double radius)
@@ -72,6 +76,12 @@ namespace softchain::geometry
     return radial(P * (x - point), radius, P);
   }
 
+  double CylinderObstacle::gap_at_rest(const Eigen::Vector3d &x) const
+  {
+    const Eigen::Vector3d d = x - point;
+    return (d - d.dot(axis) * axis).norm() - radius;
+  }
+
   BoxObstacle::BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes,
                            const Eigen::Matrix3d &rotation)
     : center(center)
@@ -86,6 +96,17 @@ namespace softchain::geometry
   {
     const SignedDistance b = distance_in_box_frame(rotation.transpose() * (x - center));
     return {b.gap, rotation * b.normal, rotation * b.hessian * rotation.transpose()};
+  }
+
+  // Outside: the distance to the clamped point; inside: minus the depth
+  // below the nearest face.
+  double BoxObstacle::gap_at_rest(const Eigen::Vector3d &x) const
+  {
+    const Eigen::Vector3d y = rotation.transpose() * (x - center);
+    const Eigen::Vector3d d = y - y.cwiseMax(-half_sizes).cwiseMin(half_sizes);
+    if (d.norm() > 0)
+      return d.norm();
+    return -(half_sizes - y.cwiseAbs()).minCoeff();
   }
 
   SignedDistance BoxObstacle::distance_in_box_frame(const Eigen::Vector3d &y) const

@@ -193,7 +193,31 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer
   surface.offsets_at(3e4, offsets);
   CHECK(offsets[1].y() == Approx(4.0));
   CHECK(surface.link_begin() == std::vector<int>{0, 1, 2});
-  CHECK(surface.sphere_radius(1) == Approx(4.0));
+  REQUIRE(surface.clusters().size() == 2);
+  CHECK(surface.clusters()[1].radius == Approx(4.0));
+  // Twenty points on one link: clusters of at most eight that cover them,
+  // each sphere holding its points at every pressure.
+  std::vector<Eigen::Vector3d> rest, inflated;
+  for (int k = 0; k < 20; ++k)
+    {
+      rest.emplace_back(0.001 * k, 0.002 * (k % 3), 0.003 * (k % 2));
+      inflated.push_back(rest.back() + Eigen::Vector3d(0.0, 0.0005 * k, 0.0));
+    }
+  const CollisionSurface many(std::vector<int>(20, 0), {{0.0, rest}, {2e4, inflated}}, 1);
+  int covered = 0;
+  for (const auto &cluster : many.clusters())
+    {
+      CHECK(cluster.end - cluster.begin <= 8);
+      CHECK(cluster.begin == covered);
+      covered = cluster.end;
+      for (const double p : {0.0, 1e4, 2e4})
+        {
+          many.offsets_at(p, offsets);
+          for (int k = cluster.begin; k < cluster.end; ++k)
+            CHECK((offsets[k] - cluster.centre).norm() <= cluster.radius * (1 + 1e-12));
+        }
+    }
+  CHECK(covered == 20);
   CHECK_THROWS_AS(CollisionSurface({1, 0}, {{0.0, {{0, 0, 0}, {0, 0, 0}}}}, 2), std::invalid_argument);
   CHECK_THROWS_AS(CollisionSurface({0}, {{1.0, {{0, 0, 0}}}}, 1), std::invalid_argument);
 

@@ -94,6 +94,21 @@ TEST_CASE("a turned box is the unturned box seen in its own axes", "[geometry][c
     check_derivatives(turned, c + R * y);
 }
 
+TEST_CASE("the gap alone is the signed distance's gap, outside and inside every shape",
+          "[geometry][contact]")
+{
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vector3d(0, 0.6, 0.8)).toRotationMatrix();
+  const PlaneObstacle    plane(Vector3d(0.1, 0.2, 0.3), Vector3d(1, 2, 2));
+  const SphereObstacle   sphere(Vector3d(0.1, 0.2, 0.3), 0.4);
+  const CylinderObstacle cylinder(Vector3d(0.1, 0.2, 0.3), Vector3d(0, 1, 1), 0.4);
+  const BoxObstacle      box(Vector3d(0.1, 0.2, 0.3), Vector3d(0.3, 0.2, 0.5), R);
+  for (const RigidObstacle *o : std::vector<const RigidObstacle *>{&plane, &sphere, &cylinder, &box})
+    for (const Vector3d &x : {Vector3d(0.1, 0.25, 0.3), Vector3d(0.9, -0.4, 0.2), Vector3d(0.2, 0.2, 0.9),
+                              Vector3d(-0.5, 0.7, -0.6), Vector3d(0.15, 0.1, 0.35)})
+      CHECK(o->gap(x, Vector3d(0.01, 0.02, 0.03)) ==
+            Approx(o->distance(x, Vector3d(0.01, 0.02, 0.03)).gap).margin(1e-15));
+}
+
 TEST_CASE("obstacles refuse degenerate shapes", "[geometry][contact]")
 {
   CHECK_THROWS_AS(SphereObstacle(Vector3d::Zero(), 0.0), softchain::data::InputError);

@@ -33,6 +33,13 @@ namespace softchain::geometry
       return distance_at_rest(x - offset);
     }
     virtual SignedDistance distance_at_rest(const Eigen::Vector3d &x) const = 0;
+    // g alone (no normal or curvature): what a search for the points inside
+    // an obstacle needs for most of the points it tests.
+    double gap(const Eigen::Vector3d &x, const Eigen::Vector3d &offset = Eigen::Vector3d::Zero()) const
+    {
+      return gap_at_rest(x - offset);
+    }
+    virtual double gap_at_rest(const Eigen::Vector3d &x) const { return distance_at_rest(x).gap; }
     // "plane", "sphere", "cylinder" or "box".
     virtual std::string shape() const = 0;
   };
@@ -44,6 +51,7 @@ namespace softchain::geometry
   public:
     PlaneObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &normal);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_at_rest(const Eigen::Vector3d &x) const override;
     std::string    shape() const override { return "plane"; }
 
   private:
@@ -56,6 +64,7 @@ namespace softchain::geometry
   public:
     SphereObstacle(const Eigen::Vector3d &center, double radius);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_at_rest(const Eigen::Vector3d &x) const override;
     std::string    shape() const override { return "sphere"; }
 
   private:
@@ -71,6 +80,7 @@ namespace softchain::geometry
   public:
     CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis, double radius);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_at_rest(const Eigen::Vector3d &x) const override;
     std::string    shape() const override { return "cylinder"; }
 
   private:
@@ -91,6 +101,7 @@ namespace softchain::geometry
     BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes,
                 const Eigen::Matrix3d &rotation = Eigen::Matrix3d::Identity());
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_at_rest(const Eigen::Vector3d &x) const override;
     std::string    shape() const override { return "box"; }
 
   private:

@@ -60,6 +60,7 @@ namespace softchain::chain
     double update(const ChainPose &pose);
     const std::vector<Touch> &touches() const { return touches_; }
     double                    stiffness() const { return stiffness_; }
+    void                      set_stiffness(double stiffness) { stiffness_ = stiffness; }
 
     // The tangent's low-rank part at the last update, J^T k_c (n n^T + g H_g) J
     // = V^T diag(w) V: rows V (one per row, n_angles columns) and weights w.
@@ -80,6 +81,7 @@ namespace softchain::chain
 
     const CollisionSurface        *surface_ = nullptr;
     std::vector<geometry::Obstacle> obstacles_;
+    std::vector<Eigen::Vector3d>    motions_; // each obstacle's translation at the end of its motion
     std::vector<Eigen::Vector3d>    offsets_; // L_k(p)
     double                          stiffness_ = 0.0;
     std::vector<Touch>              touches_;

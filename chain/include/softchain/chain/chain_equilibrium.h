@@ -112,6 +112,7 @@ namespace softchain::chain
     };
 
     Equilibrium iterate(const Eigen::VectorXd &start);
+    Eigen::VectorXd before_first_contact(const Eigen::VectorXd &free);
     void   evaluate(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
     void   add_contact_tangent(Eigen::MatrixXd &dense) const;
@@ -120,6 +121,9 @@ namespace softchain::chain
     bool   converged() const;
     double relative_residual() const;
     void   newton_direction();
+    void   contact_direction();
+    void   woodbury_direction();
+    void   without_curvature_rows();
     bool   line_search(Eigen::VectorXd &q);
     std::string range_violation(const Eigen::VectorXd &q) const;
     std::string instability();

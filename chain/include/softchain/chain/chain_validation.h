@@ -7,6 +7,13 @@
 // the tip-face nodes and the chain's is its tip point and last link frame.
 // Summaries per model and sample role (and over all roles): max and mean.
 // Each record also keeps the chain's tip pose and the wall time of its solve.
+//
+// Contact samples (role "contact": the finger pressed on obstacles, each
+// obstacle at the end of its motion) are solved with the model's collision
+// surface (ChainContact) and compared in the force the obstacles receive too,
+// 100 (|F_chain| - |F_FEM|) / |F_FEM|. Their records take the role "blocked
+// force" where the obstacle is a plane (the tip pressed on a table, the
+// actuator's classic characterisation) and "grasp" for any other shape.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>
@@ -34,6 +41,13 @@ namespace softchain::chain
     double          tip_rotation_angle = NAN; // rad, of the last link frame from rest
     double          solve_time         = NAN; // s, wall time of this equilibrium from rest
     std::vector<Eigen::Vector3d> joint_positions; // c_i at equilibrium, m (empty if failed)
+    // Contact samples: the force the obstacles receive, N, world (NaN otherwise).
+    Eigen::Vector3d contact_force     = Eigen::Vector3d::Constant(NAN); // the chain's
+    Eigen::Vector3d fem_contact_force = Eigen::Vector3d::Constant(NAN); // the FEM's
+    bool            contact() const { return std::isfinite(fem_contact_force.x()); }
+    // 100 (|F_chain| - |F_FEM|) / |F_FEM|; NaN where the FEM's finger does
+    // not touch or the chain failed.
+    double          contact_force_error_percent() const;
   };
 
   class ChainValidation
@@ -51,6 +65,10 @@ namespace softchain::chain
     int                                  n_failed(const std::string &model) const;
     data::CsvTable                       per_sample_table() const;
     data::CsvTable                       summary_table() const;
+    // Per model over the contact samples (chain/grasp_summary.csv): the
+    // largest |force error| on blocked-force and on grasp samples, the
+    // largest tip errors, the median solve time.
+    data::CsvTable                       grasp_summary_table() const;
     // The FEM tip pose of every sample: position [mm] and the tip bending
     // angle about z, atan2(R_yx, R_xx) [deg] (negative: toward -y, the fabric
     // side), plus the total rotation angle [deg].
@@ -65,6 +83,7 @@ namespace softchain::chain
       std::string id, role;
       ChainLoad   load;
       data::TipPose tip;
+      Eigen::Vector3d contact_force = Eigen::Vector3d::Constant(NAN); // the FEM's, contact samples
     };
 
     std::vector<FemSample>        samples_;

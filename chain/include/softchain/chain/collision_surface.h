@@ -17,9 +17,12 @@
 // (p = 0) being the reference surface. Rigid links (the paper's, and the
 // beam-theory baseline) carry the reference surface at every pressure.
 //
-// Each link also has a bounding sphere of its points over all pressures
-// (centre and radius in its frame), which lets a contact search skip the
-// links far from an obstacle. The surface is built from a database by
+// Each link's points are split into clusters of at most eight neighbours
+// (halving the link's points along their longest extent, recursively), each
+// with a bounding sphere over all pressures (centre and radius in the link's
+// frame), which lets a contact search skip the clusters far from an
+// obstacle: a point is tested only where its cluster's sphere reaches into
+// the obstacle. The surface is built from a database by
 // finger_collision_surface.h.
 #include <Eigen/Core>
 
@@ -37,27 +40,38 @@ namespace softchain::chain
       std::vector<Eigen::Vector3d> offsets;        // L_k(p), m, in link frames
     };
 
+    // A run of points of one link with its bounding sphere.
+    struct Cluster
+    {
+      int             link = 0, begin = 0, end = 0; // points [begin, end)
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // in the link's frame
+      double          radius = 0.0;
+    };
+
     // Points sorted by link (`links[k]` the link of point k, 0-based, none on
     // the base); rows by increasing pressure, the first at 0. Throws
-    // std::invalid_argument otherwise.
+    // std::invalid_argument otherwise. The points are reordered within their
+    // link into clusters.
     CollisionSurface(std::vector<int> links, std::vector<Row> rows, int n_links);
 
     int                     n_points() const { return static_cast<int>(links_.size()); }
     const std::vector<int> &links() const { return links_; }
     // The first point of each link and one past its last (size n_links + 1).
     const std::vector<int> &link_begin() const { return link_begin_; }
+    // The clusters, by link.
+    const std::vector<Cluster> &clusters() const { return clusters_; }
     std::vector<double>     table_pressures() const;
     // L_k(p) of every point into `offsets` (sized n_points; no allocation).
     void offsets_at(double pressure, std::vector<Eigen::Vector3d> &offsets) const;
-    // Bounding sphere of link b's points over all pressures, in its frame.
-    const Eigen::Vector3d &sphere_centre(int link) const { return sphere_centres_[link]; }
-    double                 sphere_radius(int link) const { return sphere_radii_[link]; }
 
   private:
+    // Reorders the points [begin, end) into clusters of <= 8 and appends them.
+    void split(int link, int begin, int end);
+    void reorder(const std::vector<int> &order);
+
     std::vector<int>             links_;
     std::vector<Row>             rows_;
     std::vector<int>             link_begin_;
-    std::vector<Eigen::Vector3d> sphere_centres_;
-    std::vector<double>          sphere_radii_;
+    std::vector<Cluster>         clusters_;
   };
 } // namespace softchain::chain

@@ -63,6 +63,7 @@ namespace softchain::data
     std::string protocol_summary;   // protocol_summary.csv
     std::string protocol_plot;      // protocol_torques.png
     std::string mjcf;               // finger.xml (softchain chain --export-mjcf)
+    std::string grasp_summary;      // grasp_summary.csv: contact samples per model
   };
 
   // The files of `softchain simulate` in <output>/simulate, one scene's
