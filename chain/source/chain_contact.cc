@@ -80,39 +80,95 @@ namespace softchain::chain
         }
   }
 
-  // Per touch: the normal row with weight k_c, and each eigenvector e of
-  // H_g with eigenvalue mu != 0 (a round obstacle's 1/radius) with weight
+  // The normal row (weight k_c) if `normal`, and each eigenvector e of H_g
+  // with eigenvalue mu != 0 (a round obstacle's 1/radius) with weight
   // k_c g mu.
-  void ChainContact::tangent_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
-                                  Eigen::VectorXd &weights) const
+  void ChainContact::append_rows(const Touch &touch, const bool normal,
+                                 std::vector<std::pair<Eigen::Vector3d, double>> &directions) const
   {
-    std::vector<std::pair<Eigen::Vector3d, double>> directions; // (e, weight) per row
-    std::vector<int>                                touch_of;
-    for (std::size_t t = 0; t < touches_.size(); ++t)
-      {
-        const Touch &touch = touches_[t];
-        directions.emplace_back(touch.normal, stiffness_);
-        touch_of.push_back(static_cast<int>(t));
-        if (touch.curvature.isZero())
-          continue;
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-        eigen.computeDirect(touch.curvature);
-        const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
-        for (int i = 0; i < 3; ++i)
-          if (std::abs(eigen.eigenvalues()[i]) > 1e-9 * largest)
-            {
-              directions.emplace_back(eigen.eigenvectors().col(i),
-                                      stiffness_ * touch.gap * eigen.eigenvalues()[i]);
-              touch_of.push_back(static_cast<int>(t));
-            }
-      }
+    if (normal)
+      directions.emplace_back(touch.normal, stiffness_);
+    if (touch.curvature.isZero())
+      return;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(touch.curvature);
+    const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(eigen.eigenvalues()[i]) > 1e-9 * largest)
+        directions.emplace_back(eigen.eigenvectors().col(i), stiffness_ * touch.gap * eigen.eigenvalues()[i]);
+  }
+
+  void ChainContact::fill_rows(const ChainPose &pose,
+                               const std::vector<std::pair<Eigen::Vector3d, double>> &directions,
+                               const std::vector<int> &owner, const int n_angles, Eigen::MatrixXd &rows,
+                               Eigen::VectorXd &weights) const
+  {
     rows.resize(static_cast<Eigen::Index>(directions.size()), n_angles);
     weights.resize(static_cast<Eigen::Index>(directions.size()));
     for (std::size_t r = 0; r < directions.size(); ++r)
       {
-        jacobian_row(pose, touches_[touch_of[r]], directions[r].first, rows.row(r));
+        jacobian_row(pose, touches_[owner[r]], directions[r].first, rows.row(r));
         weights[r] = directions[r].second;
       }
+  }
+
+  void ChainContact::tangent_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
+                                  Eigen::VectorXd &weights) const
+  {
+    std::vector<std::pair<Eigen::Vector3d, double>> directions;
+    std::vector<int>                                owner;
+    for (std::size_t t = 0; t < touches_.size(); ++t)
+      {
+        append_rows(touches_[t], true, directions);
+        owner.resize(directions.size(), static_cast<int>(t));
+      }
+    fill_rows(pose, directions, owner, n_angles, rows, weights);
+  }
+
+  void ChainContact::curvature_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
+                                    Eigen::VectorXd &weights) const
+  {
+    std::vector<std::pair<Eigen::Vector3d, double>> directions;
+    std::vector<int>                                owner;
+    for (std::size_t t = 0; t < touches_.size(); ++t)
+      {
+        append_rows(touches_[t], false, directions);
+        owner.resize(directions.size(), static_cast<int>(t));
+      }
+    fill_rows(pose, directions, owner, n_angles, rows, weights);
+  }
+
+  void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near,
+                                Eigen::MatrixXd &normal_rows) const
+  {
+    near.clear();
+    for (const CollisionSurface::Cluster &cluster : surface_->clusters())
+      {
+        const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
+        const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
+        const Eigen::Vector3d  centre = c + R * cluster.centre;
+        for (std::size_t o = 0; o < obstacles_.size(); ++o)
+          {
+            const geometry::Obstacle &obstacle = obstacles_[o];
+            if (obstacle.body->gap(centre, motions_[o]) > cluster.radius + margin)
+              continue;
+            for (int k = cluster.begin; k < cluster.end; ++k)
+              {
+                const Eigen::Vector3d x = c + R * offsets_[k];
+                if (!(obstacle.body->gap(x, motions_[o]) < margin))
+                  continue;
+                const geometry::SignedDistance d = obstacle.body->distance(x, motions_[o]);
+                near.push_back({cluster.link, k, static_cast<int>(o), x, d.normal,
+                                d.gap < 0.0 ? Eigen::Vector3d(-stiffness_ * d.gap * d.normal)
+                                            : Eigen::Vector3d::Zero(),
+                                d.gap, d.hessian});
+              }
+          }
+      }
+    const int n_angles = static_cast<int>(3 * pose.joint_positions.size());
+    normal_rows.resize(static_cast<Eigen::Index>(near.size()), n_angles);
+    for (std::size_t i = 0; i < near.size(); ++i)
+      jacobian_row(pose, near[i], near[i].normal, normal_rows.row(i));
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

@@ -63,6 +63,7 @@ namespace softchain::chain
     std::stable_sort(loads_.begin(), loads_.end(),
                      [](const AttachedLoad &a, const AttachedLoad &b) { return a.link < b.link; });
     contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness);
+    contact_margin_ = 0.05 * (chain_.link_tip() - chain_.link_joint(0)).norm();
   }
 
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
@@ -174,7 +175,7 @@ namespace softchain::chain
   void ChainEquilibrium::newton_direction()
   {
     shifted_ = false;
-    if (contact_.touches().empty())
+    if (contact_.empty())
       {
         for (double shift = 0.0; !tangent_.factor(shift); shifted_ = true)
           shift = shift == 0.0 ? 1e-8 * stiffness_.maxCoeff() : 10.0 * shift;
@@ -188,77 +189,157 @@ namespace softchain::chain
       direction_ *= settings_.max_step_angle / big;
   }
 
-  // With touching points, the tangent is H + V^T W V. Where H is positive
-  // definite (the usual case), by Woodbury around its O(n) factor; if the
-  // round obstacles' curvature rows (negative weights) make the step no
-  // descent direction, again without them (then H + V^T W V is positive
-  // definite). Where H alone is not (a contact force that would buckle the
-  // free finger, or the deep penetrations of the first iterates), the dense
-  // tangent: whole, without the curvature rows, or shifted until positive
-  // definite.
+  // With obstacles, the step minimises the quadratic model of U in which
+  // every surface point near an obstacle (closer than 5 % of the chain's
+  // length; ChainContact::candidates) keeps its penalty, linearised:
+  //   m(d) = r_f^T d + 1/2 d^T (H + C) d + sum_c 1/2 k_c <-(g_c + v_c d)>^2,
+  // r_f the residual without the contact forces, H the tangent without the
+  // contact's rows, C the touching points' curvature rows, v_c = n_c^T J_c.
+  // Its minimiser is found by an active set (a semismooth Newton method on
+  // the model): A = {c : g_c + v_c d < 0}, d from
+  //   (H + C + k_c V_A^T V_A) d = -(r_f + k_c V_A^T g_A),
+  // until A repeats (at most 10 passes). So a step from outside an
+  // obstacle already stops at it, instead of diving in and being cut back
+  // by the line search. The rows are added by Woodbury around H's O(n)
+  // factor where H is positive definite, else to the dense tangent (shifted
+  // if need be). If the curvature rows (negative weights) leave no descent
+  // direction, the step is taken without them.
   void ChainEquilibrium::contact_direction()
   {
-    contact_.tangent_rows(pose_, chain_.n_angles(), contact_rows_, contact_weights_);
-    if (tangent_.factor(0.0))
+    contact_.candidates(pose_, contact_margin_, near_, near_rows_);
+    const double       k = contact_.stiffness();
+    const Eigen::Index m = static_cast<Eigen::Index>(near_.size());
+    Eigen::VectorXd    gaps(m);
+    Eigen::VectorXd    free_residual = residual_;
+    std::vector<char>  active(m);
+    for (Eigen::Index c = 0; c < m; ++c)
       {
-        woodbury_direction();
-        if (residual_.dot(direction_) < 0.0 || contact_weights_.minCoeff() >= 0.0)
-          return;
-        without_curvature_rows();
-        woodbury_direction();
+        gaps[c]   = near_[c].gap;
+        active[c] = gaps[c] < 0.0;
+        if (active[c])
+          free_residual -= k * gaps[c] * near_rows_.row(c).transpose();
+      }
+    contact_.curvature_rows(pose_, chain_.n_angles(), curvature_rows_, curvature_weights_);
+    const bool factored = tangent_.factor(0.0);
+    if (factored) // H^-1 r_f once; H^-1 of a row when it first enters A
+      {
+        solved_rows_.resize(chain_.n_angles(), m + curvature_rows_.rows());
+        solved_.assign(solved_rows_.cols(), 0);
+        solved_residual_.resize(chain_.n_angles());
+        tangent_.solve(free_residual, solved_residual_);
+      }
+    for (const bool curvature : {true, false})
+      {
+        for (int pass = 0; pass < 10; ++pass)
+          {
+            contact_step(active, gaps, free_residual, factored, curvature);
+            const Eigen::VectorXd predicted = gaps + near_rows_ * direction_;
+            bool                  same      = true;
+            for (Eigen::Index c = 0; c < m; ++c)
+              if ((predicted[c] < 0.0) != bool(active[c]))
+                {
+                  active[c] = predicted[c] < 0.0;
+                  same      = false;
+                }
+            if (same)
+              break;
+          }
+        if (residual_.dot(direction_) < 0.0 || curvature_rows_.rows() == 0)
+          break;
+      }
+    if (residual_.dot(direction_) < 0.0)
+      return;
+    // No descent direction from the model: the step of the touching points alone.
+    for (Eigen::Index c = 0; c < m; ++c)
+      active[c] = gaps[c] < 0.0;
+    contact_step(active, gaps, free_residual, factored, false);
+  }
+
+  // direction_ = -(H + C + k V_A^T V_A)^-1 (r_f + k V_A^T g_A) (above); by
+  // Woodbury from the rows solved with H's factor,
+  //   (H + V^T W V)^-1 b = x - Y (I + W V Y)^-1 W V x,   x = H^-1 b, Y = H^-1 V^T,
+  // while there are at most as many rows as angles, else (or where H is not
+  // positive definite) with the dense tangent, whose factorisation then
+  // costs less than the r x r system.
+  void ChainEquilibrium::contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
+                                      const Eigen::VectorXd &free_residual, const bool factored,
+                                      const bool curvature)
+  {
+    const double       k = contact_.stiffness();
+    const Eigen::Index m = static_cast<Eigen::Index>(active.size());
+    std::vector<Eigen::Index> rows; // into [near rows, curvature rows]
+    for (Eigen::Index c = 0; c < m; ++c)
+      if (active[c])
+        rows.push_back(c);
+    if (curvature)
+      for (Eigen::Index i = 0; i < curvature_rows_.rows(); ++i)
+        rows.push_back(m + i);
+    const auto r        = static_cast<Eigen::Index>(rows.size());
+    const bool woodbury = factored && r <= chain_.n_angles();
+    contact_rows_.resize(r, chain_.n_angles());
+    contact_weights_.resize(r);
+    Eigen::MatrixXd Y(chain_.n_angles(), woodbury ? r : 0);
+    Eigen::VectorXd b = free_residual;
+    Eigen::VectorXd x = woodbury ? solved_residual_ : Eigen::VectorXd();
+    for (Eigen::Index j = 0; j < r; ++j)
+      {
+        const Eigen::Index i = rows[j];
+        if (i < m)
+          contact_rows_.row(j) = near_rows_.row(i);
+        else
+          contact_rows_.row(j) = curvature_rows_.row(i - m);
+        contact_weights_[j] = i < m ? k : curvature_weights_[i - m];
+        if (i < m) // the model's force k g_c of a point in A
+          b += k * gaps[i] * near_rows_.row(i).transpose();
+        if (!woodbury)
+          continue;
+        if (!solved_[i])
+          {
+            Eigen::VectorXd column(chain_.n_angles());
+            tangent_.solve(contact_rows_.row(j).transpose(), column);
+            solved_rows_.col(i) = column;
+            solved_[i]          = 1;
+          }
+        Y.col(j) = solved_rows_.col(i);
+        if (i < m)
+          x += k * gaps[i] * solved_rows_.col(i);
+      }
+    if (!woodbury)
+      {
+        dense_solve(b);
         return;
       }
-    Eigen::MatrixXd dense = tangent_.dense();
-    Eigen::LLT<Eigen::MatrixXd> factor(dense + contact_rows_.transpose() * contact_weights_.asDiagonal() * contact_rows_);
-    if (factor.info() != Eigen::Success)
-      {
-        without_curvature_rows();
-        dense += contact_rows_.transpose() * contact_weights_.asDiagonal() * contact_rows_;
-        const double scale = dense.diagonal().cwiseAbs().maxCoeff();
-        for (double shift = 0.0; factor.compute(dense).info() != Eigen::Success; shifted_ = true)
-          {
-            const double more = shift == 0.0 ? 1e-8 * scale : 9.0 * shift;
-            dense.diagonal().array() += more;
-            shift += more;
-          }
-      }
-    direction_ = -factor.solve(residual_);
-  }
-
-  // direction_ = -(H + V^T W V)^-1 r from H's factor (header).
-  void ChainEquilibrium::woodbury_direction()
-  {
-    tangent_.solve(residual_, direction_);
-    direction_ *= -1.0;
-    const Eigen::Index r = contact_rows_.rows();
-    Eigen::MatrixXd    Y(chain_.n_angles(), r);
-    Eigen::VectorXd    column(chain_.n_angles());
-    for (Eigen::Index i = 0; i < r; ++i)
-      {
-        tangent_.solve(contact_rows_.row(i).transpose(), column);
-        Y.col(i) = column;
-      }
+    direction_ = -x;
+    if (r == 0)
+      return;
     const Eigen::MatrixXd WV = contact_weights_.asDiagonal() * contact_rows_;
     const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(r, r) + WV * Y;
-    direction_ -= Y * S.partialPivLu().solve(WV * direction_);
+    direction_ += Y * S.partialPivLu().solve(WV * x);
   }
 
-  // Keeps the rows of non-negative weight (the normals).
-  void ChainEquilibrium::without_curvature_rows()
+  // The same with the dense tangent, shifted until positive definite.
+  void ChainEquilibrium::dense_solve(const Eigen::VectorXd &b)
   {
-    Eigen::Index kept = 0;
-    for (Eigen::Index i = 0; i < contact_rows_.rows(); ++i)
-      if (contact_weights_[i] >= 0.0)
-        {
-          contact_rows_.row(kept)  = contact_rows_.row(i);
-          contact_weights_[kept++] = contact_weights_[i];
-        }
-    contact_rows_.conservativeResize(kept, Eigen::NoChange);
-    contact_weights_.conservativeResize(kept);
+    Eigen::MatrixXd dense = tangent_.dense();
+    dense += contact_rows_.transpose() * contact_weights_.asDiagonal() * contact_rows_;
+    const double                scale = dense.diagonal().cwiseAbs().maxCoeff();
+    Eigen::LLT<Eigen::MatrixXd> factor;
+    for (double shift = 0.0; factor.compute(dense).info() != Eigen::Success; shifted_ = true)
+      {
+        const double more = shift == 0.0 ? 1e-8 * scale : 9.0 * shift;
+        dense.diagonal().array() += more;
+        shift += more;
+      }
+    direction_ = -factor.solve(b);
   }
 
   // Backtracking until U decreases enough (Armijo); `slack` admits the
   // round-off of U itself (a few ulps of its largest term) near convergence.
+  // Each rejected step is replaced by the minimiser of the quadratic through
+  // U(0), U'(0) and U(step), kept within [step / 10, step / 2] (Nocedal and
+  // Wright, Numerical Optimization, Sec. 3.5): a step into an obstacle's
+  // stiff penalty is cut to the touch in one or two trials, not in ten
+  // halvings.
   bool ChainEquilibrium::line_search(Eigen::VectorXd &q)
   {
     line_start_                  = q; // no allocation after the first solve
@@ -267,12 +348,15 @@ namespace softchain::chain
     const double          slope  = residual_.dot(direction_);
     const double          slack  = 64.0 * std::numeric_limits<double>::epsilon() * energy_magnitude_;
     double                step   = 1.0;
-    for (int halving = 0; halving < max_halvings; ++halving, step *= 0.5)
+    for (int trial = 0; trial < max_halvings; ++trial)
       {
         q = start + step * direction_;
         evaluate(q);
         if (energy_ <= energy + armijo * step * slope + slack)
           return true;
+        const double curvature = energy_ - energy - slope * step;
+        const double minimiser = curvature > 0.0 ? -slope * step * step / (2.0 * curvature) : 0.5 * step;
+        step                   = std::clamp(minimiser, 0.1 * step, 0.5 * step);
       }
     q = start;
     evaluate(q);
@@ -327,27 +411,17 @@ namespace softchain::chain
     const Eigen::VectorXd free = pressure_torque_.cwiseQuotient(stiffness_);
     if (contact_.empty())
       return iterate(free);
-    // A stiff penalty met from outside makes the line search halve many
-    // steps (the first Newton steps know no contact yet); with one 100
-    // times softer the finger finds its contacts in a few, then the stiff
-    // one starts within 1 % of the answer's penetrations.
-    const Eigen::VectorXd start = before_first_contact(free);
-    contact_.set_stiffness(1e-2 * settings_.contact_stiffness);
-    const Equilibrium soft = iterate(start);
-    contact_.set_stiffness(settings_.contact_stiffness);
-    Equilibrium stiff = iterate(soft.converged ? soft.angles : start);
-    stiff.iterations += soft.iterations;
-    return stiff;
+    return iterate(before_first_contact(free));
   }
 
   // The free pose may lie deep inside an obstacle, where the nearest surface
   // can push the finger out on the wrong side (through a cylinder it should
   // wrap), or beyond it (a finger curled around it). Newton starts instead
-  // from t q_free with the smallest t in [0, 1] at which a surface point
-  // penetrates, less 2^-11: the path of the pressure's shape from rest,
-  // scanned in eighths and then bisected, stopped at the first touch; the
-  // line search lets the contact build up from there. An obstacle that the
-  // finger at rest already penetrates leaves the free start.
+  // from t q_free, the last t of 0, 1/8, 2/8, ... 1 before a surface point
+  // penetrates: the pressure's shape from rest stopped short of its first
+  // touch, from where the steps' active set brings the contacts in. An
+  // obstacle that the finger at rest already penetrates leaves the free
+  // start.
   Eigen::VectorXd ChainEquilibrium::before_first_contact(const Eigen::VectorXd &free)
   {
     const auto penetrates = [&](double t) {
@@ -357,17 +431,10 @@ namespace softchain::chain
     };
     if (penetrates(0.0))
       return free;
-    double outside = 0.0, inside = 0.125;
-    while (inside <= 1.0 && !penetrates(inside))
-      {
-        outside = inside;
-        inside += 0.125;
-      }
-    if (inside > 1.0)
-      return free;
-    for (int i = 0; i < 8; ++i)
-      (penetrates(0.5 * (outside + inside)) ? inside : outside) = 0.5 * (outside + inside);
-    return outside * free;
+    for (int eighth = 1; eighth <= 8; ++eighth)
+      if (penetrates(eighth / 8.0))
+        return (eighth - 1) / 8.0 * free;
+    return free;
   }
 
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load, const Eigen::VectorXd &start)
@@ -394,7 +461,6 @@ namespace softchain::chain
             prepare_tangent();
             newton_direction();
             ++result.iterations;
-            if (getenv("DBG")) fprintf(stderr, "it %d res %.3e touches %zu energy %.6e shifted %d slope %.3e |d| %.3e\n", result.iterations, relative_residual(), contact_.touches().size(), energy_, (int)shifted_, residual_.dot(direction_), direction_.lpNorm<Eigen::Infinity>());
             if (!line_search(result.angles))
               result.failure = "line search found no decrease of the energy";
           }

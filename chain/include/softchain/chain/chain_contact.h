@@ -66,6 +66,15 @@ namespace softchain::chain
     // = V^T diag(w) V: rows V (one per row, n_angles columns) and weights w.
     void tangent_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
                       Eigen::VectorXd &weights) const;
+    // Only the curvature rows of the touching points (weights k_c g mu).
+    void curvature_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
+                        Eigen::VectorXd &weights) const;
+
+    // The candidates of a Newton step's active set at `pose`: every surface
+    // point within `margin` of an obstacle (g < margin, the touching ones
+    // among them), with its normal row n^T J into `normal_rows`.
+    void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near,
+                    Eigen::MatrixXd &normal_rows) const;
 
     // What each obstacle receives at the last update: the force [N] and its
     // moment about the origin [N m], world axes, in the obstacles' order.
@@ -74,6 +83,10 @@ namespace softchain::chain
     double max_penetration() const;
 
   private:
+    // Appends the rows of `touch` to `directions` (e, weight) and `owner`.
+    void append_rows(const Touch &touch, bool normal, std::vector<std::pair<Eigen::Vector3d, double>> &directions) const;
+    void fill_rows(const ChainPose &pose, const std::vector<std::pair<Eigen::Vector3d, double>> &directions,
+                   const std::vector<int> &owner, int n_angles, Eigen::MatrixXd &rows, Eigen::VectorXd &weights) const;
     // e^T dx_k/dq: (i, alpha) entry a_{i,alpha} . ((x - p_{i,alpha}) x e)
     // for the joints i up to the point's link (pivot s_i for psi).
     void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
