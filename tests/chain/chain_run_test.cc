@@ -4,6 +4,7 @@
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/chain_parameters.h>
 #include <softchain/chain/chain_run.h>
+#include <softchain/chain/finger_collision_surface.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/input_error.h>
 
@@ -197,6 +198,122 @@ TEST_CASE("run_chain validates M1, M2 and the baseline against a database, write
                   Approx(tips.number(t, "tip_rotation_angle_deg")).margin(1e-9));
           }
     }
+}
+
+namespace
+{
+  data::ObstacleRecord obstacle(const std::string &name, const std::string &shape, const data::Point3 &at,
+                                const data::Point3 &direction, double radius)
+  {
+    data::ObstacleRecord o;
+    o.name      = name;
+    o.shape     = shape;
+    o.position  = at;
+    o.direction = direction;
+    o.radius    = radius;
+    return o;
+  }
+
+  // A contact sample made by `model` itself: its surface (the mesh's outer
+  // surface on rigid links) pressed on `o`, the nodes where its links carry
+  // them, the obstacle's wrench what the chain's contact gives it.
+  data::SampleRecord chain_contact_sample(ChainModel model, const data::MeshRecord &mesh,
+                                          const std::string &hash, double p, const data::ObstacleRecord &o)
+  {
+    model.set_collision_surface(rigid_collision_surface(model, mesh));
+    data::Actuation a;
+    a.pressure  = p;
+    a.role      = "contact";
+    a.obstacles = {o};
+    ChainEquilibrium solver(model);
+    const Equilibrium e = solver.solve(ChainLoad{p, {}, a.obstacles});
+    REQUIRE(e.converged);
+    REQUIRE(!solver.contact().touches().empty());
+    data::SampleRecord s = chain_sample(model, mesh, hash, actuation(p, "pressure", {0, 0, 0}));
+    s.actuation          = a;
+    s.id                 = data::sample_id(hash, a);
+    for (std::size_t k = 0; k < mesh.X.size(); ++k) // the nodes at the contact pose
+      {
+        const Eigen::Vector3d X(mesh.X[k][0], mesh.X[k][1], mesh.X[k][2]);
+        const Eigen::Vector3d x = model.chain().point_position(solver.pose(), model.chain().link_of(X), X);
+        s.x[k]                  = {x.x(), x.y(), x.z()};
+      }
+    s.obstacle_wrenches = solver.contact().obstacle_wrenches();
+    return s;
+  }
+} // namespace
+
+TEST_CASE("run_chain compares contact samples in force and pose and writes grasp_summary.csv")
+{
+  softchain::testing::ScratchDirectory dir("chain_run_contact");
+  const std::string         out = dir.file("out");
+  const std::string         prm = dir.file("finger.prm");
+  std::string               text = chain_prm;
+  text.replace(text.find("validation, pressure"), 20, "validation, pressure, contact");
+  std::ofstream(prm) << text;
+  chain::testing::BoxMeshSpec spec;
+  spec.y0                     = -0.5 * spec.height;
+  const data::MeshRecord mesh = chain::testing::box_mesh(spec);
+  chain::testing::UniformReduction m2, m1;
+  m1.k *= 1.3;
+  const StiffnessFiles m2_files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
+  chain::testing::write_reduction(m2_files, m2);
+  chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", data::RotationMethod::bounding_box, 0.5), m1);
+  const ChainModel m2_model = m2_files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true);
+  write_database(dir.file("database.h5"), m2_model, mesh);
+  {
+    const data::DesignRecord design{"box", "0123456789abcdef", "Q1", "test", chain_prm};
+    auto database = data::ActuationDatabase::open_or_create(dir.file("database.h5"), design, mesh);
+    // The finger curls towards +y: a table 24 mm above its axis, a 8 mm
+    // cylinder 6 mm above its upper side.
+    database.store_sample(chain_contact_sample(m2_model, mesh, design.design_hash, 4e4,
+                                               obstacle("table", "plane", {0, 0.024, 0}, {0, -1, 0}, 0)));
+    database.store_sample(chain_contact_sample(m2_model, mesh, design.design_hash, 3e4,
+                                               obstacle("rod", "cylinder", {0.05, 0.02, 0}, {0, 0, 1}, 0.008)));
+  }
+  std::ostringstream printed;
+  {
+    CoutTo capture(printed);
+    REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, false) == 0);
+  }
+  const data::CsvTable table = data::CsvTable::read(out + "/chain/validation.csv");
+  int contact_rows = 0;
+  for (std::size_t r = 0; r < table.n_rows(); ++r)
+    {
+      const std::string role = table.text(r, "role");
+      if (role != "blocked force" && role != "grasp")
+        {
+          CHECK(std::isnan(table.number(r, "contact_force_N")));
+          continue;
+        }
+      ++contact_rows;
+      CHECK(table.text(r, "chain_status") == "converged");
+      CHECK(table.number(r, "fem_contact_force_N") > 0.01);
+      if (table.text(r, "model") == "M2")
+        {
+          // Its own contact equilibrium again, from the same start: the
+          // solver's tolerance, 1e-10 of the forces.
+          CHECK(std::abs(table.number(r, "contact_force_error_percent")) < 1e-6);
+          CHECK(table.number(r, "tip_error_mm") < 1e-6);
+        }
+      else // 30 % stiffer joints press 30 % harder or less deep, beam theory differs
+        CHECK(std::abs(table.number(r, "contact_force_error_percent")) > 1.0);
+    }
+  CHECK(contact_rows == 6); // 2 contact samples x 3 models
+  const data::CsvTable summary = data::CsvTable::read(out + "/chain/grasp_summary.csv");
+  REQUIRE(summary.n_rows() == 3);
+  for (std::size_t r = 0; r < summary.n_rows(); ++r)
+    {
+      CHECK(summary.number(r, "n_samples") == 2);
+      CHECK(summary.number(r, "median_solve_time_us") > 0);
+      if (summary.text(r, "model") == "M2")
+        {
+          CHECK(summary.number(r, "blocked_force_error_percent") < 1e-6);
+          CHECK(summary.number(r, "grasp_force_error_percent") < 1e-6);
+          CHECK(summary.number(r, "tip_error_percent_L") < 1e-6);
+        }
+    }
+  CHECK(printed.str().find("chain: M2 in contact: blocked force error") != std::string::npos);
 }
 
 TEST_CASE("the Chain subsection is read and checked")
