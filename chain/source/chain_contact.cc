@@ -138,8 +138,7 @@ namespace softchain::chain
     fill_rows(pose, directions, owner, n_angles, rows, weights);
   }
 
-  void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near,
-                                Eigen::MatrixXd &normal_rows) const
+  void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near) const
   {
     near.clear();
     for (const CollisionSurface::Cluster &cluster : surface_->clusters())
@@ -165,10 +164,6 @@ namespace softchain::chain
               }
           }
       }
-    const int n_angles = static_cast<int>(3 * pose.joint_positions.size());
-    normal_rows.resize(static_cast<Eigen::Index>(near.size()), n_angles);
-    for (std::size_t i = 0; i < near.size(); ++i)
-      jacobian_row(pose, near[i], near[i].normal, normal_rows.row(i));
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

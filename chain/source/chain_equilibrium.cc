@@ -183,7 +183,10 @@ namespace softchain::chain
         direction_ *= -1.0;
       }
     else
-      contact_direction();
+      {
+        contact_direction();
+        limit_surface_motion();
+      }
     const double big = direction_.lpNorm<Eigen::Infinity>();
     if (big > settings_.max_step_angle)
       direction_ *= settings_.max_step_angle / big;
@@ -206,9 +209,11 @@ namespace softchain::chain
   // direction, the step is taken without them.
   void ChainEquilibrium::contact_direction()
   {
-    contact_.candidates(pose_, contact_margin_, near_, near_rows_);
+    contact_.candidates(pose_, contact_margin_, near_);
     const double       k = contact_.stiffness();
     const Eigen::Index m = static_cast<Eigen::Index>(near_.size());
+    near_rows_.resize(m, chain_.n_angles());
+    has_row_.assign(m, 0);
     Eigen::VectorXd    gaps(m);
     Eigen::VectorXd    free_residual = residual_;
     std::vector<char>  active(m);
@@ -217,7 +222,7 @@ namespace softchain::chain
         gaps[c]   = near_[c].gap;
         active[c] = gaps[c] < 0.0;
         if (active[c])
-          free_residual -= k * gaps[c] * near_rows_.row(c).transpose();
+          free_residual -= k * gaps[c] * near_row(c).transpose();
       }
     contact_.curvature_rows(pose_, chain_.n_angles(), curvature_rows_, curvature_weights_);
     const bool factored = tangent_.factor(0.0);
@@ -233,15 +238,7 @@ namespace softchain::chain
         for (int pass = 0; pass < 10; ++pass)
           {
             contact_step(active, gaps, free_residual, factored, curvature);
-            const Eigen::VectorXd predicted = gaps + near_rows_ * direction_;
-            bool                  same      = true;
-            for (Eigen::Index c = 0; c < m; ++c)
-              if ((predicted[c] < 0.0) != bool(active[c]))
-                {
-                  active[c] = predicted[c] < 0.0;
-                  same      = false;
-                }
-            if (same)
+            if (!update_active_set(gaps, active))
               break;
           }
         if (residual_.dot(direction_) < 0.0 || curvature_rows_.rows() == 0)
@@ -253,6 +250,71 @@ namespace softchain::chain
     for (Eigen::Index c = 0; c < m; ++c)
       active[c] = gaps[c] < 0.0;
     contact_step(active, gaps, free_residual, factored, false);
+  }
+
+  // The candidates predicted inside after direction_, g_c + n_c . (v_b +
+  // w_b x x_c), from each link's velocity (w_b, v_b: the point velocity is
+  // v_b + w_b x x) under the angle rates d, summed joint by joint: a turn
+  // d_{i,alpha} about a_{i,alpha} through p_{i,alpha} adds a d to w and
+  // p x a d to v. Returns whether the set changed.
+  bool ChainEquilibrium::update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active)
+  {
+    Eigen::Vector3d w = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+    link_velocities_.resize(chain_.n_joints());
+    for (int i = 0; i < chain_.n_joints(); ++i)
+      {
+        for (int alpha = 0; alpha < 3; ++alpha)
+          {
+            const Eigen::Vector3d  turn  = pose_.joint_axes[i].col(alpha) * direction_[3 * i + alpha];
+            const Eigen::Vector3d &pivot = alpha == 0 ? pose_.twist_pivots[i] : pose_.joint_positions[i];
+            w += turn;
+            v += pivot.cross(turn);
+          }
+        link_velocities_[i] = {w, v};
+      }
+    bool changed = false;
+    for (std::size_t c = 0; c < active.size(); ++c)
+      {
+        const ChainContact::Touch &point = near_[c];
+        const auto &[wb, vb]              = link_velocities_[point.link];
+        const bool inside = gaps[c] + point.normal.dot(vb + wb.cross(point.position)) < 0.0;
+        if (inside != bool(active[c]))
+          {
+            active[c] = inside;
+            changed   = true;
+          }
+      }
+    return changed;
+  }
+
+  // With obstacles no surface point may move farther in one step than the
+  // active set's reach (contact_margin_): a longer step could carry a point
+  // through a thin obstacle without any candidate seeing it (tunnelling).
+  // Bounded per cluster by |v_b + w_b x centre| + |w_b| radius.
+  void ChainEquilibrium::limit_surface_motion()
+  {
+    update_active_set(Eigen::VectorXd(), no_candidates_); // link velocities of direction_
+    double farthest = 0.0;
+    for (const CollisionSurface::Cluster &cluster : model_.collision_surface()->clusters())
+      {
+        const auto &[w, v]         = link_velocities_[cluster.link];
+        const Eigen::Vector3d centre = pose_.joint_positions[cluster.link] +
+                                       pose_.link_rotations[cluster.link] * cluster.centre;
+        farthest = std::max(farthest, (v + w.cross(centre)).norm() + w.norm() * cluster.radius);
+      }
+    if (farthest > contact_margin_)
+      direction_ *= contact_margin_ / farthest;
+  }
+
+  // n_c^T J_c of candidate c, computed when first needed.
+  const Eigen::RowVectorXd ChainEquilibrium::near_row(const Eigen::Index c)
+  {
+    if (!has_row_[c])
+      {
+        contact_.jacobian_row(pose_, near_[c], near_[c].normal, near_rows_.row(c));
+        has_row_[c] = 1;
+      }
+    return near_rows_.row(c);
   }
 
   // direction_ = -(H + C + k V_A^T V_A)^-1 (r_f + k V_A^T g_A) (above); by
@@ -285,7 +347,7 @@ namespace softchain::chain
       {
         const Eigen::Index i = rows[j];
         if (i < m)
-          contact_rows_.row(j) = near_rows_.row(i);
+          contact_rows_.row(j) = near_row(i);
         else
           contact_rows_.row(j) = curvature_rows_.row(i - m);
         contact_weights_[j] = i < m ? k : curvature_weights_[i - m];

@@ -97,6 +97,7 @@ namespace softchain::app
                name == "fem_tip_poses.csv" ? "FEM tip position and bending angle per sample" :
                name == "protocol_torques.csv" ? "base torques over the tip-motion protocol, FEM and chains" :
                name == "protocol_summary.csv" ? "base torque errors of the protocol per model" :
+               name == "grasp_summary.csv" ? "blocked-force and grasp errors of the chains in contact, per model" :
                name == "protocol_torques.png" ? "plot of the protocol's base torques" :
                ext == ".xml" ? "MuJoCo (MJCF) model of the chain" :
                ext == ".png" ? "validation plot" : "chain validation output";

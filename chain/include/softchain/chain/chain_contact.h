@@ -72,9 +72,13 @@ namespace softchain::chain
 
     // The candidates of a Newton step's active set at `pose`: every surface
     // point within `margin` of an obstacle (g < margin, the touching ones
-    // among them), with its normal row n^T J into `normal_rows`.
-    void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near,
-                    Eigen::MatrixXd &normal_rows) const;
+    // among them).
+    void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near) const;
+    // e^T dx_k/dq of the point of `touch`: (i, alpha) entry
+    // a_{i,alpha} . ((x - p_{i,alpha}) x e) for the joints i up to the
+    // point's link (pivot s_i for psi), zero beyond.
+    void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
+                      Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
 
     // What each obstacle receives at the last update: the force [N] and its
     // moment about the origin [N m], world axes, in the obstacles' order.
@@ -87,10 +91,6 @@ namespace softchain::chain
     void append_rows(const Touch &touch, bool normal, std::vector<std::pair<Eigen::Vector3d, double>> &directions) const;
     void fill_rows(const ChainPose &pose, const std::vector<std::pair<Eigen::Vector3d, double>> &directions,
                    const std::vector<int> &owner, int n_angles, Eigen::MatrixXd &rows, Eigen::VectorXd &weights) const;
-    // e^T dx_k/dq: (i, alpha) entry a_{i,alpha} . ((x - p_{i,alpha}) x e)
-    // for the joints i up to the point's link (pivot s_i for psi).
-    void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
-                      Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
 
     const CollisionSurface        *surface_ = nullptr;
     std::vector<geometry::Obstacle> obstacles_;

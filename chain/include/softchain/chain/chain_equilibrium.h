@@ -131,6 +131,9 @@ namespace softchain::chain
     void   contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
                         const Eigen::VectorXd &free_residual, bool factored, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
+    bool   update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active);
+    void   limit_surface_motion();
+    const Eigen::RowVectorXd near_row(Eigen::Index c);
     bool   line_search(Eigen::VectorXd &q);
     std::string range_violation(const Eigen::VectorXd &q) const;
     std::string instability();
@@ -150,7 +153,10 @@ namespace softchain::chain
     // length (on P10 the fastest of 2, 5 and 10 % at the same iterations).
     double                    contact_margin_ = 0.0;
     std::vector<ChainContact::Touch> near_;     // the step's active-set candidates
-    Eigen::MatrixXd           near_rows_;       // their normal rows
+    Eigen::MatrixXd           near_rows_;       // their normal rows, where computed
+    std::vector<char>         has_row_;         // which of them are
+    std::vector<char>         no_candidates_;   // (empty: link velocities alone)
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> link_velocities_; // (w_b, v_b) under a step
     Eigen::MatrixXd           curvature_rows_;  // the touching points' curvature rows
     Eigen::VectorXd           curvature_weights_;
     Eigen::MatrixXd           solved_rows_;     // H^-1 of the near and curvature rows
