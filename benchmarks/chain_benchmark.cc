@@ -77,7 +77,7 @@ namespace
 
   // The skin of a 90 x 12 x 16 mm box finger (palm 2 mm below the joints),
   // a point every 7.5 mm along and 4 mm across, carried rigidly by the links:
-  // about the 217 surface vertices of P10's default mesh.
+  // 174 points, near the 217 surface vertices of P10's default mesh.
   CollisionSurface box_skin(const ChainModel &model)
   {
     std::vector<std::pair<int, Eigen::Vector3d>> points;
