@@ -51,14 +51,18 @@ namespace softchain::chain
         const long ramp_steps = std::lround((target - from) / settings_.rate / dt);
         for (long s = 1; s <= ramp_steps; ++s)
           step(from + (target - from) * s / ramp_steps);
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        Eigen::Vector3d force = Eigen::Vector3d::Zero(), tip = Eigen::Vector3d::Zero();
         for (long s = 0; s < hold_steps; ++s)
           {
             step(target);
             if (s >= hold_steps - mean_steps)
-              sum += scene_.obstacle_force();
+              {
+                force += scene_.obstacle_force();
+                tip += scene_.tip_position();
+              }
           }
-        steady.push_back({target, sum / std::min(mean_steps, hold_steps)});
+        const double n = static_cast<double>(std::min(mean_steps, hold_steps));
+        steady.push_back({target, force / n, tip / n});
         from = target;
       }
     return steady;

@@ -1,10 +1,12 @@
 // `softchain run FILE.prm`: the whole pipeline of the paper's Fig. 2 --
-// FEM sample sweep -> reduction (stiffness CSVs) -> chain validation -- and
+// FEM sample sweep -> reduction (stiffness CSVs) -> chain validation, MJCF
+// export and MuJoCo's contact scenes -- and
 // the report of it all (report.html, with the stages' wall times), with one
 // progress line per stage and its wall time, then every output file with
 // what it is. The sweep runs on all MPI ranks, the deal.II-free tiers on
 // rank 0.
 #include <softchain/chain/chain_run.h>
+#include <softchain/chain/simulate_run.h>
 #include <softchain/app/commands.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/output_files.h>
@@ -156,7 +158,11 @@ namespace softchain::app
     const int chained = stage(out, 3, "chain validation", times, [&] {
       try
         {
-          return chain::run_chain(prm_file, database, directory, false);
+          // The chain, its MuJoCo model, and MuJoCo in the contact
+          // samples' scenes (the mujoco row of chain/grasp_summary.csv).
+          const int status = chain::run_chain(prm_file, database, directory, true);
+          chain::simulate_contact_scenes(prm_file, database, directory);
+          return status;
         }
       catch (const data::InputError &e) // e.g. no usable stiffness: still write the report
         {

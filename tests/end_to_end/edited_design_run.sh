@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A user copies parameter_files/p10.prm, edits it (another name,
-# another pressure list, thinner walls, no validation protocol) and runs
+# another pressure list, thinner walls, contact samples within it, no
+# validation protocol) and runs
 # `softchain run` on the copy: the whole pipeline works without touching
 # code, and the edit takes effect. (The protocol's 90-degree inflation and
 # 12 tip motions would add minutes; tests/end_to_end/protocol_test.cc covers
@@ -22,6 +23,7 @@ sed -e "s/^\( *set Name *=\).*/\1 my_finger/" \
     -e "s/^\( *set Force sample pressures *=\).*/\1 0/" \
     -e "s/^\( *set Chord samples *=\).*/\1 0 : tip : 0.5,0,0/" \
     -e "s/^\( *set Validation samples *=\).*/\1 7.5e3/" \
+    -e "s/^\( *set Contact samples *=\).*/\1 table : 10e3 ; cylinder : 10e3/" \
     -e "s/^\( *set Tip angle *=\).*/\1 0/" \
     "$parameters/p10.prm" > my_finger.prm
 printf 'subsection Solver\n  set Residual tolerance = 1e-4\n  set Displacement tolerance = 1e-4\nend\n' >> my_finger.prm
@@ -36,7 +38,7 @@ done
 # The chain is validated on the pressure and validation samples (the
 # default Chain/Validation roles): 5 and 10 kPa and the 7.5 kPa sample.
 samples=$(($(wc -l < out-my_finger/chain/fem_tip_poses.csv) - 1))
-[ "$samples" = 3 ] || { echo "FAIL: $samples FEM tip poses, expected 3"; exit 1; }
+[ "$samples" = 5 ] || { echo "FAIL: $samples FEM tip poses, expected 5 (2 pressure, 1 validation, 2 contact)"; exit 1; }
 # The thinner walls take effect: the shipped P10 (2.5 mm walls) bends 14.93
 # degrees at 10 kPa (measured, output/p10/chain/fem_tip_poses.csv). The top
 # wall's bending stiffness falls about in proportion to its thickness (0.8x)

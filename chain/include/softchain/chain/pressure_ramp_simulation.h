@@ -7,7 +7,8 @@
 // The hinges' damping c = k * damping time (MjcfExport: 0.01 s against the
 // bending periods of ~0.1 s) settles each hold within a few periods; the
 // steady contact force of a target is the mean of the obstacle's force over
-// the last `average` seconds of its hold.
+// the last `average` seconds of its hold, its steady tip the mean of the
+// tip site's position over the same steps.
 //
 // Time series, one row per `record_interval` (0: none), columns
 //   joint angles:  time [s], pressure [Pa], one column per hinge
@@ -37,6 +38,7 @@ namespace softchain::chain
   {
     double          pressure; // Pa
     Eigen::Vector3d force;    // N, on the obstacle, world
+    Eigen::Vector3d tip;      // m, the site "tip", mean over the same window
   };
 
   class PressureRampSimulation

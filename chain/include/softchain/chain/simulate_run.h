@@ -10,8 +10,17 @@
 // y) at rest: the distance from the lowest joint to it. Writes under
 // <output>/simulate/ the scene's MJCF, its time series and
 // contact_vs_fem.csv (data::SimulateFileSet), and prints the steady contact
-// force per pressure against the FEM's. Returns 0; bad input throws
+// force and tip per pressure against the FEM's. Returns 0; bad input throws
 // data::InputError naming the parameter.
+//
+// simulate_contact_scenes: the same for every obstacle with converged FEM
+// contact samples, one scene after the other, and MuJoCo's row in
+// <output>/chain/grasp_summary.csv (model "mujoco": the largest absolute
+// force error on the plane obstacles' samples, blocked force, and on the
+// others', grasp; the largest tip distance in % of L; orientation and
+// solve time nan), replacing an earlier mujoco row. `softchain run` calls it
+// after the chain's validation and MJCF export. Without contact samples it
+// does nothing and returns 0.
 #include <softchain/data/prm_file.h>
 
 #include <string>
@@ -20,4 +29,6 @@ namespace softchain::chain
 {
   int run_simulate(const data::PrmFile &prm, const std::string &database_path, const std::string &output_dir,
                    const std::string &scene_name);
+  int simulate_contact_scenes(const data::PrmFile &prm, const std::string &database_path,
+                              const std::string &output_dir);
 } // namespace softchain::chain
