@@ -1,11 +1,11 @@
 #include <softchain/geometry/contact_scene.h>
 #include <softchain/geometry/stl_file.h>
+#include <softchain/geometry/text_lines.h>
 #include <softchain/geometry/triangulated_obstacle.h>
 
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
 
-#include <filesystem>
 #include <limits>
 
 namespace softchain::geometry
@@ -39,14 +39,6 @@ namespace softchain::geometry
                       "times it, then moved by t Motion");
       section.declare(p + "Motion pivot", "",
                       "m: the point Motion rotation turns the obstacle about; empty: Position");
-    }
-
-    std::string path_beside(const std::string &prm_path, const std::string &file)
-    {
-      const std::filesystem::path p(file);
-      if (p.is_absolute())
-        return file;
-      return (std::filesystem::path(prm_path).parent_path() / p).string();
     }
 
     Eigen::Vector3d vector_entry(const data::PrmSection &section, const std::string &name)
@@ -83,7 +75,7 @@ namespace softchain::geometry
       if (o.shape == "stl")
         {
           section.require(!section.get(p + "File").empty(), p + "File", "Shape = stl needs the STL file");
-          o.file = path_beside(prm_path, section.get(p + "File"));
+          o.file = TextLines::beside(prm_path, section.get(p + "File"));
           try
             {
               for (const auto &t : StlFile::read(o.file).triangles)
