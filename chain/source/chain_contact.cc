@@ -11,7 +11,7 @@ namespace softchain::chain
                          const std::vector<data::ObstacleRecord> &obstacles, const double stiffness)
   {
     obstacles_.clear();
-    motions_.clear();
+    poses_.clear();
     touches_.clear();
     surface_   = surface;
     stiffness_ = stiffness;
@@ -29,7 +29,7 @@ namespace softchain::chain
                                       std::to_string(record.friction) +
                                       "; the chain's contact is frictionless");
         obstacles_.emplace_back(record);
-        motions_.push_back(obstacles_.back().motion());
+        poses_.push_back(obstacles_.back().pose(1.0));
       }
     surface->offsets_at(pressure, offsets_);
   }
@@ -51,14 +51,14 @@ namespace softchain::chain
         for (std::size_t o = 0; o < obstacles_.size(); ++o)
           {
             const geometry::Obstacle &obstacle = obstacles_[o];
-            if (obstacle.body->gap(centre, motions_[o]) > cluster.radius)
+            if (obstacle.body->gap(centre, poses_[o]) > cluster.radius)
               continue;
             for (int k = cluster.begin; k < cluster.end; ++k)
               {
                 const Eigen::Vector3d x = c + R * offsets_[k];
-                if (!(obstacle.body->gap(x, motions_[o]) < 0.0))
+                if (!(obstacle.body->gap(x, poses_[o]) < 0.0))
                   continue;
-                const geometry::SignedDistance d = obstacle.body->distance(x, motions_[o]);
+                const geometry::SignedDistance d = obstacle.body->distance(x, poses_[o]);
                 touches_.push_back({cluster.link, k, static_cast<int>(o), x, d.normal,
                                     -stiffness_ * d.gap * d.normal, d.gap, d.hessian});
                 energy += 0.5 * stiffness_ * d.gap * d.gap;
@@ -149,14 +149,14 @@ namespace softchain::chain
         for (std::size_t o = 0; o < obstacles_.size(); ++o)
           {
             const geometry::Obstacle &obstacle = obstacles_[o];
-            if (obstacle.body->gap(centre, motions_[o]) > cluster.radius + margin)
+            if (obstacle.body->gap(centre, poses_[o]) > cluster.radius + margin)
               continue;
             for (int k = cluster.begin; k < cluster.end; ++k)
               {
                 const Eigen::Vector3d x = c + R * offsets_[k];
-                if (!(obstacle.body->gap(x, motions_[o]) < margin))
+                if (!(obstacle.body->gap(x, poses_[o]) < margin))
                   continue;
-                const geometry::SignedDistance d = obstacle.body->distance(x, motions_[o]);
+                const geometry::SignedDistance d = obstacle.body->distance(x, poses_[o]);
                 near.push_back({cluster.link, k, static_cast<int>(o), x, d.normal,
                                 d.gap < 0.0 ? Eigen::Vector3d(-stiffness_ * d.gap * d.normal)
                                             : Eigen::Vector3d::Zero(),

@@ -38,6 +38,9 @@ namespace softchain::chain
       if (o.motion != data::Point3{})
         throw data::InputError(error_prefix(o) + "Motion = " + triple(o.motion) +
                                ": softchain simulate holds the obstacle still (set Motion = 0, 0, 0)");
+      if (o.motion_rotation != data::Point3{})
+        throw data::InputError(error_prefix(o) + "Motion rotation = " + triple(o.motion_rotation) +
+                               ": softchain simulate holds the obstacle still (set Motion rotation = 0, 0, 0)");
       std::ostringstream geom;
       geom.precision(17);
       geom << "<geom name=\"obstacle\" pos=\"" << triple(o.position) << "\" ";

@@ -120,6 +120,16 @@ namespace softchain::data
           write_points(g, "half_sizes", {o.half_sizes}, path);
           write_points(g, "rotation", {o.rotation}, path);
           write_points(g, "motion", {o.motion}, path);
+          if (o.motion_rotation != Point3{})
+            {
+              write_points(g, "motion_rotation", {o.motion_rotation}, path);
+              write_points(g, "motion_pivot", {o.motion_pivot}, path);
+            }
+          if (!o.vertices.empty())
+            {
+              write_points(g, "vertices", o.vertices, path);
+              write_attribute(g, "file", o.file, path);
+            }
           const ObstacleWrench w = k < sample.obstacle_wrenches.size() ?
                                      sample.obstacle_wrenches[k] :
                                      ObstacleWrench{{{NAN, NAN, NAN}}, {{NAN, NAN, NAN}}};
@@ -166,6 +176,17 @@ namespace softchain::data
           if (H5Lexists(g, "rotation", H5P_DEFAULT) > 0) // absent in older databases: zero
             o.rotation = read_point(g, "rotation", where, path);
           o.motion = read_point(g, "motion", where, path);
+          if (H5Lexists(g, "motion_rotation", H5P_DEFAULT) > 0) // absent where the obstacle does not turn
+            {
+              o.motion_rotation = read_point(g, "motion_rotation", where, path);
+              o.motion_pivot    = read_point(g, "motion_pivot", where, path);
+            }
+          if (H5Lexists(g, "vertices", H5P_DEFAULT) > 0) // stl only
+            {
+              o.vertices = read_points(g, "vertices", path);
+              o.file     = read_string_attribute(g, "file", path);
+              require(o.vertices.size() % 3 == 0, path, where + ": 'vertices' needs three rows per triangle");
+            }
           const auto wrench = read_points(g, "wrench", path);
           require(wrench.size() == 2, path, where + ": 'wrench' needs 2 rows");
           wrenches[k] = {wrench[0], wrench[1]};
@@ -360,9 +381,20 @@ namespace softchain::data
       for (const double c : v)
         text += " " + canonical(c);
     text += " " + canonical(radius) + " " + canonical(friction);
+    const auto words = [](const Point3 &v) {
+      return " " + canonical(v[0]) + " " + canonical(v[1]) + " " + canonical(v[2]);
+    };
     if (rotation != Point3{})
-      text += " rotation " + canonical(rotation[0]) + " " + canonical(rotation[1]) + " " +
-              canonical(rotation[2]);
+      text += " rotation" + words(rotation);
+    if (motion_rotation != Point3{})
+      text += " turn" + words(motion_rotation) + " about" + words(motion_pivot);
+    if (!vertices.empty())
+      {
+        std::string mesh;
+        for (const auto &v : vertices)
+          mesh += words(v);
+        text += " triangles " + content_hash(mesh);
+      }
     return text + "\n";
   }
 

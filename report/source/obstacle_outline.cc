@@ -10,6 +10,13 @@ namespace softchain::report
 
     Eigen::Vector3d vector(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
 
+    // The turn of the rotation vector v: about v / |v| by |v| rad.
+    Eigen::Matrix3d turn(const data::Point3 &v)
+    {
+      const double angle = vector(v).norm();
+      return angle > 0 ? Eigen::AngleAxisd(angle, vector(v) / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
+    }
+
     // Two unit vectors normal to `n` and to each other.
     std::pair<Eigen::Vector3d, Eigen::Vector3d> normal_plane(const Eigen::Vector3d &n)
     {
@@ -84,19 +91,29 @@ namespace softchain::report
   std::vector<Outline> obstacle_outline(const data::ObstacleRecord &o, const Eigen::AlignedBox3d &around,
                                         const ObliqueView &view)
   {
-    const Eigen::Vector3d at = vector(o.position) + vector(o.motion);
+    // The end of the load path: turned by Motion rotation about its pivot,
+    // then moved by Motion.
+    const Eigen::Matrix3d T     = turn(o.motion_rotation);
+    const Eigen::Vector3d pivot = vector(o.motion_pivot), motion = vector(o.motion);
+    const auto            end   = [&](const Eigen::Vector3d &y) { return Eigen::Vector3d(T * (y - pivot) + pivot + motion); };
+    const Eigen::Vector3d at    = end(vector(o.position));
     if (o.shape == "plane")
-      return plane(at, vector(o.direction).normalized(), around);
+      return plane(at, T * vector(o.direction).normalized(), around);
     if (o.shape == "cylinder")
-      return cylinder(at, vector(o.direction), o.radius, around);
+      return cylinder(at, T * vector(o.direction), o.radius, around);
     if (o.shape == "sphere")
       return {circle(at, view.toward_viewer().normalized(), o.radius)};
     if (o.shape == "box")
+      return box(at, vector(o.half_sizes), T * turn(o.rotation));
+    if (o.shape == "stl")
       {
-        const Eigen::Vector3d v     = vector(o.rotation);
-        const double          angle = v.norm();
-        return box(at, vector(o.half_sizes),
-                   angle > 0 ? Eigen::AngleAxisd(angle, v / angle).toRotationMatrix() : Eigen::Matrix3d::Identity());
+        const Eigen::Matrix3d R = turn(o.rotation);
+        std::vector<Outline>  triangles;
+        for (std::size_t v = 0; v + 2 < o.vertices.size(); v += 3)
+          triangles.push_back({end(vector(o.position) + R * vector(o.vertices[v])),
+                               end(vector(o.position) + R * vector(o.vertices[v + 1])),
+                               end(vector(o.position) + R * vector(o.vertices[v + 2]))});
+        return triangles;
       }
     return {};
   }

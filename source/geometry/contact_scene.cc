@@ -1,4 +1,7 @@
 #include <softchain/geometry/contact_scene.h>
+#include <softchain/geometry/stl_file.h>
+#include <softchain/geometry/text_lines.h>
+#include <softchain/geometry/triangulated_obstacle.h>
 
 #include <softchain/data/content_hash.h>
 #include <softchain/data/input_error.h>
@@ -12,21 +15,30 @@ namespace softchain::geometry
     void declare_obstacle(data::PrmSection &section, const std::string &name)
     {
       const std::string p = name + "/";
-      section.declare(p + "Shape", "plane", "plane | sphere | cylinder | box");
+      section.declare(p + "Shape", "plane", "plane | sphere | cylinder | box | stl");
       section.declare(p + "Position", "0, 0, 0",
                       "m: a point of the plane, the sphere's or box's centre, a point of the "
-                      "cylinder's axis");
+                      "cylinder's axis, where stl puts the origin of its file's coordinates");
       section.declare(p + "Normal", "0, 1, 0", "plane: unit normal pointing out of the obstacle");
       section.declare(p + "Axis", "0, 0, 1", "cylinder: direction of the axis");
       section.declare(p + "Radius", "0.01", "sphere, cylinder: m");
       section.declare(p + "Half sizes", "0.01, 0.01, 0.01", "box: half edge lengths along its axes, m");
       section.declare(p + "Rotation", "0, 0, 0",
-                      "box: its turn from the world axes x, y, z, as a rotation vector (the axis "
-                      "times the angle, rad)");
+                      "box, stl: its turn from the world axes x, y, z about Position, as a rotation "
+                      "vector (the axis times the angle, rad)");
+      section.declare(p + "File", "",
+                      "stl: a closed, consistently oriented triangle surface in m (ASCII or binary "
+                      "STL), relative to this file's directory");
       section.declare(p + "Friction coefficient", "0", "Coulomb's mu >= 0");
       section.declare(p + "Motion", "0, 0, 0",
                       "translation at the end of the load path, m (the obstacle moves "
                       "linearly along it: a table raised to the tip, an object pushed in)");
+      section.declare(p + "Motion rotation", "0, 0, 0",
+                      "turn at the end of the load path about Motion pivot, a rotation vector (the "
+                      "axis times the angle, rad): at path parameter t the obstacle is turned by t "
+                      "times it, then moved by t Motion");
+      section.declare(p + "Motion pivot", "",
+                      "m: the point Motion rotation turns the obstacle about; empty: Position");
     }
 
     Eigen::Vector3d vector_entry(const data::PrmSection &section, const std::string &name)
@@ -45,25 +57,43 @@ namespace softchain::geometry
 
     data::Point3 triple(const Eigen::Vector3d &v) { return {{v[0], v[1], v[2]}}; }
 
-    Obstacle read_obstacle(const data::PrmSection &section, const std::string &name)
+    Obstacle read_obstacle(const data::PrmSection &section, const std::string &name, const std::string &prm_path)
     {
       const std::string    p = name + "/";
       data::ObstacleRecord o;
       o.name     = name;
-      o.shape    = section.get_selection(p + "Shape", {"plane", "sphere", "cylinder", "box"});
+      o.shape    = section.get_selection(p + "Shape", {"plane", "sphere", "cylinder", "box", "stl"});
       o.position = triple(vector_entry(section, p + "Position"));
       if (o.shape == "plane" || o.shape == "cylinder")
         o.direction = triple(vector_entry(section, p + (o.shape == "plane" ? "Normal" : "Axis")));
       if (o.shape == "sphere" || o.shape == "cylinder")
         o.radius = positive_entry(section, p + "Radius");
       if (o.shape == "box")
+        o.half_sizes = triple(vector_entry(section, p + "Half sizes"));
+      if (o.shape == "box" || o.shape == "stl")
+        o.rotation = triple(vector_entry(section, p + "Rotation"));
+      if (o.shape == "stl")
         {
-          o.half_sizes = triple(vector_entry(section, p + "Half sizes"));
-          o.rotation   = triple(vector_entry(section, p + "Rotation"));
+          section.require(!section.get(p + "File").empty(), p + "File", "Shape = stl needs the STL file");
+          o.file = TextLines::beside(prm_path, section.get(p + "File"));
+          try
+            {
+              for (const auto &t : StlFile::read(o.file).triangles)
+                for (const auto &v : t)
+                  o.vertices.push_back(triple(v));
+            }
+          catch (const data::InputError &e)
+            {
+              throw data::InputError(section.describe(p + "File") + ": " + e.what());
+            }
         }
       o.friction = section.get_double(p + "Friction coefficient");
       section.require(o.friction >= 0, p + "Friction coefficient", "must be >= 0");
-      o.motion = triple(vector_entry(section, p + "Motion"));
+      o.motion          = triple(vector_entry(section, p + "Motion"));
+      o.motion_rotation = triple(vector_entry(section, p + "Motion rotation"));
+      if (o.motion_rotation != data::Point3{})
+        o.motion_pivot = section.get(p + "Motion pivot").empty() ? o.position :
+                                                                   triple(vector_entry(section, p + "Motion pivot"));
       try
         {
           return Obstacle(o);
@@ -76,11 +106,14 @@ namespace softchain::geometry
 
     Eigen::Vector3d eigen(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
 
-    // The rotation of the rotation vector v: about v / |v| by |v| rad.
-    Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d &v)
+    // The file's triangles placed at Position, turned by Rotation about it.
+    std::vector<TriangulatedObstacle::Triangle> placed_triangles(const data::ObstacleRecord &o)
     {
-      const double angle = v.norm();
-      return angle > 0 ? Eigen::AngleAxisd(angle, v / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
+      const Eigen::Matrix3d R = RigidTransform::rotation_of(eigen(o.rotation));
+      std::vector<TriangulatedObstacle::Triangle> triangles(o.vertices.size() / 3);
+      for (std::size_t v = 0; v < 3 * triangles.size(); ++v)
+        triangles[v / 3][v % 3] = eigen(o.position) + R * eigen(o.vertices[v]);
+      return triangles;
     }
 
     std::shared_ptr<const RigidObstacle> body_of(const data::ObstacleRecord &o)
@@ -93,9 +126,11 @@ namespace softchain::geometry
         return std::make_shared<CylinderObstacle>(eigen(o.position), eigen(o.direction), o.radius);
       if (o.shape == "box")
         return std::make_shared<BoxObstacle>(eigen(o.position), eigen(o.half_sizes),
-                                             rotation_matrix(eigen(o.rotation)));
+                                             RigidTransform::rotation_of(eigen(o.rotation)));
+      if (o.shape == "stl")
+        return std::make_shared<TriangulatedObstacle>(placed_triangles(o), o.file);
       throw data::InputError("obstacle '" + o.name + "': unknown shape '" + o.shape +
-                             "' (plane, sphere, cylinder or box)");
+                             "' (plane, sphere, cylinder, box or stl)");
     }
   } // namespace
 
@@ -107,7 +142,11 @@ namespace softchain::geometry
       throw data::InputError("obstacle '" + o.name + "': the friction coefficient must be >= 0");
   }
 
-  Eigen::Vector3d Obstacle::motion() const { return eigen(description.motion); }
+  RigidTransform Obstacle::pose(const double t) const
+  {
+    return RigidTransform::along_path(t, eigen(description.motion_rotation), eigen(description.motion_pivot),
+                                      eigen(description.motion));
+  }
 
   std::vector<data::ObstacleRecord> ContactScene::descriptions() const
   {
@@ -190,7 +229,7 @@ namespace softchain::geometry
                     "must lie in [0, 1000]");
     scene.max_augmentations = static_cast<unsigned int>(augmentations);
     for (const auto &name : names)
-      scene.obstacles.push_back(read_obstacle(section, name));
+      scene.obstacles.push_back(read_obstacle(section, name, file.path()));
     const auto in_solve = section.get_list("Obstacles in solve");
     if (in_solve == std::vector<std::string>{"all"})
       scene.in_solve = names;

@@ -2,9 +2,9 @@
 #include <softchain/data/input_error.h>
 #include <softchain/data/prm_file.h>
 #include <softchain/geometry/finger_design.h>
+#include <softchain/geometry/text_lines.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <utility>
 #include <vector>
 
@@ -123,14 +123,6 @@ namespace softchain::geometry
               section, "Tip width", "a parallelepiped has Tip width/height = Base width/height");
     }
 
-    std::string path_beside(const std::string &prm_path, const std::string &file)
-    {
-      const std::filesystem::path p(file);
-      if (file.empty() || p.is_absolute())
-        return file;
-      return (std::filesystem::path(prm_path).parent_path() / p).string();
-    }
-
     void read_surface(const PrmSection &section, FingerDesign &design)
     {
       SurfaceDesign &s = design.surface;
@@ -138,9 +130,9 @@ namespace softchain::geometry
               "Shape = stl needs the outer surface");
       require(!section.get("Cavity surface file").empty(), section, "Cavity surface file",
               "Shape = stl needs the cavity surface");
-      s.outer_file      = path_beside(design.source, section.get("Outer surface file"));
-      s.cavity_file     = path_beside(design.source, section.get("Cavity surface file"));
-      s.spring_file     = path_beside(design.source, section.get("Spring file"));
+      s.outer_file      = TextLines::beside(design.source, section.get("Outer surface file"));
+      s.cavity_file     = TextLines::beside(design.source, section.get("Cavity surface file"));
+      s.spring_file     = TextLines::beside(design.source, section.get("Spring file"));
       s.base_x          = section.get_double("Base plane x");
       s.tip_x           = section.get_double("Tip plane x");
       s.plane_tolerance = positive(section, "Plane tolerance");

@@ -35,6 +35,13 @@ namespace softchain::geometry
     }
   } // namespace
 
+  SignedDistance RigidObstacle::distance(const Eigen::Vector3d &x, const RigidTransform &pose) const
+  {
+    const Eigen::Matrix3d &R    = pose.rotation();
+    const SignedDistance   rest = distance_at_rest(pose.to_rest(x));
+    return {rest.gap, R * rest.normal, R * rest.hessian * R.transpose()};
+  }
+
   PlaneObstacle::PlaneObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &normal)
     : point(point)
     , normal(unit(normal, "a plane's normal"))

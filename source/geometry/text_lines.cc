@@ -52,6 +52,14 @@ namespace softchain::geometry
       throw data::InputError(path + ": cannot write the " + kind);
   }
 
+  std::string TextLines::beside(const std::string &beside, const std::string &file)
+  {
+    const std::filesystem::path p(file);
+    if (file.empty() || p.is_absolute())
+      return file;
+    return (std::filesystem::path(beside).parent_path() / p).string();
+  }
+
   void TextLines::fail(const std::string &what) const
   {
     throw data::InputError(path_ + ":" + std::to_string(number_) + ": " + what);

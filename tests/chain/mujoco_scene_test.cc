@@ -100,6 +100,15 @@ TEST_CASE("An obstacle MuJoCo cannot build is an error naming the obstacle and i
   ObstacleRecord moving = table();
   moving.motion         = {0, 0.001, 0};
   CHECK_THROWS_WITH(MujocoScene(finger, moving, 0.002, dir.file("scene.xml")), Catch::Contains("Motion"));
+  ObstacleRecord turning = table();
+  turning.motion_rotation = {0, 0, 0.1};
+  CHECK_THROWS_WITH(MujocoScene(finger, turning, 0.002, dir.file("scene.xml")),
+                    Catch::Contains("Contact/table") && Catch::Contains("Motion rotation"));
+  ObstacleRecord meshed = table();
+  meshed.shape          = "stl";
+  CHECK_THROWS_WITH(MujocoScene(finger, meshed, 0.002, dir.file("scene.xml")),
+                    Catch::Contains("Contact/table") && Catch::Contains("Shape = stl") &&
+                      Catch::Contains("plane, sphere, cylinder or box"));
   CHECK_THROWS_WITH(MujocoScene(dir.file("none.xml"), table(), 0.002, dir.file("scene.xml")),
                     Catch::Contains("none.xml") && Catch::Contains("--export-mjcf"));
 }

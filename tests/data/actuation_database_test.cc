@@ -349,6 +349,58 @@ TEST_CASE("a contact sample keeps its obstacles in order, their wrenches and its
   CHECK(again.read_sample(free.id).obstacle_wrenches.empty());
 }
 
+TEST_CASE("a meshed obstacle and a turning one come back from a contact sample, and name it")
+{
+  ScratchDirectory  dir("db_contact_stl");
+  const std::string path = dir.file("f.h5");
+  auto              db   = ActuationDatabase::open_or_create(path, design("h1"), cube_mesh());
+  SampleRecord      pressed = sample("h1", 2e4, 0.125);
+  pressed.actuation.role    = "contact";
+  // A tetrahedron from an STL file, and a plane turning about a pivot.
+  ObstacleRecord stone{"stone", "stl", {0.05, -0.02, 0}, {}, 0, {}, 0.2, {0, 0.001, 0}, {0.1, 0, 0}};
+  stone.vertices = {{0, 0, 0}, {0, 0.01, 0}, {0.01, 0, 0}, {0, 0, 0}, {0.01, 0, 0}, {0, 0, 0.01},
+                    {0, 0, 0}, {0, 0, 0.01}, {0, 0.01, 0}, {0.01, 0, 0}, {0, 0.01, 0}, {0, 0, 0.01}};
+  stone.file = "stone.stl";
+  ObstacleRecord table{"table", "plane", {0, -0.005, 0}, {0, 1, 0}, 0, {}, 0, {0, 0.002, 0}};
+  table.motion_rotation = {0, 0, 0.2};
+  table.motion_pivot    = {0.01, -0.005, 0};
+  pressed.actuation.obstacles   = {stone, table};
+  pressed.actuation.contact_law = "surfaces all penalty 10";
+  pressed.obstacle_wrenches     = {{{0.1, -0.8, 0}, {0, 0, 0.07}}, {{0, -0.25, 0.01}, {0.001, 0, 0.02}}};
+  pressed.id                    = sample_id("h1", pressed.actuation);
+
+  // The obstacles' texts without a turn or triangles are those of before;
+  // the triangles' content, the turn and its pivot name the sample, the
+  // file's name does not.
+  ObstacleRecord still = table;
+  still.motion_rotation = {};
+  CHECK(still.canonical_text() == "obstacle table plane 0 -0.0050000000000000001 0 0 1 0 0 0 0 0 0.002 0 0 0\n");
+  for (const auto change : {+[](Actuation &a) { a.obstacles[0].vertices[1][1] = 0.011; },
+                            +[](Actuation &a) { std::swap(a.obstacles[0].vertices[0], a.obstacles[0].vertices[1]); },
+                            +[](Actuation &a) { a.obstacles[1].motion_rotation[2] = 0.21; },
+                            +[](Actuation &a) { a.obstacles[1].motion_pivot[0] = 0.02; }})
+    {
+      Actuation other = pressed.actuation;
+      change(other);
+      CHECK(sample_id("h1", other) != pressed.id);
+    }
+  Actuation moved_file = pressed.actuation;
+  moved_file.obstacles[0].file = "elsewhere/stone.stl";
+  CHECK(sample_id("h1", moved_file) == pressed.id);
+
+  db.store_sample(pressed);
+  const auto read = ActuationDatabase::open(path).read_sample(pressed.id);
+  check_equal_samples(read, pressed);
+  REQUIRE(read.actuation.obstacles.size() == 2);
+  CHECK(read.actuation.obstacles[0].vertices == stone.vertices);
+  CHECK(read.actuation.obstacles[0].file == stone.file);
+  CHECK(read.actuation.obstacles[0].rotation == stone.rotation);
+  CHECK(read.actuation.obstacles[1].motion_rotation == table.motion_rotation);
+  CHECK(read.actuation.obstacles[1].motion_pivot == table.motion_pivot);
+  CHECK(read.actuation.obstacles[1].vertices.empty());
+  CHECK(sample_id("h1", read.actuation) == pressed.id);
+}
+
 TEST_CASE("a database in the single-file layout of earlier versions opens and extends")
 {
   ScratchDirectory  dir("db_single_file");

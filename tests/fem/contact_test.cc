@@ -13,7 +13,11 @@
 //    the penetration below its tolerance and the force to the one of the
 //    prescribed compression;
 //  - the friction tangent's solve by GMRES with the LDL^T factors of its
-//    symmetric approximation, against Trilinos' KLU.
+//    symmetric approximation, against Trilinos' KLU;
+//  - obstacles from STL files against the analytic ones they mesh, and an
+//    obstacle turned along the load path against the same obstacle brought
+//    to its final pose by a translation.
+#include "../geometry/obstacle_meshes.h"
 #include "fem_test_tools.h"
 
 #include <softchain/fem/boundary_ids.h>
@@ -29,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 using namespace dealii;
 using namespace softchain;
@@ -138,7 +143,12 @@ TEST_CASE("the contact tangent matches finite differences on every obstacle shap
     {"cylinder", "    set Shape = cylinder\n    set Position = 0.05, -0.0096, 0\n    set Axis = 0, 0, 1\n"
                  "    set Radius = 0.01\n"},
     {"box", "    set Shape = box\n    set Position = 0.07, -0.009, 0.009\n"
-            "    set Half sizes = 0.005, 0.01, 0.005\n"}};
+            "    set Half sizes = 0.005, 0.01, 0.005\n"},
+    // The sphere's place, meshed by 512 triangles: its curvature lives on
+    // the edges and vertices.
+    {"stl", "    set Shape = stl\n    set File = contact_tangent_sphere.stl\n"
+            "    set Position = 0.06, -0.0085, 0.009\n"}};
+  geometry::testing::sphere_surface(Eigen::Vector3d::Zero(), 0.01, 3).write("contact_tangent_sphere.stl");
   for (const auto &[shape, settings] : shapes)
     {
       INFO(shape);
@@ -415,4 +425,90 @@ TEST_CASE("contact under a prescribed tip motion", "[fem][contact]")
   const auto force = f.solver->obstacle_contact()->obstacle_wrenches(f.solver->displacement(), 0.0)[0].force;
   INFO("ball force " << force);
   CHECK(force[1] < -0.1);
+}
+
+// The patch test's block pressed by a box 1 mm into its top, once as
+// BoxObstacle and once as the box's STL surface (12 triangles; the
+// diagonals of its bottom face cross the top's quadrature points on x = y,
+// where the closest feature is an edge between coplanar triangles). Both
+// give the same distance and normal up to round-off (the normal of the
+// mesh is (x - q) / |x - q| of a penetration ~1e-5 m, ~1e-12 off), so they
+// agree to the Newton tolerance 1e-10. Measured: the force to 1.4e-13 and
+// the top corner's displacement to 2.9e-11 (bound 1e-9).
+TEST_CASE("a block pressed by the STL surface of a box: the box's answer", "[fem][contact][stl]")
+{
+  // The STL's box about its origin, which Position places.
+  geometry::testing::box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.02, 0.02, 0.02)).write("contact_stl_box.stl");
+  const std::string place = "    set Position = 0.005, 0.005, 0.03\n    set Motion = 0, 0, -0.001\n";
+  const auto        press = [&](const std::string &name, const std::string &shape) {
+    Triangulation<3> mesh;
+    symmetric_block(mesh);
+    test::MeshSolverFixture f(
+      test::parameters_from_text(name, test::solid_prm("Q2", "log", 2.6e5, 0.3,
+                                                       "subsection Solver\n  set Residual tolerance = 1e-10\n"
+                                                       "  set Displacement tolerance = 1e-10\nend\n" +
+                                                         contact_section(obstacle("crate", shape + place)))),
+      mesh);
+    LoadState pressed;
+    pressed.obstacle_motion = 1;
+    REQUIRE(f.solver->solve(pressed).converged);
+    return std::make_pair(f.solver->obstacle_contact()->obstacle_wrenches(f.solver->displacement(), 1.0)[0].force,
+                          test::displacement_at(*f.solver, Point<3>(edge, edge, edge)));
+  };
+  const auto [box_force, box_u] = press("contact_box", "    set Shape = box\n    set Half sizes = 0.02, 0.02, 0.02\n");
+  const auto [stl_force, stl_u] = press("contact_stl", "    set Shape = stl\n    set File = contact_stl_box.stl\n");
+  INFO("box " << box_force << ", stl " << stl_force << "; top corner " << box_u << ", " << stl_u
+               << "; relative differences " << (stl_force - box_force).norm() / box_force.norm() << ", "
+               << (stl_u - box_u).norm() / box_u.norm());
+  CHECK(box_force[2] > 0.1); // pushed up by the block
+  CHECK((stl_force - box_force).norm() < 1e-9 * box_force.norm());
+  CHECK((stl_u - box_u).norm() < 1e-9 * box_u.norm());
+}
+
+// A plane turned by 0.05 rad about x while it comes down 1.5 mm onto the
+// block, against the same plane brought to that final pose along its
+// normal without turning. Frictionless contact has no history, so both
+// paths end at the same equilibrium, up to the Newton tolerances (1e-10 on
+// the residual and the displacement): the bound 1e-8 on the force and the
+// moment leaves the two paths' different last load steps two orders of
+// room. Measured: 9.1e-15 and 9.0e-15 (the last Newton steps converge
+// quadratically far below the tolerance).
+TEST_CASE("a plane turned along the load path ends where the plane placed at its final pose does",
+          "[fem][contact][motion]")
+{
+  const double          angle = 0.05;
+  const Eigen::Vector3d n(0, std::sin(angle), -std::cos(angle)); // the final normal, R (0, 0, -1)
+  const Eigen::Vector3d point(0, 0, 0.009);                      // the pivot at the end
+  const auto press = [&](const std::string &name, const std::string &plane) {
+    Triangulation<3> mesh;
+    symmetric_block(mesh);
+    test::MeshSolverFixture f(
+      test::parameters_from_text(name, test::solid_prm("Q2", "log", 2.6e5, 0.3,
+                                                       "subsection Solver\n  set Residual tolerance = 1e-10\n"
+                                                       "  set Displacement tolerance = 1e-10\nend\n" +
+                                                         contact_section(obstacle("press", plane)))),
+      mesh);
+    LoadState pressed;
+    pressed.obstacle_motion = 1;
+    REQUIRE(f.solver->solve(pressed).converged);
+    return f.solver->obstacle_contact()->obstacle_wrenches(f.solver->displacement(), 1.0)[0];
+  };
+  const auto turned = press("contact_turned_plane",
+                            "    set Shape = plane\n    set Position = 0, 0, 0.0105\n    set Normal = 0, 0, -1\n"
+                            "    set Motion = 0, 0, -0.0015\n    set Motion rotation = 0.05, 0, 0\n");
+  // At rest 2 mm back along the final normal, clear of the block's top.
+  std::ostringstream placed;
+  placed.precision(17);
+  const Eigen::Vector3d start = point - 0.002 * n, motion = 0.002 * n;
+  placed << "    set Shape = plane\n    set Position = " << start[0] << ", " << start[1] << ", " << start[2]
+         << "\n    set Normal = " << n[0] << ", " << n[1] << ", " << n[2] << "\n    set Motion = " << motion[0]
+         << ", " << motion[1] << ", " << motion[2] << "\n";
+  const auto final_pose = press("contact_placed_plane", placed.str());
+  INFO("turned " << turned.force << ", placed " << final_pose.force << "; relative differences "
+                  << (turned.force - final_pose.force).norm() / final_pose.force.norm() << ", "
+                  << (turned.moment - final_pose.moment).norm() / final_pose.moment.norm());
+  CHECK(turned.force[2] > 0.1);
+  CHECK(turned.force[1] / turned.force[2] == Approx(-std::tan(angle)).epsilon(1e-9)); // along the normal
+  CHECK((turned.force - final_pose.force).norm() < 1e-8 * final_pose.force.norm());
+  CHECK((turned.moment - final_pose.moment).norm() < 1e-8 * final_pose.moment.norm());
 }

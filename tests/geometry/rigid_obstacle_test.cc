@@ -105,8 +105,10 @@ TEST_CASE("the gap alone is the signed distance's gap, outside and inside every 
   for (const RigidObstacle *o : std::vector<const RigidObstacle *>{&plane, &sphere, &cylinder, &box})
     for (const Vector3d &x : {Vector3d(0.1, 0.25, 0.3), Vector3d(0.9, -0.4, 0.2), Vector3d(0.2, 0.2, 0.9),
                               Vector3d(-0.5, 0.7, -0.6), Vector3d(0.15, 0.1, 0.35)})
-      CHECK(o->gap(x, Vector3d(0.01, 0.02, 0.03)) ==
-            Approx(o->distance(x, Vector3d(0.01, 0.02, 0.03)).gap).margin(1e-15));
+      {
+        const RigidTransform moved(R, Vector3d(0.1, 0, 0), Vector3d(0.01, 0.02, 0.03));
+        CHECK(o->gap(x, moved) == Approx(o->distance(x, moved).gap).margin(1e-15));
+      }
 }
 
 TEST_CASE("obstacles refuse degenerate shapes", "[geometry][contact]")

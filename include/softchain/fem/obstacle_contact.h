@@ -7,16 +7,19 @@
 // Computational Contact Mechanics, 2nd ed., 2006, Secs. 5.2 and 6.3).
 //
 // At a point X of a contact face, deformed to x = X + u(X), an obstacle
-// translated by c has the signed distance g(y), normal n(y) and curvature
-// H(y) at y = x - c (RigidObstacle). Per unit reference area:
+// in the pose x = R (y - p) + p + c of its path (Obstacle::pose: turned by R
+// about the pivot p, moved by c) has the signed distance g, normal n and
+// curvature H (RigidObstacle, in world axes), x being y = R^T (x - p - c) + p
+// of its rest frame. Per unit reference area:
 //  - normal: t_N = max(0, lambda - epsilon g), lambda the point's
 //    multiplier, epsilon = Penalty factor E / h (E the cell's Young's
 //    modulus, h the face's size);
-//  - tangential: with y_s the point's stick anchor (its history) and
-//    z = y - y_s, the trial traction t* = -epsilon P z, P = I - n n^T.
-//    Stick where |t*| <= mu t_N: t_T = t*; slip otherwise:
+//  - tangential: with y_s the point's stick anchor (its history, a point
+//    of the obstacle's rest frame, so that it moves with the obstacle) and
+//    z = R (y - y_s) (dz/dx = I), the trial traction t* = -epsilon P z,
+//    P = I - n n^T. Stick where |t*| <= mu t_N: t_T = t*; slip otherwise:
 //    t_T = mu t_N t* / |t*|. A converged state moves the anchor of a
-//    slipping point to y + t_T / epsilon, of an open point to y.
+//    slipping point to y + R^T t_T / epsilon, of an open point to y.
 // The obstacle pushes the body with t = t_N n + t_T: node a of the face
 // receives f_a = int phi_a t dA0, and df_a/du_b = int phi_a phi_b dt/dx dA0
 // with
@@ -64,7 +67,8 @@ namespace softchain::fem
     bool has_friction() const;
 
     // rhs += f (the contact forces on the body), matrix -= df/du (if given),
-    // with the obstacles moved by `motion` times their Motion; and, if
+    // with the obstacles in their pose at path parameter `motion`
+    // (Obstacle::pose); and, if
     // given, unsymmetric_part -= the part of df/du that the symmetric
     // approximation leaves out (the header's comment; zero without friction).
     void assemble(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double motion,
@@ -148,7 +152,7 @@ namespace softchain::fem
     struct PointContact
     {
       geometry::SignedDistance distance;
-      Eigen::Vector3d          y;          // x - c, the point in the obstacle's rest frame
+      Eigen::Vector3d          y;          // R^T (x - p - c) + p, the point in the obstacle's rest frame
       double                   pressure;   // t_N
       Eigen::Vector3d          tangential; // t_T
       Eigen::Matrix3d          stiffness;  // -dt/dx, t = t_N n + t_T

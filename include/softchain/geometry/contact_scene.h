@@ -6,10 +6,15 @@
 //   subsection Contact
 //     set Surfaces = all           # or boundary groups: tip, outer, cavity
 //     subsection table
-//       set Shape    = plane       # plane | sphere | cylinder | box
+//       set Shape    = plane       # plane | sphere | cylinder | box | stl
 //       set Position = 0, -0.02, 0 # a point of the plane, a centre, a point of the axis
 //       set Normal   = 0, 1, 0     # plane
 //       set Motion   = 0, 0.005, 0 # translation along the load path, m
+//       set Motion rotation = 0, 0, 0.1 # turn along the load path about Motion pivot, rad
+//     end
+//     subsection stone
+//       set Shape = stl
+//       set File  = stone.stl       # relative to the .prm's directory, m
 //     end
 //     set Obstacles in solve = all # or none, or obstacle names
 //   end
@@ -37,14 +42,15 @@ namespace softchain::geometry
     std::shared_ptr<const RigidObstacle> body;
 
     // Builds the body; an InputError if the description is no obstacle
-    // (a zero normal or axis, a radius or half size <= 0, mu < 0).
+    // (a zero normal or axis, a radius or half size <= 0, mu < 0, an open
+    // or inconsistently oriented triangle surface).
     explicit Obstacle(const data::ObstacleRecord &description);
 
     const std::string &name() const { return description.name; }
     double             friction() const { return description.friction; }
-    // The translation of the obstacle at the end of a load path (linear in
-    // the path parameter from its rest pose), m.
-    Eigen::Vector3d    motion() const;
+    // The pose at path parameter t in [0, 1] from the rest pose (0): turned
+    // by t Motion rotation about Motion pivot, then moved by t Motion.
+    RigidTransform     pose(double t) const;
   };
 
   struct ContactScene

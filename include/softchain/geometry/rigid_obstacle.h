@@ -1,14 +1,19 @@
 #pragma once
 // RigidObstacle: a rigid body the finger may touch, described by the signed
-// distance of a point to its surface,
-//     g(x) = d(x - c),   n(x) = grad g,   H(x) = grad grad g,
-// in its rest pose shifted by a prescribed translation c. g > 0 is the gap
+// distance d of a point to its surface in its rest pose. Moved from it by a
+// rigid transform x = R (y - p) + p + c (RigidTransform: a turn R about the
+// pivot p, then a translation c), it has at x
+//     g(x) = d(y),   n(x) = R grad d(y),   H(x) = R (grad grad d(y)) R^T,
+//     y = R^T (x - p - c) + p,
+// as the distance is invariant under rigid motions. g > 0 is the gap
 // outside the obstacle, g < 0 the penetration inside it; n is the unit
 // outward normal at the closest surface point and H the curvature of the
 // level set (zero on flat parts). The FEM's contact (PenaltyContact) needs
 // g and n for its residual and H for its consistent tangent. The shapes are
 // analytic (Hart, "Sphere tracing", The Visual Computer 12, 1996, lists the
-// distance functions); no mesh of the obstacle is needed.
+// distance functions); TriangulatedObstacle is a closed triangle mesh.
+#include <softchain/geometry/rigid_transform.h>
+
 #include <Eigen/Dense>
 
 #include <string>
@@ -26,21 +31,17 @@ namespace softchain::geometry
   {
   public:
     virtual ~RigidObstacle() = default;
-    // At x, with the obstacle translated by `offset` from its rest pose.
-    SignedDistance distance(const Eigen::Vector3d &x,
-                            const Eigen::Vector3d &offset = Eigen::Vector3d::Zero()) const
-    {
-      return distance_at_rest(x - offset);
-    }
+    // At x, with the obstacle moved by `pose` from its rest pose.
+    SignedDistance distance(const Eigen::Vector3d &x, const RigidTransform &pose = RigidTransform()) const;
     virtual SignedDistance distance_at_rest(const Eigen::Vector3d &x) const = 0;
     // g alone (no normal or curvature): what a search for the points inside
     // an obstacle needs for most of the points it tests.
-    double gap(const Eigen::Vector3d &x, const Eigen::Vector3d &offset = Eigen::Vector3d::Zero()) const
+    double gap(const Eigen::Vector3d &x, const RigidTransform &pose = RigidTransform()) const
     {
-      return gap_at_rest(x - offset);
+      return gap_at_rest(pose.to_rest(x));
     }
     virtual double gap_at_rest(const Eigen::Vector3d &x) const { return distance_at_rest(x).gap; }
-    // "plane", "sphere", "cylinder" or "box".
+    // "plane", "sphere", "cylinder", "box" or "stl".
     virtual std::string shape() const = 0;
   };
 

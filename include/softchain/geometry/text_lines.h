@@ -26,6 +26,9 @@ namespace softchain::geometry
     // Writes `text`, creating missing parent directories; InputError
     // "PATH: cannot write the KIND".
     static void write_all(const std::string &path, const std::string &text, const std::string &kind);
+    // `file` named in the file `beside`: relative to its directory (an
+    // absolute or empty name as it is), how the .prm's file parameters resolve.
+    static std::string beside(const std::string &beside, const std::string &file);
 
   private:
     std::ifstream in_;

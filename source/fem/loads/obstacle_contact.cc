@@ -158,8 +158,9 @@ namespace softchain::fem
     const std::size_t index   = point * scene.obstacles.size() + k;
     const double      epsilon = points[point].epsilon;
     PointContact      c;
-    c.y          = eigen(x) - motion * o.motion();
-    c.distance   = o.body->distance_at_rest(c.y);
+    const geometry::RigidTransform pose = o.pose(motion);
+    c.y          = pose.to_rest(eigen(x));
+    c.distance   = o.body->distance(eigen(x), pose);
     c.pressure   = std::max(0.0, state.lambda[index] - epsilon * c.distance.gap);
     c.tangential = Eigen::Vector3d::Zero();
     c.stiffness  = Eigen::Matrix3d::Zero();
@@ -173,7 +174,7 @@ namespace softchain::fem
     c.status                 = Status::slip;
     if (o.friction() == 0)
       return c;
-    const Eigen::Vector3d z     = c.y - state.anchor[index];
+    const Eigen::Vector3d z     = pose.rotation() * (c.y - state.anchor[index]);
     const Eigen::Matrix3d P     = Eigen::Matrix3d::Identity() - n * n.transpose();
     const Eigen::Vector3d trial = -epsilon * P * z;
     const Eigen::Matrix3d dtrial =
@@ -297,7 +298,8 @@ namespace softchain::fem
           if (c.status == Status::open)
             anchor[i] = c.y;
           else if (c.status == Status::slip)
-            anchor[i] = c.y + c.tangential / points[point].epsilon;
+            anchor[i] = c.y + scene.obstacles[k].pose(motion).rotation().transpose() * c.tangential /
+                                points[point].epsilon;
         }
     });
     state.anchor = std::move(anchor);

@@ -94,7 +94,7 @@ namespace softchain::chain
 
     const CollisionSurface        *surface_ = nullptr;
     std::vector<geometry::Obstacle> obstacles_;
-    std::vector<Eigen::Vector3d>    motions_; // each obstacle's translation at the end of its motion
+    std::vector<geometry::RigidTransform> poses_; // each obstacle at the end of its motion (path parameter 1)
     std::vector<Eigen::Vector3d>    offsets_; // L_k(p)
     double                          stiffness_ = 0.0;
     std::vector<Touch>              touches_;

@@ -4,8 +4,9 @@
 // backdrop), cut to the region of the finger: a plane as the rectangle of
 // it under the finger's box, a cylinder as its two end discs and the quads
 // between them over the finger's width, a sphere as a disc facing the
-// viewer, a box as its six faces. The obstacle is placed at the end of its
-// motion, where the sample holds it.
+// viewer, a box as its six faces, an stl as its triangles. The obstacle is
+// placed at the end of its motion (turn and translation), where the sample
+// holds it.
 #include <softchain/data/obstacle_record.h>
 #include <softchain/report/oblique_view.h>
 
