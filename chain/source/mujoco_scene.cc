@@ -52,7 +52,15 @@ namespace softchain::chain
         geom << "type=\"cylinder\" zaxis=\"" << triple(o.direction) << "\" size=\"" << o.radius << ' '
              << cylinder_half_length << "\"";
       else if (o.shape == "box")
-        geom << "type=\"box\" size=\"" << triple(o.half_sizes) << "\"";
+        {
+          geom << "type=\"box\" size=\"" << triple(o.half_sizes) << "\"";
+          // A turned box: its rotation vector as MuJoCo's axis and angle
+          // (the finger's MJCF sets the compiler to radians).
+          const Eigen::Vector3d turn(o.rotation[0], o.rotation[1], o.rotation[2]);
+          if (turn.norm() > 0)
+            geom << " axisangle=\"" << turn.x() / turn.norm() << ' ' << turn.y() / turn.norm() << ' '
+                 << turn.z() / turn.norm() << ' ' << turn.norm() << "\"";
+        }
       else
         throw data::InputError(error_prefix(o) + "Shape = " + o.shape +
                                " has no MuJoCo primitive (plane, sphere, cylinder or box)");

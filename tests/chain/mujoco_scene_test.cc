@@ -11,6 +11,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <vector>
+
 #include <fstream>
 
 using namespace softchain::chain;
@@ -128,6 +131,15 @@ TEST_CASE("Every shape of subsection Contact is a MuJoCo primitive in the scene"
       const MujocoScene scene(finger, o, 0.002, dir.file("scene.xml"));
       CHECK(scene.model()->geom_type[mj_name2id(scene.model(), mjOBJ_GEOM, "obstacle")] == type);
     }
+  // A turned box keeps its turn: 0.4 rad about (1, 2, 2)/3 is MuJoCo's geom
+  // quaternion (cos 0.2, sin 0.2 (1, 2, 2)/3).
+  o.shape    = "box";
+  o.rotation = {0.4 / 3, 0.8 / 3, 0.8 / 3};
+  const MujocoScene turned(finger, o, 0.002, dir.file("scene.xml"));
+  const mjtNum     *q = turned.model()->geom_quat + 4 * mj_name2id(turned.model(), mjOBJ_GEOM, "obstacle");
+  CHECK(q[0] == Approx(std::cos(0.2)).margin(1e-12));
+  for (int i = 0; i < 3; ++i)
+    CHECK(q[i + 1] == Approx(std::sin(0.2) * std::vector<double>{1, 2, 2}[i] / 3).margin(1e-12));
 }
 
 TEST_CASE("softchain simulate with an unknown scene name is an error naming --scene and the obstacles")
