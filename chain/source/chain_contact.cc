@@ -115,24 +115,23 @@ namespace softchain::chain
   void ChainContact::tangent_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
                                   Eigen::VectorXd &weights) const
   {
-    std::vector<std::pair<Eigen::Vector3d, double>> directions;
-    std::vector<int>                                owner;
-    for (std::size_t t = 0; t < touches_.size(); ++t)
-      {
-        append_rows(touches_[t], true, directions);
-        owner.resize(directions.size(), static_cast<int>(t));
-      }
-    fill_rows(pose, directions, owner, n_angles, rows, weights);
+    rows_of_touches(pose, true, n_angles, rows, weights);
   }
 
   void ChainContact::curvature_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
                                     Eigen::VectorXd &weights) const
   {
+    rows_of_touches(pose, false, n_angles, rows, weights);
+  }
+
+  void ChainContact::rows_of_touches(const ChainPose &pose, const bool normals, const int n_angles,
+                                     Eigen::MatrixXd &rows, Eigen::VectorXd &weights) const
+  {
     std::vector<std::pair<Eigen::Vector3d, double>> directions;
     std::vector<int>                                owner;
     for (std::size_t t = 0; t < touches_.size(); ++t)
       {
-        append_rows(touches_[t], false, directions);
+        append_rows(touches_[t], normals, directions);
         owner.resize(directions.size(), static_cast<int>(t));
       }
     fill_rows(pose, directions, owner, n_angles, rows, weights);

@@ -94,22 +94,36 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  // The centred box mesh, and M2 (uniform) and M1 (30 % stiffer) stiffness
+  // files under <out>/stiffness; returns M2's model.
+  ChainModel write_two_reductions(const std::string &out)
+  {
+    chain::testing::UniformReduction m2, m1;
+    m1.k *= 1.3;
+    const StiffnessFiles m2_files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
+    chain::testing::write_reduction(m2_files, m2);
+    chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", data::RotationMethod::bounding_box, 0.5), m1);
+    return m2_files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true);
+  }
+
+  data::MeshRecord centred_box_mesh()
+  {
+    chain::testing::BoxMeshSpec spec;
+    spec.y0 = -0.5 * spec.height; // centred: joints on the x axis
+    return chain::testing::box_mesh(spec);
+  }
+} // namespace
+
 TEST_CASE("run_chain validates M1, M2 and the baseline against a database, writes MJCF")
 {
   softchain::testing::ScratchDirectory dir("chain_run");
   const std::string         out = dir.file("out");
   const std::string         prm = dir.file("finger.prm");
   std::ofstream(prm) << chain_prm;
-  chain::testing::BoxMeshSpec spec;
-  spec.y0                     = -0.5 * spec.height; // centred: joints on the x axis
-  const data::MeshRecord mesh = chain::testing::box_mesh(spec);
-
-  chain::testing::UniformReduction m2, m1;
-  m1.k *= 1.3;
-  const StiffnessFiles m2_files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
-  chain::testing::write_reduction(m2_files, m2);
-  chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", data::RotationMethod::bounding_box, 0.5), m1);
-  write_database(dir.file("database.h5"), m2_files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true), mesh);
+  const data::MeshRecord mesh = centred_box_mesh();
+  write_database(dir.file("database.h5"), write_two_reductions(out), mesh);
 
   REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
   const data::CsvTable table = data::CsvTable::read(out + "/chain/validation.csv");
@@ -251,15 +265,8 @@ TEST_CASE("run_chain compares contact samples in force and pose and writes grasp
   std::string               text = chain_prm;
   text.replace(text.find("validation, pressure"), 20, "validation, pressure, contact");
   std::ofstream(prm) << text;
-  chain::testing::BoxMeshSpec spec;
-  spec.y0                     = -0.5 * spec.height;
-  const data::MeshRecord mesh = chain::testing::box_mesh(spec);
-  chain::testing::UniformReduction m2, m1;
-  m1.k *= 1.3;
-  const StiffnessFiles m2_files(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
-  chain::testing::write_reduction(m2_files, m2);
-  chain::testing::write_reduction(StiffnessFiles(out + "/stiffness", data::RotationMethod::bounding_box, 0.5), m1);
-  const ChainModel m2_model = m2_files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true);
+  const data::MeshRecord mesh     = centred_box_mesh();
+  const ChainModel       m2_model = write_two_reductions(out);
   write_database(dir.file("database.h5"), m2_model, mesh);
   {
     const data::DesignRecord design{"box", "0123456789abcdef", "Q1", "test", chain_prm};

@@ -87,7 +87,10 @@ namespace softchain::chain
     double max_penetration() const;
 
   private:
-    // Appends the rows of `touch` to `directions` (e, weight) and `owner`.
+    // The rows of every touch, with or without the normal rows.
+    void rows_of_touches(const ChainPose &pose, bool normals, int n_angles, Eigen::MatrixXd &rows,
+                         Eigen::VectorXd &weights) const;
+    // Appends the rows of `touch` to `directions` (e, weight).
     void append_rows(const Touch &touch, bool normal, std::vector<std::pair<Eigen::Vector3d, double>> &directions) const;
     void fill_rows(const ChainPose &pose, const std::vector<std::pair<Eigen::Vector3d, double>> &directions,
                    const std::vector<int> &owner, int n_angles, Eigen::MatrixXd &rows, Eigen::VectorXd &weights) const;
