@@ -60,7 +60,6 @@ namespace softchain::chain
     double update(const ChainPose &pose);
     const std::vector<Touch> &touches() const { return touches_; }
     double                    stiffness() const { return stiffness_; }
-    void                      set_stiffness(double stiffness) { stiffness_ = stiffness; }
 
     // The tangent's low-rank part at the last update, J^T k_c (n n^T + g H_g) J
     // = V^T diag(w) V: rows V (one per row, n_angles columns) and weights w.
