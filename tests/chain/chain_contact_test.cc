@@ -2,10 +2,12 @@
 // against the closed form of the penalty model and its exact-constraint
 // limit; the contact's energy gradient and consistent tangent (plane and
 // cylinder, the curvature term included) against central differences; the
-// Woodbury Newton step against the dense solve; the collision surface's
-// interpolation, outer surface and errors.
+// Woodbury Newton step against the dense solve; contact with the tip held
+// (TipConstrainedEquilibrium); the collision surface's interpolation, outer
+// surface and errors.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/finger_collision_surface.h>
+#include <softchain/chain/tip_constrained_equilibrium.h>
 
 #include "box_mesh.h"
 #include "central_differences.h"
@@ -181,6 +183,50 @@ TEST_CASE("a finger pressed on a table converges, pushes only where it penetrate
   CHECK(0.05 * e.angles[2] == Approx(-1e-7 * 3e4 + moment).epsilon(1e-8));
   // The penetration the penalty leaves: |f| / k_c per point.
   CHECK(solver.contact().max_penetration() == Approx(touches.front().force.norm() / 1e5).epsilon(1.0));
+}
+
+TEST_CASE("a finger on a table with its tip held: where it rests anyway no tip force and the same "
+          "contact; lifted, joint 1 balances the table's and the holder's moments")
+{
+  const int    n = 6;
+  const double a = 0.015;
+  ChainModel   model = uniform_finger(n, a, {0.3, 0.2, 0.05}, {0.0, 0.0, -1e-7});
+  model.set_collision_surface(palm_points(n, a, 4, 0.003, 0.005));
+  const ChainLoad   load{3e4, {}, {plane(-0.012)}};
+  ChainEquilibrium  free(model);
+  const Equilibrium e = free.solve(load);
+  REQUIRE(e.converged);
+  const Eigen::Vector3d tip   = free.pose().tip_position;
+  const double          table = free.contact().obstacle_wrenches()[0].force[1];
+  REQUIRE(table < -1e-3); // the table is pushed down
+
+  // The tip-held solver with the contact in its residual and tangent, from a
+  // start turned 0.02 rad off the answer.
+  TipConstrainedEquilibrium held(model);
+  Eigen::VectorXd           start = e.angles;
+  start[3 * (n - 1) + 2] += 0.02;
+  const ConstrainedEquilibrium c = held.solve(load, tip, start);
+  REQUIRE(c.converged);
+  // Tolerance: the equilibrium tolerance 1e-10 relative, on forces of ~0.1 N
+  // and angles of ~0.1 rad.
+  CHECK(c.contact_force.norm() < 1e-8);
+  CHECK((c.angles - e.angles).lpNorm<Eigen::Infinity>() < 1e-8);
+
+  // The tip lifted 1 mm: it pulls up, the table carries less, and joint 1
+  // balances the pressure against the table's and the tip's moments,
+  // k phi_1 = J_p p + (sum (x - c_1) x f)_z.
+  const ConstrainedEquilibrium lifted = held.solve(load, tip + Eigen::Vector3d(0, 0.001, 0), e.angles);
+  REQUIRE(lifted.converged);
+  CHECK(lifted.contact_force.y() > 0.0); // the holder pulls the tip up
+  ChainEquilibrium check(model);
+  check.set_load(held.with_contact(load, lifted.contact_force));
+  check.residual(lifted.angles);
+  const Eigen::Vector3d c_1    = check.pose().joint_positions[0];
+  double                moment = (check.pose().tip_position - c_1).cross(lifted.contact_force).z();
+  for (const auto &t : check.contact().touches())
+    moment += (t.position - c_1).cross(t.force).z();
+  CHECK(0.05 * lifted.angles[2] == Approx(-1e-7 * 3e4 + moment).epsilon(1e-8));
+  CHECK(-check.contact().obstacle_wrenches()[0].force[1] < -table);
 }
 
 TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer surface nodes; errors")
