@@ -34,37 +34,13 @@ namespace softchain::chain
     surface->offsets_at(pressure, offsets_);
   }
 
-  // Cluster by cluster (CollisionSurface), so that the touches come sorted
-  // by link; a cluster whose bounding sphere lies outside an obstacle
-  // (g(centre) > radius, g being 1-Lipschitz) has no point inside it.
+  // The touches are the points inside an obstacle: g < 0.
   double ChainContact::update(const ChainPose &pose)
   {
-    touches_.clear();
+    candidates(pose, 0.0, touches_);
     double energy = 0.0;
-    if (obstacles_.empty())
-      return energy;
-    for (const CollisionSurface::Cluster &cluster : surface_->clusters())
-      {
-        const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
-        const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
-        const Eigen::Vector3d  centre = c + R * cluster.centre;
-        for (std::size_t o = 0; o < obstacles_.size(); ++o)
-          {
-            const geometry::Obstacle &obstacle = obstacles_[o];
-            if (obstacle.body->gap(centre, poses_[o]) > cluster.radius)
-              continue;
-            for (int k = cluster.begin; k < cluster.end; ++k)
-              {
-                const Eigen::Vector3d x = c + R * offsets_[k];
-                if (!(obstacle.body->gap(x, poses_[o]) < 0.0))
-                  continue;
-                const geometry::SignedDistance d = obstacle.body->distance(x, poses_[o]);
-                touches_.push_back({cluster.link, k, static_cast<int>(o), x, d.normal,
-                                    -stiffness_ * d.gap * d.normal, d.gap, d.hessian});
-                energy += 0.5 * stiffness_ * d.gap * d.gap;
-              }
-          }
-      }
+    for (const Touch &touch : touches_)
+      energy += 0.5 * stiffness_ * touch.gap * touch.gap;
     return energy;
   }
 
@@ -137,9 +113,15 @@ namespace softchain::chain
     fill_rows(pose, directions, owner, n_angles, rows, weights);
   }
 
+  // Cluster by cluster (CollisionSurface), so that the points come sorted
+  // by link; a cluster whose bounding sphere lies farther than `margin`
+  // from an obstacle (g(centre) > radius + margin, g being 1-Lipschitz) has
+  // no point within it. A point inside (g < 0) carries f = -k_c g n.
   void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near) const
   {
     near.clear();
+    if (obstacles_.empty())
+      return;
     for (const CollisionSurface::Cluster &cluster : surface_->clusters())
       {
         const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];

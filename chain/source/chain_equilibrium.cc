@@ -252,12 +252,11 @@ namespace softchain::chain
     contact_step(active, gaps, free_residual, factored, false);
   }
 
-  // The candidates predicted inside after direction_, g_c + n_c . (v_b +
-  // w_b x x_c), from each link's velocity (w_b, v_b: the point velocity is
-  // v_b + w_b x x) under the angle rates d, summed joint by joint: a turn
+  // Each link's velocity (w_b, v_b: the point velocity is v_b + w_b x x)
+  // under the angle rates direction_, summed joint by joint: a turn
   // d_{i,alpha} about a_{i,alpha} through p_{i,alpha} adds a d to w and
-  // p x a d to v. Returns whether the set changed.
-  bool ChainEquilibrium::update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active)
+  // p x a d to v.
+  void ChainEquilibrium::update_link_velocities()
   {
     Eigen::Vector3d w = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
     link_velocities_.resize(chain_.n_joints());
@@ -272,6 +271,13 @@ namespace softchain::chain
           }
         link_velocities_[i] = {w, v};
       }
+  }
+
+  // The candidates predicted inside after direction_, g_c + n_c . (v_b +
+  // w_b x x_c). Returns whether the set changed.
+  bool ChainEquilibrium::update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active)
+  {
+    update_link_velocities();
     bool changed = false;
     for (std::size_t c = 0; c < active.size(); ++c)
       {
@@ -293,7 +299,7 @@ namespace softchain::chain
   // Bounded per cluster by |v_b + w_b x centre| + |w_b| radius.
   void ChainEquilibrium::limit_surface_motion()
   {
-    update_active_set(Eigen::VectorXd(), no_candidates_); // link velocities of direction_
+    update_link_velocities();
     double farthest = 0.0;
     for (const CollisionSurface::Cluster &cluster : model_.collision_surface()->clusters())
       {

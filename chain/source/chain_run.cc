@@ -129,15 +129,14 @@ namespace softchain::chain
     void add_collision_surfaces(std::vector<ChainModel> &models, const data::ActuationDatabase &database,
                                 const EquilibriumSettings &settings)
     {
-      const auto ids = database.sample_ids();
-      if (std::none_of(ids.begin(), ids.end(), [&](const std::string &id) {
-            return !database.read_sample(id).actuation.obstacles.empty();
-          }))
+      const SurfaceSamples samples = SurfaceSamples::read(database);
+      if (!samples.contact)
         return;
       for (ChainModel &model : models)
-        model.set_collision_surface(model.has_link_geometry()
-                                      ? pressure_shaped_collision_surface(model, database, settings)
-                                      : rigid_collision_surface(model, database.mesh()));
+        model.set_collision_surface(
+          model.has_link_geometry()
+            ? pressure_shaped_collision_surface(model, database.mesh(), samples.inflated, settings)
+            : rigid_collision_surface(model, database.mesh()));
     }
 
     // Blocked force and grasp per model, if there are contact samples.

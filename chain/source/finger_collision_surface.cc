@@ -117,19 +117,24 @@ namespace softchain::chain
     return CollisionSurface(points.links, {rest}, model.chain().n_joints());
   }
 
-  CollisionSurface pressure_shaped_collision_surface(const ChainModel              &model,
-                                                     const data::ActuationDatabase &database,
-                                                     const EquilibriumSettings     &settings)
+  SurfaceSamples SurfaceSamples::read(const data::ActuationDatabase &database)
   {
-    const data::MeshRecord &mesh   = database.mesh();
-    const SurfacePoints     points = surface_points(model.chain(), mesh);
-    std::map<double, std::vector<data::Point3>> inflated; // deformed nodes by pressure
+    SurfaceSamples samples;
     for (const std::string &id : database.sample_ids())
       {
         data::SampleRecord sample = database.read_sample(id);
+        samples.contact |= !sample.actuation.obstacles.empty();
         if (pressure_only(sample))
-          inflated.emplace(sample.actuation.pressure, std::move(sample.x));
+          samples.inflated.emplace(sample.actuation.pressure, std::move(sample.x));
       }
+    return samples;
+  }
+
+  CollisionSurface pressure_shaped_collision_surface(const ChainModel &model, const data::MeshRecord &mesh,
+                                                     const InflatedNodes       &inflated,
+                                                     const EquilibriumSettings &settings)
+  {
+    const SurfacePoints                points = surface_points(model.chain(), mesh);
     std::vector<CollisionSurface::Row> rows{
       {0.0, offsets_in_links(points, model.chain().rest_pose(), mesh.X)}};
     ChainEquilibrium equilibrium(model, settings);

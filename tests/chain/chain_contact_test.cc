@@ -60,6 +60,27 @@ namespace
           }
     return CollisionSurface(links, {{0.0, offsets}}, n);
   }
+
+  // Six links of 15 mm, k_phi 0.05 N m/rad, J_p p bending them down by
+  // 0.06 rad each at 30 kPa, with a palm 3 mm below the joints; pressed at
+  // 30 kPa on a table 12 mm below the joint line.
+  ChainModel finger_with_palm()
+  {
+    ChainModel model = uniform_finger(6, 0.015, {0.3, 0.2, 0.05}, {0.0, 0.0, -1e-7});
+    model.set_collision_surface(palm_points(6, 0.015, 4, 0.003, 0.005));
+    return model;
+  }
+
+  const ChainLoad on_table{3e4, {}, {plane(-0.012)}};
+
+  // (sum of (x - c_1) x f over the touches)_z at `solver`'s last pose.
+  double contact_moment_about_joint_1(const ChainEquilibrium &solver)
+  {
+    double moment = 0.0;
+    for (const auto &t : solver.contact().touches())
+      moment += (t.position - solver.pose().joint_positions[0]).cross(t.force).z();
+    return moment;
+  }
 } // namespace
 
 TEST_CASE("a joint bent onto a table: the penalty model's closed form and the exact contact's limit")
@@ -153,12 +174,9 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
 TEST_CASE("a finger pressed on a table converges, pushes only where it penetrates, and the table "
           "takes the joints' torque")
 {
-  const int    n = 6;
-  const double a = 0.015;
-  ChainModel   model = uniform_finger(n, a, {0.3, 0.2, 0.05}, {0.0, 0.0, -1e-7});
-  model.set_collision_surface(palm_points(n, a, 4, 0.003, 0.005));
+  const ChainModel  model = finger_with_palm();
+  const ChainLoad  &load  = on_table;
   ChainEquilibrium  solver(model);
-  const ChainLoad   load{3e4, {}, {plane(-0.012)}};
   const Equilibrium e = solver.solve(load);
   REQUIRE(e.converged);
   CHECK(e.iterations < 20);
@@ -177,10 +195,7 @@ TEST_CASE("a finger pressed on a table converges, pushes only where it penetrate
       CHECK(touching == (x.y() < -0.012));
     }
   // Joint 1's moment balance: k phi_1 = J_p p + (moment of the contact forces about c_1)_z.
-  double moment = 0.0;
-  for (const auto &t : touches)
-    moment += (t.position - solver.pose().joint_positions[0]).cross(t.force).z();
-  CHECK(0.05 * e.angles[2] == Approx(-1e-7 * 3e4 + moment).epsilon(1e-8));
+  CHECK(0.05 * e.angles[2] == Approx(-1e-7 * 3e4 + contact_moment_about_joint_1(solver)).epsilon(1e-8));
   // The penetration the penalty leaves: |f| / k_c per point.
   CHECK(solver.contact().max_penetration() == Approx(touches.front().force.norm() / 1e5).epsilon(1.0));
 }
@@ -188,11 +203,9 @@ TEST_CASE("a finger pressed on a table converges, pushes only where it penetrate
 TEST_CASE("a finger on a table with its tip held: where it rests anyway no tip force and the same "
           "contact; lifted, joint 1 balances the table's and the holder's moments")
 {
-  const int    n = 6;
-  const double a = 0.015;
-  ChainModel   model = uniform_finger(n, a, {0.3, 0.2, 0.05}, {0.0, 0.0, -1e-7});
-  model.set_collision_surface(palm_points(n, a, 4, 0.003, 0.005));
-  const ChainLoad   load{3e4, {}, {plane(-0.012)}};
+  const int         n     = 6;
+  const ChainModel  model = finger_with_palm();
+  const ChainLoad  &load  = on_table;
   ChainEquilibrium  free(model);
   const Equilibrium e = free.solve(load);
   REQUIRE(e.converged);
@@ -221,10 +234,8 @@ TEST_CASE("a finger on a table with its tip held: where it rests anyway no tip f
   ChainEquilibrium check(model);
   check.set_load(held.with_contact(load, lifted.contact_force));
   check.residual(lifted.angles);
-  const Eigen::Vector3d c_1    = check.pose().joint_positions[0];
-  double                moment = (check.pose().tip_position - c_1).cross(lifted.contact_force).z();
-  for (const auto &t : check.contact().touches())
-    moment += (t.position - c_1).cross(t.force).z();
+  const double moment = (check.pose().tip_position - check.pose().joint_positions[0]).cross(lifted.contact_force).z() +
+                        contact_moment_about_joint_1(check);
   CHECK(0.05 * lifted.angles[2] == Approx(-1e-7 * 3e4 + moment).epsilon(1e-8));
   CHECK(-check.contact().obstacle_wrenches()[0].force[1] < -table);
 }

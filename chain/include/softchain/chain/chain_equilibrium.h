@@ -131,6 +131,7 @@ namespace softchain::chain
     void   contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
                         const Eigen::VectorXd &free_residual, bool factored, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
+    void   update_link_velocities();
     bool   update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active);
     void   limit_surface_motion();
     const Eigen::RowVectorXd near_row(Eigen::Index c);
@@ -155,7 +156,6 @@ namespace softchain::chain
     std::vector<ChainContact::Touch> near_;     // the step's active-set candidates
     Eigen::MatrixXd           near_rows_;       // their normal rows, where computed
     std::vector<char>         has_row_;         // which of them are
-    std::vector<char>         no_candidates_;   // (empty: link velocities alone)
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> link_velocities_; // (w_b, v_b) under a step
     Eigen::MatrixXd           curvature_rows_;  // the touching points' curvature rows
     Eigen::VectorXd           curvature_weights_;

@@ -9,6 +9,7 @@
 #include <softchain/data/actuation_database.h>
 
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace softchain::chain
@@ -22,12 +23,26 @@ namespace softchain::chain
   // chain: one row, at p = 0 (the paper's rigid links, the baseline).
   CollisionSurface rigid_collision_surface(const ChainModel &model, const data::MeshRecord &mesh);
 
-  // The same surface shaped by the pressure: one row per converged
-  // pressure-only sample of `database` (no forces, tip motion, obstacles or
-  // volume control; role "pressure"), the offsets from the chain's own
-  // equilibrium pose at that pressure (CollisionSurface). A pressure whose
-  // chain equilibrium fails is left out.
-  CollisionSurface pressure_shaped_collision_surface(const ChainModel &model,
-                                                     const data::ActuationDatabase &database,
+  // The deformed nodes of the converged pressure-only samples (role
+  // "pressure", no forces, tip motion, obstacles or volume control), by
+  // pressure.
+  using InflatedNodes = std::map<double, std::vector<data::Point3>>;
+
+  // What the collision surfaces need from a database, in one pass over its
+  // samples: whether any is a contact sample, and the inflated nodes.
+  struct SurfaceSamples
+  {
+    bool          contact = false;
+    InflatedNodes inflated;
+
+    static SurfaceSamples read(const data::ActuationDatabase &database);
+  };
+
+  // The same surface shaped by the pressure: one row per pressure of
+  // `inflated`, the offsets from the chain's own equilibrium pose at that
+  // pressure (CollisionSurface). A pressure whose chain equilibrium fails
+  // is left out.
+  CollisionSurface pressure_shaped_collision_surface(const ChainModel &model, const data::MeshRecord &mesh,
+                                                     const InflatedNodes       &inflated,
                                                      const EquilibriumSettings &settings);
 } // namespace softchain::chain
