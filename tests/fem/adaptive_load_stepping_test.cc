@@ -73,6 +73,22 @@ TEST_CASE("a failed step is retried a quarter as long, a hard step shrinks the n
   CHECK(path.step() == Approx(0.25 / 8).epsilon(1e-14));
 }
 
+TEST_CASE("a step that would leave a sliver of the path goes to its end, within the maximum step",
+          "[fem][stepping]")
+{
+  const SolverParameters prm = stepping(1e-4, 1.0);
+  AdaptiveLoadStepping   path(prm, 0.45);
+  path.converged(5);
+  CHECK(path.next() == 1.0); // 0.55 left, within 1.25 times the step 0.45
+  AdaptiveLoadStepping short_path(prm, 0.4);
+  short_path.converged(5);
+  CHECK(short_path.next() == 0.8); // 0.6 left: more than 1.25 times 0.4
+  const SolverParameters capped = stepping(1e-4, 0.5);
+  AdaptiveLoadStepping   capped_path(capped, 0.45);
+  capped_path.converged(5);
+  CHECK(capped_path.next() == Approx(0.9).epsilon(1e-14)); // 0.55 left exceeds the maximum step
+}
+
 TEST_CASE("a path whose every step fails is given up below the minimum step",
           "[fem][stepping]")
 {

@@ -27,7 +27,8 @@ namespace softchain::fem
     bool   finished() const { return s >= 1.0; }
     // The path parameter of the last converged state (0 before any).
     double reached() const { return s; }
-    // The path parameter to try next: min(1, reached() + step).
+    // The path parameter to try next: reached() + step, or 1 where that
+    // would leave less than a quarter of the step to it.
     double next() const;
     double step() const { return increment; }
 

@@ -32,14 +32,10 @@ namespace softchain::fem
     virtual void accept_step(double s) = 0;
     // The step failed: x back to the last converged state.
     virtual void reject_step() = 0;
-    // After Newton converged at s: updates the problem's multipliers (an
-    // augmented Lagrangian's Uzawa step) and returns true if Newton must
-    // solve the step again with them; false when the state is accepted.
+    // After Newton converged at the path's end: updates the problem's
+    // multipliers (an augmented Lagrangian's Uzawa step) and returns true if
+    // Newton must solve on with them; false when the state is accepted.
     virtual bool augment() { return false; }
-    // A problem with history (friction's stick anchors) commits it at every
-    // converged step, so that every step converges to the final tolerances,
-    // not to Solver/Intermediate tolerance.
-    virtual bool path_dependent() const { return false; }
   };
 
   class LoadPath
@@ -70,6 +66,13 @@ namespace softchain::fem
     Result follow(LoadPathProblem &problem, std::vector<double> *history = nullptr);
 
   private:
+    // The path's end converged (or not: `outcome`): the problem's multiplier
+    // updates, each followed by Newton; adds its iterations to `iterations`.
+    NewtonSolver::Outcome augment_to_end(LoadPathProblem &problem, NewtonSystem &system,
+                                         NewtonSolver &newton, NewtonSolver::Outcome outcome,
+                                         Result &result, unsigned int &iterations,
+                                         std::vector<double> *history) const;
+
     const Parameters &prm;
     const double      first_step;
     const std::string name;

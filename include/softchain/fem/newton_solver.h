@@ -14,9 +14,11 @@
 //     the error bounded by the last update or estimated by the simplified
 //     Newton correction K(x_{k-1})^-1 R(x_k) from kept factors (Deuflhard,
 //     Newton Methods for Nonlinear Problems, 2004, Sec. 2.1, NLEQ-ERR);
-//  3. dx = -K^-1 R, x_{k+1} = x_k + a dx, a = 1 unless the line search on the
-//     energy's slope s(a) = dx . R(x_k + a dx) cuts it (Crisfield, Non-linear
-//     Finite Element Analysis of Solids and Structures, Vol. 1, Sec. 9.3).
+//  3. dx = -K^-1 R, x_{k+1} = x_k + a dx, a = 1 unless the system admits
+//     less of it (contact points entering an obstacle) or the line search on
+//     the energy's slope s(a) = dx . R(x_k + a dx) cuts it (Crisfield,
+//     Non-linear Finite Element Analysis of Solids and Structures, Vol. 1,
+//     Sec. 9.3).
 #include <softchain/fem/parameters.h>
 
 #include <ostream>
@@ -54,6 +56,10 @@ namespace softchain::fem
     virtual void   apply_correction() = 0;
     // Shortens the last correction: x = x_old + factor (x - x_old), dx *= factor.
     virtual void   scale_correction(double factor) = 0;
+    // The fraction of the correction dx the system lets Newton take (1: all
+    // of it): a step that carries contact points deep into an obstacle is
+    // stopped where they enter (ObstacleContact::entry_fraction).
+    virtual double admissible_fraction() { return 1.0; }
     // Whether the energy line search applies (else only a step that inverts
     // an element is shortened).
     virtual bool   energy_line_search() const = 0;
@@ -74,11 +80,6 @@ namespace softchain::fem
     {
       Status       status;
       unsigned int iterations;
-      // The iterations after which |R| <= Intermediate tolerance times the
-      // residual scale and the last update <= Intermediate tolerance |x|
-      // (`iterations` where the solve aims at the intermediate tolerance or
-      // never got there): how nonlinear the step was, whatever it aimed at.
-      unsigned int iterations_to_intermediate;
       bool         converged() const { return status == Status::converged; }
     };
 

@@ -80,8 +80,21 @@ namespace softchain::fem
     // The deepest penetration over all contact points, as a fraction of the
     // local face size (0 where nothing penetrates).
     double deepest_penetration(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double motion) const;
-    // Uzawa's update lambda <- t_N if the deepest penetration exceeds the
-    // tolerance; returns whether it did (a new Newton solve is due).
+    // The largest fraction a in (0, 1] of the step from u to u + du for which
+    // no contact point that no obstacle presses at u (t_N = 0) enters one
+    // deeper than `depth` times its face's size, the gap taken as linear
+    // along the step: a_i = (g_0 + depth h) / (g_0 - g_1) where g_1 <
+    // -depth h. Such a point has no stiffness in the tangent that made du,
+    // so the step may carry it through the obstacle's surface as far as the
+    // free body would go; its penalty then pushes back with epsilon g.
+    double entry_fraction(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u,
+                          const dealii::TrilinosWrappers::MPI::Vector &ghosted_u_stepped, double motion,
+                          double depth) const;
+    // Uzawa's update lambda <- t_N if it changes some multiplier by more
+    // than the penetration tolerance: |t_N - lambda| > Penetration tolerance
+    // epsilon h, where a point penetrates deeper than that or a point with
+    // lambda > 0 has lifted off; returns whether it did (a new Newton solve
+    // is due).
     bool augment(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u, double motion);
 
     // The history of the contact points: multipliers and stick anchors.

@@ -143,6 +143,16 @@ namespace softchain::fem
     double correction_slope() const override { return -(du * rhs); }
     void   apply_correction() override { apply_update(du); }
     void   scale_correction(double factor) override;
+    // The fraction of du along which no contact point that no obstacle
+    // presses enters one deeper than 2 % of its face's size
+    // (ObstacleContact::entry_fraction; 1 without contact).
+    double admissible_fraction() override;
+    // The same for the step u += step, the obstacles moved by `motion`.
+    double admissible_fraction(const dealii::TrilinosWrappers::MPI::Vector &step, double motion);
+    // Shortens the step from the owned state `from` to `to` (a prediction)
+    // the same way: to = from + a (to - from); returns a.
+    double stop_at_contact(const dealii::TrilinosWrappers::MPI::Vector &from,
+                           dealii::TrilinosWrappers::MPI::Vector &to, double motion);
     // With springs the energy criterion is left out: their tensions are
     // Newton unknowns whose own step the energy along du ignores, and it
     // cut good steps to a tenth (the demo's sweep: 1917 against 1519
@@ -177,6 +187,10 @@ namespace softchain::fem
     dealii::TimerOutput          &timer() { return computing_timer; }
 
   private:
+    // The fraction a of the step from `from` to `to` (owned states) that the
+    // contact admits (ObstacleContact::entry_fraction).
+    double contact_entry_fraction(const dealii::TrilinosWrappers::MPI::Vector &from,
+                                  const dealii::TrilinosWrappers::MPI::Vector &to, double motion);
     const Parameters                                   &prm;
     std::ostream                                       &log;
     std::unique_ptr<FiniteElementSpace>                 fe_space;
@@ -207,6 +221,7 @@ namespace softchain::fem
     dealii::TrilinosWrappers::MPI::Vector  u_ghosted; // same, with ghost values
     dealii::TrilinosWrappers::MPI::Vector  du;
     dealii::TrilinosWrappers::MPI::Vector  du_ghosted; // for the links' updates
+    dealii::TrilinosWrappers::MPI::Vector  from_ghosted, to_ghosted; // a step's ends, for contact
     dealii::IndexSet                       writable_dofs;
     LoadState                      load; // at u
     double                         f_ext_norm = 0.0;

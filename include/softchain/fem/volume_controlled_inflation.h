@@ -80,16 +80,13 @@ namespace softchain::fem
     // The energy along du ignores the constraint: only a step that inverts
     // an element is shortened.
     bool   energy_line_search() const override { return false; }
+    double admissible_fraction() override { return solver.admissible_fraction(du, obstacle_motion); }
 
     // The volume path's steps.
     NewtonSystem &begin_step(double s) override;
     void          accept_step(double s) override;
     void          reject_step() override;
     bool          augment() override; // the contact's Uzawa updates
-    bool          path_dependent() const override
-    {
-      return solver.obstacle_contact() && solver.obstacle_contact()->has_friction();
-    }
 
   private:
     QuasiStaticSolver &solver;

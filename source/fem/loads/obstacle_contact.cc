@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace softchain::fem
@@ -274,15 +275,54 @@ namespace softchain::fem
     return Utilities::MPI::max(deepest, space.communicator);
   }
 
+  double ObstacleContact::entry_fraction(const TrilinosWrappers::MPI::Vector &u,
+                                         const TrilinosWrappers::MPI::Vector &u_stepped, const double motion,
+                                         const double depth) const
+  {
+    // The gaps at u of the points that no obstacle presses there (NaN: pressed).
+    const std::size_t   n_obstacles = scene.obstacles.size();
+    std::vector<double> gap_before(points.size() * n_obstacles);
+    for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
+      for (unsigned int k = 0; k < n_obstacles; ++k)
+        {
+          const std::size_t i = point * n_obstacles + k;
+          const auto       &o = scene.obstacles[k];
+          const double      g = o.body->gap(eigen(x), o.pose(motion));
+          const bool pressed  = state.lambda[i] - points[point].epsilon * g > 0;
+          gap_before[i]       = pressed ? std::numeric_limits<double>::quiet_NaN() : g;
+        }
+    });
+    double fraction = 1.0;
+    for_each_point(u_stepped, [&](const std::size_t point, const Point<3> &x) {
+      const double allowed = -depth * points[point].h;
+      for (unsigned int k = 0; k < n_obstacles; ++k)
+        {
+          const double g0 = gap_before[point * n_obstacles + k];
+          if (std::isnan(g0) || g0 <= allowed)
+            continue;
+          const auto  &o  = scene.obstacles[k];
+          const double g1 = o.body->gap(eigen(x), o.pose(motion));
+          if (g1 < allowed)
+            fraction = std::min(fraction, (g0 - allowed) / (g0 - g1));
+        }
+    });
+    return Utilities::MPI::min(fraction, space.communicator);
+  }
+
   bool ObstacleContact::augment(const TrilinosWrappers::MPI::Vector &u, const double motion)
   {
-    if (deepest_penetration(u, motion) <= scene.penetration_tolerance)
-      return false;
     std::vector<double> updated(state.lambda.size());
+    double              change = 0; // max |t_N - lambda| / (epsilon h)
     for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
       for (unsigned int k = 0; k < scene.obstacles.size(); ++k)
-        updated[point * scene.obstacles.size() + k] = contact(point, k, x, motion).pressure;
+        {
+          const std::size_t i = point * scene.obstacles.size() + k;
+          updated[i]          = contact(point, k, x, motion).pressure;
+          change = std::max(change, std::abs(updated[i] - state.lambda[i]) / (points[point].epsilon * points[point].h));
+        }
     });
+    if (Utilities::MPI::max(change, space.communicator) <= scene.penetration_tolerance)
+      return false;
     state.lambda = std::move(updated);
     return true;
   }

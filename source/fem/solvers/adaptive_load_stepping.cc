@@ -10,9 +10,13 @@ namespace softchain::fem
     , increment(first_step)
   {}
 
+  // A step that would leave less than a quarter of itself to the path's end
+  // goes to the end (if Maximum load step allows): the sliver of a last step would cost the final
+  // tolerances' Newton iterations for a load change Newton takes in its stride.
   double AdaptiveLoadStepping::next() const
   {
-    return std::min(1.0, s + increment);
+    const double rest = 1.0 - s;
+    return rest <= 1.25 * increment && rest <= prm.max_load_step ? 1.0 : s + increment;
   }
 
   // Crisfield's rule: the next increment is the last one times

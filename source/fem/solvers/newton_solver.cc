@@ -22,9 +22,8 @@ namespace softchain::fem
     };
     double       s0              = 0.0; // dx . R before the step
     unsigned int inverting_steps = 0;   // full Newton steps that inverted an element
-    unsigned int intermediate    = 0;   // iterations to the intermediate tolerance (0: not yet)
-    const auto   outcome         = [&](const Status status, const unsigned int it) {
-      return Outcome{status, it, intermediate > 0 ? intermediate : it};
+    const auto   outcome         = [](const Status status, const unsigned int it) {
+      return Outcome{status, it};
     };
     for (unsigned int it = 0; it <= prm.max_newton_iterations; ++it)
       {
@@ -51,10 +50,6 @@ namespace softchain::fem
         // conditions hold there too (a volume control's volume).
         if (residual == 0.0 && system.residual_converged(residual, residual_tolerance))
           return outcome(Status::converged, it);
-        if (final_state && intermediate == 0 && it > 0 &&
-            system.residual_converged(residual, prm.intermediate_tolerance) &&
-            system.correction_norm() <= prm.intermediate_tolerance * system.solution_norm())
-          intermediate = it;
         bool correction_ready = false;
         if (it > 0 && system.residual_converged(residual, residual_tolerance))
           {
@@ -84,7 +79,15 @@ namespace softchain::fem
           log << "      Newton " << std::setw(2) << it << "  |R| = " << std::scientific
               << std::setprecision(3) << residual << "  |du| = " << system.correction_norm()
               << std::defaultfloat << '\n';
+        const double admissible = system.admissible_fraction();
         system.apply_correction();
+        if (admissible < 1.0)
+          {
+            system.scale_correction(admissible);
+            s0 *= admissible;
+            if (verbose)
+              log << "      step limited to " << admissible << " (contact points entering)\n";
+          }
       }
     return outcome(Status::not_converged, prm.max_newton_iterations);
   }

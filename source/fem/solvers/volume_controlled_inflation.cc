@@ -97,8 +97,13 @@ namespace softchain::fem
   NewtonSystem &VolumeControlledInflation::begin_step(const double s)
   {
     TrilinosWrappers::MPI::Vector u_predicted(predictor->last());
+    const double                  p_last = p;
     if (prm.solver.secant_predictor && predictor->predict(s, u_predicted, &p))
-      solver.move_to(u_predicted);
+      {
+        const double fraction = solver.stop_at_contact(predictor->last(), u_predicted, obstacle_motion);
+        p                     = p_last + fraction * (p - p_last);
+        solver.move_to(u_predicted);
+      }
     v_target      = v_start + s * (v_end - v_start);
     augmentations = 0;
     return *this;
