@@ -1,6 +1,7 @@
 #include <softchain/chain/base_wrench.h>
 #include <softchain/chain/protocol_torques.h>
 #include <softchain/chain/tip_constrained_equilibrium.h>
+#include <softchain/data/base_face_centroid.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/vector_of_point.h>
@@ -35,7 +36,7 @@ namespace softchain::chain
       throw data::InputError(listing + ": the inflated state " + inflated.id + " did not converge");
     pressure_                    = inflated.actuation.pressure;
     const data::MeshRecord &mesh = database.mesh();
-    base_centroid_               = base_face_centroid(mesh);
+    base_centroid_               = data::base_face_centroid(mesh);
 
     // Each motion by kind and signed amount; an FEM sample that failed leaves its state out.
     std::map<std::string, std::map<double, TracePoint>> by_kind;

@@ -353,6 +353,75 @@ TEST_CASE("a chain of forces at a pressure starts from that pressure's equilibri
     }
 }
 
+TEST_CASE("a 'chord F' sample pulls along the chord of its pressure sample and stays cached")
+{
+  // The fabric layer makes the bender bend, and its chord turn down.
+  TinyDesign design("sweep_chord",
+                    "set Pressure sweep = 1e3, 2e3\n"
+                    "set Chord samples = 2e3 : tip : chord 0.01 ; 0 : tip : chord 0.01",
+                    "subsection Springs\n  set Generate for bender = true\n"
+                    "  set Axial rigidity = fabric: 2000, thread: 500\nend\n");
+  const auto first = design.run("sweep");
+  INFO(first.output);
+  REQUIRE(first.status == 0);
+  CHECK(first.output.find("4 solved") != std::string::npos);
+  const auto database = ActuationDatabase::open(design.database());
+  const auto mesh     = database.mesh();
+  // The chord, measured here apart from the sweep's code: the tip's position
+  // is the mean of the deformed tip nodes (TipPoseFit), the base face's
+  // centroid the middle of the rectangle its nodes span (the tiny bender's
+  // base is a full rectangle meshed uniformly).
+  const auto chord_of = [&](const std::vector<Point3> &x) {
+    Point3 tip{0, 0, 0}, low{1, 1, 1}, high{-1, -1, -1};
+    for (const auto n : mesh.tip_nodes)
+      for (int c = 0; c < 3; ++c)
+        tip[c] += x[n][c] / mesh.tip_nodes.size();
+    for (const auto n : mesh.base_nodes)
+      for (int c = 0; c < 3; ++c)
+        {
+          low[c]  = std::min(low[c], mesh.X[n][c]);
+          high[c] = std::max(high[c], mesh.X[n][c]);
+        }
+    const Point3 d = minus(tip, {(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2});
+    const double length = std::sqrt(dot(d, d));
+    return Point3{d[0] / length, d[1] / length, d[2] / length};
+  };
+  std::map<double, Point3> inflated; // the pressure samples' chords
+  inflated[0] = chord_of(mesh.X);
+  for (const auto &id : database.sample_ids())
+    {
+      const auto record = database.read_sample(id);
+      if (record.actuation.role == "pressure")
+        inflated[record.actuation.pressure] = chord_of(record.x);
+    }
+  int chords = 0;
+  for (const auto &id : database.sample_ids())
+    {
+      const auto record = database.read_sample(id);
+      if (record.actuation.role != "chord")
+        continue;
+      ++chords;
+      INFO("chord sample at " << record.actuation.pressure << " Pa");
+      CHECK(record.converged());
+      REQUIRE(record.actuation.point_forces.size() == 1);
+      const Point3 &f = record.actuation.point_forces[0].force;
+      const Point3 &c = inflated.at(record.actuation.pressure);
+      // The same sums in another order: rounding only.
+      for (int k = 0; k < 3; ++k)
+        CHECK(f[k] == Approx(0.01 * c[k]).margin(1e-14));
+      // From its pressure sample, only the force grows: one load step.
+      if (record.actuation.pressure > 0)
+        CHECK(record.load_steps == 1);
+    }
+  CHECK(chords == 2);
+  // The inflated chord turns down with the bending finger.
+  CHECK(inflated.at(2e3)[1] < inflated.at(0)[1] - 1e-3);
+
+  const auto rerun = design.run("sweep");
+  INFO(rerun.output);
+  CHECK(rerun.output.find("4 cached, 0 solved") != std::string::npos);
+}
+
 TEST_CASE("a held-out pressure continues from the nearest lower swept pressure, not from rest")
 {
   // The inflations share one chain whatever their role: the held-out

@@ -139,6 +139,46 @@ TEST_CASE("a chord sample is a tip force of role chord, listed before the valida
                       Catch::Contains("sample 'chord 1': '4e4 : tip' needs 'p'"));
 }
 
+TEST_CASE("'chord F' leaves the chord sample to the sweep, which needs the pressure sample at its pressure")
+{
+  const SampleSet set = read_samples("chord_keyword", "  set Pressure sweep = 2e4\n"
+                                                      "  set Chord samples = 2e4 : tip : chord 0.5 ; "
+                                                      "0 : tip : chord 0.25 ; 2e4 : tip : 0.3,0,0\n");
+  // The listed force is a sample now; the two 'chord F' wait for their chord.
+  REQUIRE(set.samples.size() == 2);
+  REQUIRE(set.chord_requests.size() == 2);
+  const auto &request = set.chord_requests[0];
+  CHECK(request.pressure == 2e4);
+  CHECK(request.force == 0.5);
+  CHECK(request.point == data::Point3{{0.08, 0, 0}});
+  CHECK(request.label == "chord 1");
+  CHECK(set.chord_requests[1].pressure == 0); // the finger at rest: no pressure sample needed
+  REQUIRE(set.inflation_at(2e4));
+  CHECK(set.samples[*set.inflation_at(2e4)].actuation.role == "pressure");
+  CHECK_FALSE(set.inflation_at(3e4));
+
+  // The sample made from a chord: F along it, its id from the force.
+  const Sample sample = SampleSet::chord_sample(request, {{0.6, -0.8, 0}}, "h");
+  CHECK(sample.actuation.role == "chord");
+  CHECK(sample.label == "chord 1");
+  REQUIRE(sample.actuation.point_forces.size() == 1);
+  CHECK(sample.actuation.point_forces[0].force[0] == Approx(0.3));
+  CHECK(sample.actuation.point_forces[0].force[1] == Approx(-0.4));
+  CHECK(sample.id == data::sample_id("h", sample.actuation));
+  CHECK(sample.id != SampleSet::chord_sample(request, {{0.8, -0.6, 0}}, "h").id);
+
+  CHECK_THROWS_WITH(read_samples("chord_without_inflation", "  set Pressure sweep = 1e4\n"
+                                                            "  set Chord samples = 2e4 : tip : chord 0.5\n"),
+                    Catch::Contains("sample 'chord 1'") && Catch::Contains("'chord' at 20000 Pa") &&
+                      Catch::Contains("'Pressure sweep'"));
+  CHECK_THROWS_WITH(read_samples("chord_bad_force", "  set Pressure sweep = 2e4\n"
+                                                    "  set Chord samples = 2e4 : tip : chord -1\n"),
+                    Catch::Contains("'chord -1' is not 'chord F'"));
+  CHECK_THROWS_WITH(read_samples("chord_in_validation", "  set Pressure sweep = 2e4\n"
+                                                        "  set Validation samples = 2e4 : tip : chord 0.5\n"),
+                    Catch::Contains("Chord samples only"));
+}
+
 TEST_CASE("contact samples carry their obstacle: frictionless ones form one chain and with friction one each")
 {
   const std::string contact = "  subsection table\n    set Shape = plane\n    set Position = 0, -0.005, 0\n  end\n"

@@ -17,11 +17,14 @@
 //                                                 # tip face's extent along z
 //     set Force point        =                    # x,y,z; empty: the centre of
 //                                                 # the tip face
-//     set Chord samples      = 20e3 : tip : 0.477,-0.1505,0
+//     set Chord samples      = 20e3 : tip : chord 0.5 ; 0 : tip : 0.5,0,0
 //                            # syntax of Validation samples (below); role
 //                            # chord: a small tip force along the base-tip
 //                            # chord of the pressure-only state at p, for the
-//                            # links' compliance (not held out)
+//                            # links' compliance (not held out). 'chord F':
+//                            # F newtons along that chord, which the sweep
+//                            # measures on the pressure sample at p (it must
+//                            # be in Pressure sweep; p = 0: the finger at rest)
 //     set Validation samples = 40e3 : tip : 0,0,0.2 ; 20e3 : 0.07,0.006,0.009 : 0,-0.1,0
 //                            # p : point : force [: point : force ...] ; ...
 //                            # role validation; 'tip' is the force point
@@ -47,6 +50,7 @@
 #include <softchain/data/prm_file.h>
 #include <softchain/geometry/contact_scene.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,8 +87,29 @@ namespace softchain::fem
     static SampleSet read(const data::PrmFile &prm, const TipFace &tip,
                           const std::string &design_hash, const geometry::ContactScene &contact);
 
+    // A chord sample whose force is 'chord F': F newtons along the base-tip
+    // chord of the pressure-only state at its pressure, known once that
+    // state is (SampleSweep adds the sample then).
+    struct ChordRequest
+    {
+      double       pressure = 0;
+      data::Point3 point{};
+      double       force = 0;
+      std::string  label; // "chord 2"
+      std::string  where; // file, parameter and sample, for messages
+    };
+
+    // The pressure-controlled sample at `pressure` without forces, if listed.
+    std::optional<std::size_t> inflation_at(double pressure) const;
+    // The sample of `request` with its force along `chord` (a unit vector);
+    // its id derives from the design hash and that force, so that it is
+    // cached as long as the state it was measured on is.
+    static Sample chord_sample(const ChordRequest &request, const data::Point3 &chord,
+                               const std::string &design_hash);
+
     std::vector<Sample>                   samples; // chain after chain
     std::vector<std::vector<std::size_t>> chains;  // indices into samples
+    std::vector<ChordRequest>             chord_requests; // in the order listed
     unsigned int                          sample_groups = 1;
     bool                                  continuation  = true;
   };

@@ -62,7 +62,7 @@ namespace softchain::fem
     SampleSet         set; // the listed samples, then the protocol's
     TipMotionProtocol protocol;
     std::string       database_path;
-    data::MeshRecord                tip_mesh; // rank 0, for tip_pose()
+    data::MeshRecord                tip_mesh; // rank 0, database_mesh()
     std::optional<data::TipPoseFit> tip_fit;
 
     using Records = std::map<std::size_t, data::SampleRecord>; // by sample index
@@ -74,8 +74,19 @@ namespace softchain::fem
     std::optional<std::size_t> inflated_start(const std::vector<std::size_t> &chain,
                                               const std::vector<std::size_t> &indices,
                                               const Records                  &known) const;
+    // The chains of the chord samples, by pressure and point.
+    using ChordChains = std::map<std::string, std::size_t>;
+    void                        solve_chord_samples(Records &known, Summary &summary);
+    std::optional<data::Point3> measured_chord(const std::optional<std::size_t> &inflation,
+                                               const Records                    &known);
+    void                        chain_chord_sample(std::size_t index, const SampleSet::ChordRequest &request,
+                                                   const std::optional<std::size_t> &inflation, Records &known,
+                                                   ChordChains &chains);
+    data::Point3                chord_direction(const data::SampleRecord *record);
     std::string                         run_protocol(Records &known, Summary &summary);
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
+    // The database's mesh (and the tip's fit to it), read once; rank 0.
+    const data::MeshRecord             &database_mesh();
     data::TipPose                       tip_pose(const data::SampleRecord &record);
     std::string                         protocol_listing() const;
     void share_record(std::size_t i, Records &known) const;

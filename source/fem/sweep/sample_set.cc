@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace softchain::fem
@@ -34,8 +35,9 @@ namespace softchain::fem
       section.declare("Force point", "", "x,y,z; empty: centre of the tip face");
       section.declare("Chord samples", "",
                       "p : point : force ; ... (role chord): a small tip force pulling along the "
-                      "base-tip chord of the pressure-only state at p; the reduction fits the "
-                      "links' compliance to them (reduction/README.md)");
+                      "base-tip chord of the pressure-only state at p, given as x,y,z or as "
+                      "'chord F' (F newtons along that chord, found by the sweep); the reduction "
+                      "fits the links' compliance to them (reduction/README.md)");
       section.declare("Validation samples", "",
                       "p : point : force [: point : force] ; ...; a point is x,y,z, tip (the "
                       "force point) or tip+arm, tip-arm (the torsion couple's points)");
@@ -197,8 +199,38 @@ namespace softchain::fem
       return samples;
     }
 
+    // "chord F" (a chord entry's force): F, else nothing.
+    std::optional<double> chord_force(const std::string &text, const std::string &where)
+    {
+      std::istringstream in(text);
+      std::string        word, rest;
+      double             force = 0;
+      if (!(in >> word) || word != "chord")
+        return std::nullopt;
+      if (!(in >> force) || (in >> rest) || !(force > 0))
+        throw data::InputError(where + ": '" + text + "' is not 'chord F' with a force F > 0 in N");
+      return force;
+    }
+
+    // One chord entry "p : point : chord F": its request, checked.
+    SampleSet::ChordRequest chord_request(const std::vector<std::string> &fields, const double force,
+                                          const data::Point3 &tip, const double arm,
+                                          const std::string &name, const std::string &where)
+    {
+      if (fields.size() != 3)
+        throw data::InputError(where + ": a force 'chord F' takes one point: 'p : point : chord F'");
+      SampleSet::ChordRequest r;
+      r.pressure = number(fields[0], where);
+      r.point    = listed_point(fields[1], tip, arm, where);
+      r.force    = force;
+      r.label    = name;
+      r.where    = where;
+      return r;
+    }
+
     std::vector<Sample> listed_samples(const data::PrmSection &s, const SampleSet::TipFace &tip,
-                                       const geometry::ContactScene &contact)
+                                       const geometry::ContactScene        &contact,
+                                       std::vector<SampleSet::ChordRequest> &chord_requests)
     {
       const data::Point3 at =
         s.get("Force point").empty() ? tip.centre : triple(s.get("Force point"), s.describe("Force point"));
@@ -243,7 +275,14 @@ namespace softchain::fem
               {
                 const std::string name = role + ' ' + std::to_string(k + 1);
                 const std::string where = s.describe(parameter) + ", sample '" + name + "'";
-                samples.push_back({listed_actuation(role, entries[k], at, arm, where), name, ""});
+                const auto        fields = split(entries[k], ':');
+                const auto        chord  = fields.size() > 2 ? chord_force(fields[2], where) : std::nullopt;
+                if (chord && role != "chord")
+                  throw data::InputError(where + ": 'chord F' is a force of Chord samples only");
+                if (chord)
+                  chord_requests.push_back(chord_request(fields, *chord, at, arm, name, where));
+                else
+                  samples.push_back({listed_actuation(role, entries[k], at, arm, where), name, ""});
               }
         }
       for (auto &sample : contact_samples(s, contact))
@@ -284,7 +323,7 @@ namespace softchain::fem
     std::map<std::string, std::size_t>    chain_of;
     std::vector<std::vector<Sample>>      chains;
     std::map<std::string, std::string>    label_of_id;
-    for (auto &sample : listed_samples(section, tip, contact))
+    for (auto &sample : listed_samples(section, tip, contact, set.chord_requests))
       {
         sample.id = data::sample_id(design_hash, sample.actuation);
         if (!label_of_id.emplace(sample.id, sample.label).second)
@@ -310,6 +349,33 @@ namespace softchain::fem
       }
     if (set.samples.empty())
       throw data::InputError(prm.path() + ": subsection 'Samples' lists no sample");
+    for (const auto &request : set.chord_requests)
+      if (request.pressure != 0 && !set.inflation_at(request.pressure))
+        throw data::InputError(request.where + ": 'chord' at " + data::canonical(request.pressure) +
+                               " Pa needs the finger inflated to that pressure alone: add it to "
+                               "'Pressure sweep'");
     return set;
+  }
+
+  std::optional<std::size_t> SampleSet::inflation_at(const double pressure) const
+  {
+    for (std::size_t i = 0; i < samples.size(); ++i)
+      {
+        const data::Actuation &a = samples[i].actuation;
+        if (pressure_only(a) && !a.cavity_volume_ratio && a.pressure == pressure)
+          return i;
+      }
+    return std::nullopt;
+  }
+
+  Sample SampleSet::chord_sample(const ChordRequest &request, const data::Point3 &chord,
+                                 const std::string &design_hash)
+  {
+    Sample sample = sample_of("chord", request.pressure,
+                              {{request.point, {{request.force * chord[0], request.force * chord[1],
+                                                 request.force * chord[2]}}}},
+                              request.label);
+    sample.id     = data::sample_id(design_hash, sample.actuation);
+    return sample;
   }
 } // namespace softchain::fem

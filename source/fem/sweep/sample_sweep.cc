@@ -2,6 +2,8 @@
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/output_files.h>
+#include <softchain/data/base_face_centroid.h>
+#include <softchain/data/content_hash.h>
 #include <softchain/fem/design_hash.h>
 #include <softchain/fem/sample_group.h>
 #include <softchain/fem/sample_sweep.h>
@@ -135,6 +137,8 @@ namespace softchain::fem
     std::vector<std::size_t> listed(set.samples.size());
     std::iota(listed.begin(), listed.end(), 0);
     solve_missing(listed, known, summary, set.continuation);
+    if (!set.chord_requests.empty())
+      solve_chord_samples(known, summary);
     if (world_rank() == 0) // a listing of an earlier protocol must not outlive it
       fs::remove(protocol_listing());
     if (protocol.enabled())
@@ -243,6 +247,96 @@ namespace softchain::fem
           }
       }
     return best;
+  }
+
+  // The chord samples given as 'chord F' (SampleSet::ChordRequest): each
+  // force along the chord from the base face's centroid to the tip's
+  // position (chord_direction) in the converged pressure sample at its
+  // pressure, or in the finger at rest at p = 0. The samples at one pressure
+  // and point form a chain by increasing force, from the pressure sample
+  // (whose state they share: only the force ramps). A chord whose pressure
+  // sample failed is reported failed, not solved.
+  void SampleSweep::solve_chord_samples(Records &known, Summary &summary)
+  {
+    ChordChains              chains;
+    std::vector<std::size_t> added;
+    for (const auto &request : set.chord_requests)
+      {
+        const auto inflation = set.inflation_at(request.pressure);
+        const auto chord     = measured_chord(inflation, known);
+        if (!chord)
+          {
+            summary.failed.push_back(request.label + ": not solved: the pressure sample at " +
+                                     data::canonical(request.pressure) +
+                                     " Pa, whose chord gives the force's direction, did not converge");
+            continue;
+          }
+        if (world_rank() == 0)
+          std::cout << request.label << ": " << request.force << " N along the base-tip chord ("
+                    << (*chord)[0] << ", " << (*chord)[1] << ", " << (*chord)[2] << ") at "
+                    << request.pressure << " Pa" << std::endl;
+        added.push_back(set.samples.size());
+        set.samples.push_back(SampleSet::chord_sample(request, *chord, hash));
+        chain_chord_sample(added.back(), request, inflation, known, chains);
+      }
+    solve_missing(added, known, summary);
+  }
+
+  // Rank 0 measures the chord of the pressure sample `inflation` (none: the
+  // finger at rest) if it converged, and tells every rank.
+  std::optional<data::Point3> SampleSweep::measured_chord(const std::optional<std::size_t> &inflation,
+                                                          const Records &known)
+  {
+    std::vector<double> chord(4, 0.0); // measured (1 or 0), then the chord
+    if (world_rank() == 0 &&
+        (!inflation || (known.count(*inflation) > 0 && known.at(*inflation).converged())))
+      {
+        const auto c = chord_direction(inflation ? &known.at(*inflation) : nullptr);
+        chord        = {1.0, c[0], c[1], c[2]};
+      }
+    chord = Utilities::MPI::broadcast(MPI_COMM_WORLD, chord, 0);
+    if (chord[0] == 0.0)
+      return std::nullopt;
+    return data::Point3{{chord[1], chord[2], chord[3]}};
+  }
+
+  // Puts the chord sample `index` into the chain of its pressure and point
+  // (a new one starts at the pressure sample `inflation`), by increasing force.
+  void SampleSweep::chain_chord_sample(const std::size_t index, const SampleSet::ChordRequest &request,
+                                       const std::optional<std::size_t> &inflation, Records &known,
+                                       ChordChains &chains)
+  {
+    std::ostringstream key;
+    key << request.pressure << ' ' << request.point[0] << ' ' << request.point[1] << ' ' << request.point[2];
+    if (!chains.count(key.str()))
+      {
+        chains[key.str()] = set.chains.size();
+        set.chains.emplace_back();
+        if (inflation)
+          {
+            share_record(*inflation, known);
+            set.chains.back().push_back(*inflation);
+          }
+      }
+    auto      &chain = set.chains[chains.at(key.str())];
+    const auto place = std::upper_bound(chain.begin() + (inflation ? 1 : 0), chain.end(), index,
+                                        [&](const std::size_t a, const std::size_t b) {
+                                          return load_size(set.samples[a].actuation) <
+                                                 load_size(set.samples[b].actuation);
+                                        });
+    chain.insert(place, index);
+  }
+
+  // The unit vector from the base face's centroid to the tip's position
+  // (TipPoseFit: the centroid of the tip nodes) deformed as in `record`
+  // (none: the finger at rest).
+  data::Point3 SampleSweep::chord_direction(const data::SampleRecord *record)
+  {
+    const data::MeshRecord &mesh = database_mesh();
+    const Eigen::Vector3d   tip  = record ? tip_pose(*record).position
+                                          : tip_fit->fit(data::select_nodes(mesh.X, mesh.tip_nodes)).position;
+    const Eigen::Vector3d chord = (tip - data::base_face_centroid(mesh)).normalized();
+    return {{chord[0], chord[1], chord[2]}};
   }
 
   // The paper's validation protocol (TipMotionProtocol): the inflation to the
@@ -375,14 +469,20 @@ namespace softchain::fem
   }
 
   // The tip pose of a sample (rank 0: the database's mesh).
-  data::TipPose SampleSweep::tip_pose(const data::SampleRecord &record)
+  const data::MeshRecord &SampleSweep::database_mesh()
   {
     if (!tip_fit)
       {
         tip_mesh = data::ActuationDatabase::open(database_path).mesh();
         tip_fit  = data::TipPoseFit::of_mesh(tip_mesh, database_path);
       }
-    return tip_fit->fit(data::select_nodes(record.x, tip_mesh.tip_nodes));
+    return tip_mesh;
+  }
+
+  data::TipPose SampleSweep::tip_pose(const data::SampleRecord &record)
+  {
+    const auto &nodes = database_mesh().tip_nodes;
+    return tip_fit->fit(data::select_nodes(record.x, nodes));
   }
 
   void SampleSweep::solve_pending(const std::vector<std::size_t> &pending, Records &known,

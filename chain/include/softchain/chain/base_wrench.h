@@ -23,9 +23,4 @@ namespace softchain::chain
 
   Wrench base_wrench(const KinematicChain &chain, const ChainPose &pose, const ChainLoad &load,
                      const Eigen::Vector3d &moment_point);
-
-  // The area-weighted centroid of the mesh's clamped base face (the cell
-  // faces whose corners are all base nodes; flat faces): the point the FEM
-  // takes its base moment about. InputError if the mesh has no base face.
-  Eigen::Vector3d base_face_centroid(const data::MeshRecord &mesh);
 } // namespace softchain::chain
