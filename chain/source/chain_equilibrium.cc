@@ -204,8 +204,8 @@ namespace softchain::chain
   // until A repeats (at most 10 passes). So a step from outside an
   // obstacle already stops at it, instead of diving in and being cut back
   // by the line search. The rows are added by Woodbury around H's O(n)
-  // factor where H is positive definite, else to the dense tangent (shifted
-  // if need be). If the curvature rows (negative weights) leave no descent
+  // factor where H is positive definite and they are few (woodbury_pays),
+  // else to the dense tangent (shifted if need be). If the curvature rows (negative weights) leave no descent
   // direction, the step is taken without them.
   void ChainEquilibrium::contact_direction()
   {
@@ -225,6 +225,7 @@ namespace softchain::chain
           free_residual -= k * gaps[c] * near_row(c).transpose();
       }
     contact_.curvature_rows(pose_, chain_.n_angles(), curvature_rows_, curvature_weights_);
+    has_dense_tangent_  = false;
     const bool factored = tangent_.factor(0.0);
     if (factored) // H^-1 r_f once; H^-1 of a row when it first enters A
       {
@@ -343,7 +344,7 @@ namespace softchain::chain
       for (Eigen::Index i = 0; i < curvature_rows_.rows(); ++i)
         rows.push_back(m + i);
     const auto r        = static_cast<Eigen::Index>(rows.size());
-    const bool woodbury = factored && r <= chain_.n_angles();
+    const bool woodbury = factored && woodbury_pays(r);
     contact_rows_.resize(r, chain_.n_angles());
     contact_weights_.resize(r);
     Eigen::MatrixXd Y(chain_.n_angles(), woodbury ? r : 0);
@@ -385,11 +386,31 @@ namespace softchain::chain
     direction_ += Y * S.partialPivLu().solve(WV * x);
   }
 
-  // The same with the dense tangent, shifted until positive definite.
+  // Woodbury's r solves with H's O(n) factor and its r x r system, against
+  // the dense tangent's n^2 per row and its n^3 / 3 Cholesky factor. On the
+  // benchmark's finger of 9 joints (n = 27), Woodbury for at most n / 4 rows
+  // against Woodbury up to r = n, three interleaved runs of 5:
+  // blocked_on_table 98-103 against 108-113 us, grasp_of_cylinder 202-256
+  // against 236-250 us (chain/README.md, "Benchmarks"). A hand's many angles
+  // keep Woodbury for more rows. (EquilibriumSettings::woodbury_rows_per_angle)
+  bool ChainEquilibrium::woodbury_pays(const Eigen::Index rows) const
+  {
+    return rows <= settings_.woodbury_rows_per_angle * chain_.n_angles();
+  }
+
+  // The same with the dense tangent, shifted until positive definite. H's
+  // dense form is built once per Newton step (dense_tangent_), the contact
+  // rows are added to its lower triangle, which LLT reads.
   void ChainEquilibrium::dense_solve(const Eigen::VectorXd &b)
   {
-    Eigen::MatrixXd dense = tangent_.dense();
-    dense += contact_rows_.transpose() * contact_weights_.asDiagonal() * contact_rows_;
+    if (!has_dense_tangent_)
+      {
+        dense_tangent_     = tangent_.dense();
+        has_dense_tangent_ = true;
+      }
+    Eigen::MatrixXd dense = dense_tangent_;
+    for (Eigen::Index j = 0; j < contact_rows_.rows(); ++j)
+      dense.selfadjointView<Eigen::Lower>().rankUpdate(contact_rows_.row(j).transpose(), contact_weights_[j]);
     const double                scale = dense.diagonal().cwiseAbs().maxCoeff();
     Eigen::LLT<Eigen::MatrixXd> factor;
     for (double shift = 0.0; factor.compute(dense).info() != Eigen::Success; shifted_ = true)

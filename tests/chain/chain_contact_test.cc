@@ -134,6 +134,7 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       // perturbation and the differences' steps.
       EquilibriumSettings soft;
       soft.contact_stiffness = 100.0;
+      soft.woodbury_rows_per_angle = 1.0; // the Woodbury step, checked below
       ChainEquilibrium  solver(model, soft);
       const Equilibrium e = solver.solve(ChainLoad{1e4, {}, obstacles});
       REQUIRE(e.converged);
@@ -168,6 +169,14 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       Eigen::VectorXd       dense = -H.llt().solve(r);
       dense *= std::min(1.0, 1.5 / dense.lpNorm<Eigen::Infinity>());
       CHECK((step - dense).lpNorm<Eigen::Infinity>() < 1e-9 * dense.lpNorm<Eigen::Infinity>());
+      // And the solver's own dense step (no Woodbury), from the same state.
+      EquilibriumSettings dense_only = soft;
+      dense_only.woodbury_rows_per_angle = 0.0;
+      ChainEquilibrium dense_solver(model, dense_only);
+      dense_solver.solve(ChainLoad{1e4, {}, obstacles});
+      dense_solver.residual(q);
+      const Eigen::VectorXd dense_step = dense_solver.newton_step(q);
+      CHECK((dense_step - dense).lpNorm<Eigen::Infinity>() < 1e-9 * dense.lpNorm<Eigen::Infinity>());
     }
 }
 

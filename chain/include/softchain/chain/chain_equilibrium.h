@@ -71,6 +71,10 @@ namespace softchain::chain
     int    max_iterations = 50;
     double max_step_angle = 1.5;   // rad per angle and Newton step
     double contact_stiffness = 1e5; // k_c of ChainContact, N/m per surface point
+    // A contact step adds its r rows by Woodbury around H's O(n) factor while
+    // r <= this fraction of the n angles, else to H's dense form
+    // (ChainEquilibrium::woodbury_pays has the measurement).
+    double woodbury_rows_per_angle = 0.25;
   };
 
   struct Equilibrium
@@ -131,6 +135,7 @@ namespace softchain::chain
     void   contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
                         const Eigen::VectorXd &free_residual, bool factored, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
+    bool   woodbury_pays(Eigen::Index rows) const;
     void   update_link_velocities();
     bool   update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active);
     void   limit_surface_motion();
@@ -162,6 +167,8 @@ namespace softchain::chain
     Eigen::MatrixXd           solved_rows_;     // H^-1 of the near and curvature rows
     std::vector<char>         solved_;          // which of them are solved
     Eigen::VectorXd           solved_residual_; // H^-1 r_f
+    Eigen::MatrixXd           dense_tangent_;   // H, dense, for the step's dense solves
+    bool                      has_dense_tangent_ = false;
 
     // State of the last evaluation
     ChainPose                    pose_;
