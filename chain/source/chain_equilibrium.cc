@@ -391,7 +391,7 @@ namespace softchain::chain
   // benchmark's finger of 9 joints (n = 27), Woodbury for at most n / 4 rows
   // against Woodbury up to r = n, three interleaved runs of 5:
   // blocked_on_table 98-103 against 108-113 us, grasp_of_cylinder 202-256
-  // against 236-250 us (chain/README.md, "Benchmarks"). A hand's many angles
+  // against 236-250 us (chain/README.md, "Speed and memory"). A hand's many angles
   // keep Woodbury for more rows. (EquilibriumSettings::woodbury_rows_per_angle)
   bool ChainEquilibrium::woodbury_pays(const Eigen::Index rows) const
   {
