@@ -28,6 +28,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/numerics/vector_tools.h>
 
 #include <catch2/catch.hpp>
 
@@ -250,6 +251,48 @@ TEST_CASE("GMRES with the factors of the symmetric approximation solves the fric
   K.vmult(r, x2);
   r -= b2;
   CHECK(r.l2_norm() <= 1.01e-12 * b2.l2_norm());
+}
+
+TEST_CASE("a step that carries open contact points into an obstacle stops where they enter it",
+          "[fem][contact]")
+{
+  // The block's top z = 0.01 lies 0.5 mm below a plane; its four faces are
+  // 5 mm squares (h = 5 mm), so a point may enter by 2 % of h, 0.1 mm. A
+  // translation by dz along z moves every gap by -dz: the step is admitted
+  // up to (0.5 + 0.1) / dz mm, exactly (the plane's gap is linear in x).
+  Triangulation<3> mesh;
+  symmetric_block(mesh);
+  test::MeshSolverFixture f(
+    test::parameters_from_text(
+      "contact_entry",
+      test::solid_prm("Q2", "log", 2.6e5, 0.3,
+                      contact_section(obstacle("lid", "    set Shape = plane\n    set Position = 0, 0, 0.0105\n"
+                                                      "    set Normal = 0, 0, -1\n")))),
+    mesh);
+  const FiniteElementSpace     &space = f.solver->space();
+  TrilinosWrappers::MPI::Vector owned(space.owned_dofs, space.communicator);
+  const auto translated = [&](const double dz) {
+    VectorTools::interpolate(*space.mapping, space.dof_handler,
+                             Functions::ConstantFunction<3>(std::vector<double>{0, 0, dz}), owned);
+    TrilinosWrappers::MPI::Vector ghosted(f.solver->displacement());
+    ghosted = owned;
+    return ghosted;
+  };
+  const auto             rest    = translated(0.0);
+  const ObstacleContact &contact = *f.solver->obstacle_contact();
+  CHECK(contact.entry_fraction(rest, translated(0.001), 0.0, 0.02) == Approx(0.6).epsilon(1e-10));
+  CHECK(contact.entry_fraction(rest, translated(0.002), 0.0, 0.02) == Approx(0.3).epsilon(1e-10));
+  CHECK(contact.entry_fraction(rest, translated(0.00055), 0.0, 0.02) == 1.0); // within the 0.1 mm
+  CHECK(contact.entry_fraction(rest, translated(-0.001), 0.0, 0.02) == 1.0);  // away from it
+  // A point already pressed (here: the whole top, 0.2 mm inside) has the
+  // penalty in its tangent, and its step is not cut; the side faces' open
+  // points then stop it. The highest of them (3-point Gauss rule on the
+  // faces) lie at z_q = 5 mm + 5 mm (1 + sqrt(3/5)) / 2, 0.56 mm below the top.
+  const auto   inside = translated(0.0007);
+  const double z_q    = 0.005 + 0.005 * (1 + std::sqrt(0.6)) / 2;
+  const double g0 = 0.0105 - (z_q + 0.0007), g1 = 0.0105 - (z_q + 0.002);
+  CHECK(contact.entry_fraction(inside, translated(0.002), 0.0, 0.02) ==
+        Approx((g0 + 1e-4) / (g0 - g1)).epsilon(1e-10));
 }
 
 TEST_CASE("a block pressed by a rigid plane: uniform contact pressure, the closed-form force",

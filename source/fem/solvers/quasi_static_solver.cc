@@ -406,9 +406,9 @@ namespace softchain::fem
 
   // Contact points may enter an obstacle by 2 % of their face's size in one
   // Newton step or prediction: with the default penalty (factor 10) that
-  // is the penetration of a contact pressure of 0.2 E, above the pressures
-  // P10 meets at 40 kPa (docs/contact.md, "Cost"); 5 % took the same
-  // iterations there.
+  // is the penetration of a contact pressure of 0.2 E, above what P10 meets
+  // at 40 kPa (penetrations up to 0.8 % of h: docs/contact.md, "Cost"); 5 %
+  // took the same Newton iterations there.
   double QuasiStaticSolver::contact_entry_fraction(const TrilinosWrappers::MPI::Vector &from,
                                                    const TrilinosWrappers::MPI::Vector &to,
                                                    const double                         motion)
