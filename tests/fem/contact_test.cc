@@ -131,6 +131,26 @@ namespace
         face->set_boundary_id(face->center()[2] < 1e-9 ? boundary::base : boundary::other);
   }
 
+  // The symmetric block pressed by the obstacles of `contact` at the end of
+  // their motion (Q2, E = 2.6e5 Pa, nu = 0.3, Newton to 1e-10); returns what
+  // `read` takes from the solver there.
+  template <typename Read>
+  auto pressed_block(const std::string &name, const std::string &contact, Read read)
+  {
+    Triangulation<3> mesh;
+    symmetric_block(mesh);
+    test::MeshSolverFixture f(
+      test::parameters_from_text(name, test::solid_prm("Q2", "log", 2.6e5, 0.3,
+                                                       "subsection Solver\n  set Residual tolerance = 1e-10\n"
+                                                       "  set Displacement tolerance = 1e-10\nend\n" +
+                                                         contact)),
+      mesh);
+    LoadState pressed;
+    pressed.obstacle_motion = 1;
+    REQUIRE(f.solver->solve(pressed).converged);
+    return read(*f.solver);
+  }
+
   const std::string pressing_plane =
     obstacle("press", "    set Shape = plane\n    set Position = 0, 0, 0.01\n    set Normal = 0, 0, -1\n"
                       "    set Motion = 0, 0, -0.001\n");
@@ -484,19 +504,10 @@ TEST_CASE("a block pressed by the STL surface of a box: the box's answer", "[fem
   geometry::testing::box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.02, 0.02, 0.02)).write("contact_stl_box.stl");
   const std::string place = "    set Position = 0.005, 0.005, 0.03\n    set Motion = 0, 0, -0.001\n";
   const auto        press = [&](const std::string &name, const std::string &shape) {
-    Triangulation<3> mesh;
-    symmetric_block(mesh);
-    test::MeshSolverFixture f(
-      test::parameters_from_text(name, test::solid_prm("Q2", "log", 2.6e5, 0.3,
-                                                       "subsection Solver\n  set Residual tolerance = 1e-10\n"
-                                                       "  set Displacement tolerance = 1e-10\nend\n" +
-                                                         contact_section(obstacle("crate", shape + place)))),
-      mesh);
-    LoadState pressed;
-    pressed.obstacle_motion = 1;
-    REQUIRE(f.solver->solve(pressed).converged);
-    return std::make_pair(f.solver->obstacle_contact()->obstacle_wrenches(f.solver->displacement(), 1.0)[0].force,
-                          test::displacement_at(*f.solver, Point<3>(edge, edge, edge)));
+    return pressed_block(name, contact_section(obstacle("crate", shape + place)), [](const QuasiStaticSolver &solver) {
+      return std::make_pair(solver.obstacle_contact()->obstacle_wrenches(solver.displacement(), 1.0)[0].force,
+                            test::displacement_at(solver, Point<3>(edge, edge, edge)));
+    });
   };
   const auto [box_force, box_u] = press("contact_box", "    set Shape = box\n    set Half sizes = 0.02, 0.02, 0.02\n");
   const auto [stl_force, stl_u] = press("contact_stl", "    set Shape = stl\n    set File = contact_stl_box.stl\n");
@@ -523,18 +534,9 @@ TEST_CASE("a plane turned along the load path ends where the plane placed at its
   const Eigen::Vector3d n(0, std::sin(angle), -std::cos(angle)); // the final normal, R (0, 0, -1)
   const Eigen::Vector3d point(0, 0, 0.009);                      // the pivot at the end
   const auto press = [&](const std::string &name, const std::string &plane) {
-    Triangulation<3> mesh;
-    symmetric_block(mesh);
-    test::MeshSolverFixture f(
-      test::parameters_from_text(name, test::solid_prm("Q2", "log", 2.6e5, 0.3,
-                                                       "subsection Solver\n  set Residual tolerance = 1e-10\n"
-                                                       "  set Displacement tolerance = 1e-10\nend\n" +
-                                                         contact_section(obstacle("press", plane)))),
-      mesh);
-    LoadState pressed;
-    pressed.obstacle_motion = 1;
-    REQUIRE(f.solver->solve(pressed).converged);
-    return f.solver->obstacle_contact()->obstacle_wrenches(f.solver->displacement(), 1.0)[0];
+    return pressed_block(name, contact_section(obstacle("press", plane)), [](const QuasiStaticSolver &solver) {
+      return solver.obstacle_contact()->obstacle_wrenches(solver.displacement(), 1.0)[0];
+    });
   };
   const auto turned = press("contact_turned_plane",
                             "    set Shape = plane\n    set Position = 0, 0, 0.0105\n    set Normal = 0, 0, -1\n"

@@ -66,13 +66,6 @@ namespace softchain::fem
     Result follow(LoadPathProblem &problem, std::vector<double> *history = nullptr);
 
   private:
-    // The path's end converged (or not: `outcome`): the problem's multiplier
-    // updates, each followed by Newton; adds its iterations to `iterations`.
-    NewtonSolver::Outcome augment_to_end(LoadPathProblem &problem, NewtonSystem &system,
-                                         NewtonSolver &newton, NewtonSolver::Outcome outcome,
-                                         Result &result, unsigned int &iterations,
-                                         std::vector<double> *history) const;
-
     const Parameters &prm;
     const double      first_step;
     const std::string name;

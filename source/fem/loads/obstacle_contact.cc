@@ -279,15 +279,17 @@ namespace softchain::fem
                                          const TrilinosWrappers::MPI::Vector &u_stepped, const double motion,
                                          const double depth) const
   {
+    const std::size_t                     n_obstacles = scene.obstacles.size();
+    std::vector<geometry::RigidTransform> poses;
+    for (const auto &o : scene.obstacles)
+      poses.push_back(o.pose(motion));
     // The gaps at u of the points that no obstacle presses there (NaN: pressed).
-    const std::size_t   n_obstacles = scene.obstacles.size();
     std::vector<double> gap_before(points.size() * n_obstacles);
     for_each_point(u, [&](const std::size_t point, const Point<3> &x) {
       for (unsigned int k = 0; k < n_obstacles; ++k)
         {
           const std::size_t i = point * n_obstacles + k;
-          const auto       &o = scene.obstacles[k];
-          const double      g = o.body->gap(eigen(x), o.pose(motion));
+          const double      g = scene.obstacles[k].body->gap(eigen(x), poses[k]);
           const bool pressed  = state.lambda[i] - points[point].epsilon * g > 0;
           gap_before[i]       = pressed ? std::numeric_limits<double>::quiet_NaN() : g;
         }
@@ -300,8 +302,7 @@ namespace softchain::fem
           const double g0 = gap_before[point * n_obstacles + k];
           if (std::isnan(g0) || g0 <= allowed)
             continue;
-          const auto  &o  = scene.obstacles[k];
-          const double g1 = o.body->gap(eigen(x), o.pose(motion));
+          const double g1 = scene.obstacles[k].body->gap(eigen(x), poses[k]);
           if (g1 < allowed)
             fraction = std::min(fraction, (g0 - allowed) / (g0 - g1));
         }

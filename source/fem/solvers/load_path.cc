@@ -1,6 +1,5 @@
 #include <softchain/fem/adaptive_load_stepping.h>
 #include <softchain/fem/load_path.h>
-#include <cstdlib>
 
 namespace softchain::fem
 {
@@ -30,8 +29,20 @@ namespace softchain::fem
         const bool    at_end     = s >= 1.0;
         auto          outcome    = newton.solve(system, at_end, history);
         unsigned int  iterations = outcome.iterations;
-        if (at_end)
-          outcome = augment_to_end(problem, system, newton, outcome, result, iterations, history);
+        // Uzawa's updates of the contact pressures (augment()) come at the
+        // path's end only, each followed by Newton to the final tolerances:
+        // multipliers set at a stepping stone stay on points that lift off
+        // later (by less than the penetration tolerance) and push there. On
+        // P10 closing on a cylinder at 40 kPa, the obstacle's force lay 1.6 %
+        // from the converged one (penalty factor 100, tolerance 1e-4) with
+        // updates at every step, 0.75 % with updates at the end
+        // (docs/contact.md, "The method").
+        while (at_end && outcome.converged() && problem.augment())
+          {
+            outcome = newton.solve(system, true, history);
+            iterations += outcome.iterations;
+            ++result.augmentations;
+          }
         result.newton_iterations += iterations;
         if (outcome.converged())
           {
@@ -55,27 +66,6 @@ namespace softchain::fem
       }
     result.reached = path.reached();
     return result;
-  }
-
-  // Uzawa's updates of the contact pressures (augment()) come at the path's
-  // end only, each followed by Newton to the final tolerances: multipliers
-  // set at a stepping stone stay on points that lift off later (by less
-  // than the penetration tolerance) and push there. On P10 closing on a
-  // cylinder at 40 kPa, the obstacle's force lay 1.6 % from the converged
-  // one (penalty factor 100, tolerance 1e-4) with updates at every step,
-  // 0.75 % with updates at the end (docs/contact.md, "The method").
-  NewtonSolver::Outcome LoadPath::augment_to_end(LoadPathProblem &problem, NewtonSystem &system,
-                                                 NewtonSolver &newton, NewtonSolver::Outcome outcome,
-                                                 Result &result, unsigned int &iterations,
-                                                 std::vector<double> *history) const
-  {
-    while (outcome.converged() && problem.augment())
-      {
-        outcome = newton.solve(system, true, history);
-        iterations += outcome.iterations;
-        ++result.augmentations;
-      }
-    return outcome;
   }
 
   std::string describe(const NewtonSolver::Status status)
