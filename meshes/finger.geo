@@ -28,7 +28,8 @@ DefineConstant[
   fill   = {0.010,  Name "base fill length"},
   cap    = {0.0025, Name "tip cap thickness"},
   size   = {0.004,  Name "element size"},
-  hex    = {0,      Name "hexahedra"}
+  hex    = {0,      Name "hexahedra"},
+  layers = {1,      Name "elements across the walls"}
 ];
 
 sx[] = {0, fill, L - cap, L};
@@ -127,8 +128,11 @@ If (hex)
   EndFor
   hmax = h_base > h_tip ? h_base : h_tip;
   wmax = w_base > w_tip ? w_base : w_tip;
-  ny[] = {Ceil(bottom / size), Ceil((hmax - d - bottom) / size), Ceil(d / size)};
-  nz[] = {Ceil(d / size), Ceil((wmax - 2 * d) / size), Ceil(d / size)};
+  // Across the side and top walls and the bottom layer at least `layers`
+  // elements, whatever the size along the finger (an anisotropic mesh).
+  ny[] = {Max(layers, Ceil(bottom / size)), Ceil((hmax - d - bottom) / size),
+          Max(layers, Ceil(d / size))};
+  nz[] = {Max(layers, Ceil(d / size)), Ceil((wmax - 2 * d) / size), Max(layers, Ceil(d / size))};
   For i In {0:3}
     For j In {0:3}
       For k In {0:3}

@@ -130,7 +130,7 @@ namespace softchain::app
 
     FingerMesh mesh;
     FingerMesh::build(prm, mesh);
-    QuasiStaticSolver solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, comm,
+    QuasiStaticSolver solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, mesh.sheets, comm,
                              out.get_stream());
     out << "softchain solve: " << prm.design.name << " (" << mesh.description << "), "
         << name(prm.mesh.element_type) << ", " << solver.space().triangulation.n_global_active_cells()

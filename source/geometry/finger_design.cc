@@ -50,10 +50,14 @@ namespace softchain::geometry
       section.declare("Mesh sizes",
                       number(sizes[0]) + ", " + number(sizes[1]) + ", " + number(sizes[2]),
                       "largest element size (m) at resolution 0, 1, 2");
+      section.declare("Wall layers", "1",
+                      "hex: at least this many elements across the walls and the bottom layer");
       for (const auto &[name, member] : dimension_entries)
         section.declare(name, number(FingerDimensions().*member), "m");
       for (const auto &[name, member] : spring_entries)
         section.declare(name, number(SpringLayout().*member), "m");
+      section.declare("Reinforcement", "springs",
+                      "springs (the paper's 1D springs) | sheets (the same fibres homogenised)");
       const SurfaceDesign surface;
       section.declare("Outer surface file", "", "Shape = stl: closed STL of the outer body");
       section.declare("Cavity surface file", "", "Shape = stl: closed STL of the cavity");
@@ -96,6 +100,11 @@ namespace softchain::geometry
       require(sizes.size() == 3 && *std::min_element(sizes.begin(), sizes.end()) > 0.0, section,
               "Mesh sizes", "expected three positive sizes (resolution 0, 1, 2)");
       std::copy(sizes.begin(), sizes.end(), design.mesh_sizes.begin());
+      design.wall_layers = section.get_integer("Wall layers");
+      require(design.wall_layers >= 1 && design.wall_layers <= 8, section, "Wall layers",
+              "expected 1 to 8 elements across a wall");
+      require(design.wall_layers == 1 || design.hexahedra, section, "Wall layers",
+              "layers across the walls need Element shape = hex");
     }
 
     void check_cavity_fits(const PrmSection &section, const FingerDimensions &d)
@@ -114,6 +123,10 @@ namespace softchain::geometry
         design.dimensions.*member = positive(section, name);
       for (const auto &[name, member] : spring_entries)
         design.springs.*member = positive(section, name);
+      const std::string reinforcement = section.get("Reinforcement");
+      require(reinforcement == "springs" || reinforcement == "sheets", section, "Reinforcement",
+              "expected springs or sheets");
+      design.fibre_sheets = reinforcement == "sheets";
       check_cavity_fits(section, design.dimensions);
       require(design.springs.fabric_height < design.dimensions.bottom, section, "Fabric height",
               "the fabric must lie inside the bottom layer (below Bottom layer thickness)");

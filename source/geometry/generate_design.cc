@@ -22,11 +22,18 @@ namespace softchain::geometry
                      {"w_tip", d.tip_width},   {"h_tip", d.tip_height},  {"d", d.wall},
                      {"bottom", d.bottom},     {"fill", d.base_fill},    {"cap", d.tip_cap},
                      {"size", design.mesh_size()}, {"hex", design.hexahedra ? 1.0 : 0.0}};
+      // Named only when it changes the mesh, so that the meshes (and the
+      // databases keyed by them) of one-layer designs keep their names.
+      if (design.wall_layers > 1)
+        job.numbers.push_back({"layers", static_cast<double>(design.wall_layers)});
       return job;
     }
 
     std::vector<SpringNetwork> spring_networks(const FingerDesign &design)
     {
+      if (design.parametric() && design.fibre_sheets)
+        return {Reinforcement::fabric_sheet(design.dimensions, design.springs),
+                Reinforcement::thread_sheets(design.dimensions, design.springs)};
       if (design.parametric())
         return {Reinforcement::fabric(design.dimensions, design.springs),
                 Reinforcement::threads(design.dimensions, design.springs)};

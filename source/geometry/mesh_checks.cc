@@ -92,6 +92,13 @@ namespace softchain::geometry
             throw InputError(spring_source + ": node " + point_text(p) + " of polyline " +
                              std::to_string(l + 1) + " of network '" + network.name +
                              "' lies outside the body mesh " + mesh.path);
+    for (const auto &network : networks)
+      for (std::size_t l = 0; l < network.sheets.size(); ++l)
+        for (const auto &p : network.sheets[l].corners)
+          if (!locator.locate(p))
+            throw InputError(spring_source + ": corner " + point_text(p) + " of sheet " +
+                             std::to_string(l + 1) + " of network '" + network.name +
+                             "' lies outside the body mesh " + mesh.path);
   }
 
   void MeshChecks::check_all(const MshFile &mesh, const std::vector<SpringNetwork> &networks,

@@ -26,16 +26,21 @@ namespace softchain::geometry
         points.push_back(a + t[i] * (b - a));
     }
 
+    // Corner c (0: bottom -z, 1: bottom +z, 2: top +z, 3: top -z) of the
+    // thread ring at x: through the middle of the bottom layer and of the
+    // side and top walls.
+    Eigen::Vector3d ring_corner(const FingerDimensions &d, double x, int c)
+    {
+      const double z = 0.5 * (d.width(x) - d.wall);
+      const double y = c < 2 ? 0.5 * d.bottom : d.height(x) - 0.5 * d.wall;
+      return {x, y, (c == 0 || c == 3) ? -z : z};
+    }
+
     SpringNetwork::Polyline ring(const FingerDimensions &d, const SpringLayout &layout, double x)
     {
-      // Through the middle of the bottom layer and of the side and top walls.
-      const double z = 0.5 * (d.width(x) - d.wall);
-      const double low = 0.5 * d.bottom, high = d.height(x) - 0.5 * d.wall;
-      const std::vector<Eigen::Vector3d> corners{
-        {x, low, -z}, {x, low, z}, {x, high, z}, {x, high, -z}};
       SpringNetwork::Polyline polyline{true, {}};
-      for (std::size_t c = 0; c < corners.size(); ++c)
-        append_side(polyline.points, corners[c], corners[(c + 1) % corners.size()],
+      for (int c = 0; c < 4; ++c)
+        append_side(polyline.points, ring_corner(d, x, c), ring_corner(d, x, (c + 1) % 4),
                     layout.thread_node_spacing);
       return polyline;
     }
@@ -75,6 +80,38 @@ namespace softchain::geometry
     SpringNetwork threads{"thread", {}};
     for (int k = 0; k < n_rings; ++k)
       threads.polylines.push_back(ring(d, layout, d.cavity_start() + (k + 0.5) * layout.thread_pitch));
+    return threads;
+  }
+
+  SpringNetwork Reinforcement::fabric_sheet(const FingerDimensions &d, const SpringLayout &layout)
+  {
+    const double x0 = 0.5 * d.wall, x1 = d.length - 0.5 * d.wall;
+    const auto   half = [&](double x) { return 0.5 * (d.width(x) - d.wall); };
+    const double y    = layout.fabric_height;
+    FibreSheet   sheet{{{x0, y, -half(x0)}, {x1, y, -half(x1)}, {x1, y, half(x1)}, {x0, y, half(x0)}},
+                     {{Eigen::Vector3d::UnitX(), layout.fabric_spacing},
+                        {Eigen::Vector3d::UnitZ(), layout.fabric_spacing}}};
+    return {"fabric", {}, {sheet}};
+  }
+
+  SpringNetwork Reinforcement::thread_sheets(const FingerDimensions &d, const SpringLayout &layout)
+  {
+    const double  x0 = d.cavity_start(), x1 = d.cavity_end();
+    SpringNetwork threads{"thread", {}, {}};
+    // Side c of the ring (from corner c to c + 1) swept from x0 to x1; its
+    // hoop direction is that side's. Rings a pitch apart along x lie
+    // pitch |t| / t_x apart in a strip that slopes with the taper (t: the
+    // strip's direction across the hoops), so the sheet holds the rings'
+    // thread length per unit length of finger.
+    for (int c = 0; c < 4; ++c)
+      {
+        const Eigen::Vector3d a = ring_corner(d, x0, c), b = ring_corner(d, x0, (c + 1) % 4);
+        const Eigen::Vector3d hoop = (b - a).normalized();
+        const Eigen::Vector3d edge = ring_corner(d, x1, c) - a;
+        const Eigen::Vector3d t    = edge - edge.dot(hoop) * hoop;
+        threads.sheets.push_back({{a, ring_corner(d, x1, c), ring_corner(d, x1, (c + 1) % 4), b},
+                                  {{hoop, layout.thread_pitch * t.norm() / t.x()}}});
+      }
     return threads;
   }
 } // namespace softchain::geometry

@@ -49,6 +49,29 @@ namespace softchain::geometry
         }
       return polyline;
     }
+
+    // 'sheet N M', then N corners 'x y z' and M families 'fibre dx dy dz spacing'.
+    FibreSheet read_sheet(TextLines &lines, std::istringstream &line)
+    {
+      long n = -1, m = -1;
+      line >> n >> m;
+      if (n < 3 || m < 1)
+        lines.fail("expected 'sheet N M' (N >= 3 corners, M >= 1 fibre families)");
+      FibreSheet  sheet{std::vector<Eigen::Vector3d>(n), std::vector<FibreSheet::Family>(m)};
+      std::string rest, keyword;
+      for (auto &p : sheet.corners)
+        if (!next_significant(lines, line) || !(line >> p.x() >> p.y() >> p.z()) || (line >> rest))
+          lines.fail("expected a corner 'x y z' (sheet of " + std::to_string(n) + " corners)");
+      for (auto &f : sheet.families)
+        {
+          Eigen::Vector3d &a = f.direction;
+          if (!next_significant(lines, line) || !(line >> keyword >> a.x() >> a.y() >> a.z() >> f.spacing) ||
+              keyword != "fibre" || (line >> rest) || !(f.spacing > 0) || !(a.norm() > 0))
+            lines.fail("expected 'fibre dx dy dz spacing' (a nonzero direction, a positive spacing)");
+          a.normalize();
+        }
+      return sheet;
+    }
   } // namespace
 
   std::vector<SpringNetwork> SpringNetworkFile::read(const std::string &path)
@@ -68,11 +91,22 @@ namespace softchain::geometry
           }
         else if (keyword == "polyline" && !networks.empty())
           networks.back().polylines.push_back(read_polyline(lines, line));
+        else if (keyword == "sheet" && !networks.empty())
+          networks.back().sheets.push_back(read_sheet(lines, line));
         else
-          lines.fail("expected 'network NAME' or 'polyline open|closed N' after a network line");
+          lines.fail("expected 'network NAME', or 'polyline open|closed N' or 'sheet N M' after a "
+                     "network line");
       }
     return networks;
   }
+
+  namespace
+  {
+    std::string point(const Eigen::Vector3d &p)
+    {
+      return data::canonical(p.x()) + " " + data::canonical(p.y()) + " " + data::canonical(p.z());
+    }
+  } // namespace
 
   std::string SpringNetworkFile::text(const std::vector<SpringNetwork> &networks)
   {
@@ -86,8 +120,15 @@ namespace softchain::geometry
             out << "polyline " << (polyline.closed ? "closed " : "open ") << polyline.points.size()
                 << "\n";
             for (const auto &p : polyline.points)
-              out << data::canonical(p.x()) << " " << data::canonical(p.y()) << " "
-                  << data::canonical(p.z()) << "\n";
+              out << point(p) << "\n";
+          }
+        for (const auto &sheet : network.sheets)
+          {
+            out << "sheet " << sheet.corners.size() << " " << sheet.families.size() << "\n";
+            for (const auto &p : sheet.corners)
+              out << point(p) << "\n";
+            for (const auto &f : sheet.families)
+              out << "fibre " << point(f.direction) << " " << data::canonical(f.spacing) << "\n";
           }
       }
     return out.str();

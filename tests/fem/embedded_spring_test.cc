@@ -46,7 +46,7 @@ namespace
     if (with_spring)
       springs.push_back({"fabric", {Point<3>(0, h / 2, h / 2), Point<3>(L, h / 2, h / 2)}, false});
     std::ostringstream log;
-    QuasiStaticSolver  solver(prm, mesh, {"solid"}, springs, MPI_COMM_WORLD, log);
+    QuasiStaticSolver  solver(prm, mesh, {"solid"}, springs, {}, MPI_COMM_WORLD, log);
     LoadState          target;
     target.tip_motion = TipMotion{Tensor<1, 3>({delta, 0, 0}), Tensor<1, 3>()};
     REQUIRE(solver.solve(target).converged);
@@ -66,7 +66,7 @@ namespace
     {
       test::cantilever_block(mesh, {1, 1, 1}, L, h);
       space   = std::make_unique<FiniteElementSpace>(mesh, ElementType::Q2, MPI_COMM_WORLD);
-      network = std::make_unique<EmbeddedSpringNetwork>(*space, std::vector<SpringPolyline>{{"fabric", {a, b}, false}},
+      network = std::make_unique<EmbeddedSpringNetwork>(*space, std::vector<SpringPolyline>{{"fabric", {a, b}, false}}, std::vector<FibreSheet>{},
                                                         std::map<std::string, double>{{"fabric", EA}}, d);
     }
 
@@ -130,12 +130,12 @@ TEST_CASE("a spring link that crosses a cell face is refused, naming the link", 
   test::cantilever_block(mesh, {20, 3, 3}, L, h);
   const FiniteElementSpace space(mesh, ElementType::Q2, MPI_COMM_WORLD);
   const SpringPolyline     across{"fabric", {Point<3>(0, h / 2, h / 2), Point<3>(L, h / 2, h / 2)}, false};
-  CHECK_THROWS_WITH(EmbeddedSpringNetwork(space, {across}, {{"fabric", EA}}, d),
+  CHECK_THROWS_WITH(EmbeddedSpringNetwork(space, {across}, {}, {{"fabric", EA}}, d),
                     Catch::Contains("spring link 0 of network 'fabric'") &&
                       Catch::Contains("does not lie in one cell"));
   // The same polyline split at the faces (20 links) is accepted.
   const auto within = cell_conforming_polylines({across}, mesh, *space.mapping);
-  CHECK(EmbeddedSpringNetwork(space, within, {{"fabric", EA}}, d).all_links().size() == 20);
+  CHECK(EmbeddedSpringNetwork(space, within, {}, {{"fabric", EA}}, d).all_links().size() == 20);
 }
 
 // A taut link's tangent against the closed forms of a string under tension

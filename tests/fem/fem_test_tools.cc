@@ -70,7 +70,8 @@ namespace softchain::fem::test
   MeshSolverFixture::MeshSolverFixture(const Parameters &p, const Triangulation<3> &mesh)
     : prm(p)
     , solver(std::make_unique<QuasiStaticSolver>(prm, mesh, std::vector<std::string>{"solid"},
-                                                 std::vector<SpringPolyline>(), MPI_COMM_WORLD,
+                                                 std::vector<SpringPolyline>(),
+                                                 std::vector<FibreSheet>(), MPI_COMM_WORLD,
                                                  log))
   {}
 
@@ -112,7 +113,7 @@ namespace softchain::fem::test
   {
     FingerMesh::build(prm, mesh);
     solver = std::make_unique<QuasiStaticSolver>(prm, mesh.triangulation, mesh.material_names,
-                                                 mesh.springs, MPI_COMM_WORLD, log);
+                                                 mesh.springs, mesh.sheets, MPI_COMM_WORLD, log);
   }
 
   namespace

@@ -57,6 +57,8 @@ TEST_CASE("bad design parameters are named", "[geometry][prm][errors]")
   CHECK_THROWS_WITH(read("Fabric height", "0.004"), Contains("'Fabric height'"));
   CHECK_THROWS_WITH(read("Element shape", "prism"), Contains("'Element shape'"));
   CHECK_THROWS_WITH(read("Mesh sizes", "0.01, 0.005"), Contains("'Mesh sizes'"));
+  CHECK_THROWS_WITH(read("Wall layers", "0"), Contains("'Wall layers'"));
+  CHECK_THROWS_WITH(read("Reinforcement", "rope"), Contains("'Reinforcement'"));
   CHECK_THROWS_AS(read("Length", "ninety"), InputError);
 }
 

@@ -12,6 +12,9 @@
 #include <Eigen/Geometry> // cross products
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <set>
+
 #include "test_files.h"
 
 using namespace softchain::geometry;
@@ -37,11 +40,14 @@ namespace
 
   // `test` keeps the scratch directories of test cases apart (ctest -j).
   Meshed mesh_design(const std::string &test, const std::string &name,
-                     const std::string &element_shape)
+                     const std::string &element_shape, const std::string &wall_layers = "1")
   {
     const std::string dir = scratch_directory(test + "_" + name + "_" + element_shape);
-    const std::string prm =
-      design_variant(name, dir, {{"Resolution", "0"}, {"Element shape", element_shape}});
+    std::vector<std::pair<std::string, std::string>> changes{{"Resolution", "0"},
+                                                             {"Element shape", element_shape}};
+    if (wall_layers != "1") // only p10.prm names the entry
+      changes.push_back({"Wall layers", wall_layers});
+    const std::string prm = design_variant(name, dir, changes);
     GmshMesher mesher(dir + "/cache");
     Meshed     m{FingerDesign::read(prm), {}, {}};
     m.generated = generate_design(m.design, mesher);
@@ -69,6 +75,44 @@ TEST_CASE("parametric designs match their analytic volumes", "[geometry][mesh]")
   const std::size_t corners = element_shape == "hex" ? 8 : 4;
   for (const auto &cell : m.mesh.cells)
     REQUIRE(cell.nodes.size() == corners);
+}
+
+// The hexahedral grid of meshes/finger.geo has, per direction and block,
+// ceil(block length / size) cells, and at least `Wall layers` across the
+// walls and the bottom layer; the cavity block is left out. P10 at 8 mm:
+// 2 + 10 + 1 cells along x, (1, 2, 1) across y and z with one layer (168
+// hexahedra, measured in the solver's log), (2, 2, 2) with two (428). Each
+// count is checked against that formula, so a layer lost or added anywhere
+// fails; so does a wall layer that is not d / layers thick.
+TEST_CASE("Wall layers puts that many hexahedra across each wall", "[geometry][mesh]")
+{
+  for (const int layers : {1, 2, 3})
+    {
+      const Meshed            m = mesh_design("layers" + std::to_string(layers), "p10", "hex",
+                                              std::to_string(layers));
+      const FingerDimensions &d = m.design.dimensions;
+      const double            s = m.design.mesh_size();
+      const auto cells = [&](double length) { return static_cast<int>(std::ceil(length / s - 1e-12)); };
+      const int  n_fill = cells(d.base_fill), n_cap = cells(d.tip_cap);
+      const int  n_cavity = cells(d.length - d.base_fill - d.tip_cap);
+      const int  across_y = cells(std::max(d.base_height, d.tip_height) - d.wall - d.bottom);
+      const int  across_z = cells(std::max(d.base_width, d.tip_width) - 2 * d.wall);
+      const int  ny = std::max(layers, cells(d.bottom)) + across_y + std::max(layers, cells(d.wall));
+      const int  nz = 2 * std::max(layers, cells(d.wall)) + across_z;
+      CAPTURE(layers);
+      CHECK(static_cast<int>(m.mesh.cells.size()) ==
+            (n_fill + n_cavity + n_cap) * ny * nz - n_cavity * across_y * across_z);
+      // Node z coordinates at the base (to 1 nm: gmsh's transfinite
+      // interpolation differs in the last digits): the side wall's are
+      // d / layers apart.
+      std::set<long> z_at_base;
+      for (const auto &p : m.mesh.nodes)
+        if (p.x() == 0.0 && p.z() < -0.5 * d.base_width + d.wall + 1e-9)
+          z_at_base.insert(std::lround(p.z() * 1e9));
+      REQUIRE(static_cast<int>(z_at_base.size()) == std::max(layers, cells(d.wall)) + 1);
+      for (auto z = z_at_base.begin(); std::next(z) != z_at_base.end(); ++z)
+        CHECK(std::abs((*std::next(z) - *z) * 1e-9 - d.wall / (z_at_base.size() - 1)) <= 2e-9);
+    }
 }
 
 TEST_CASE("parametric meshes carry the physical groups", "[geometry][mesh]")

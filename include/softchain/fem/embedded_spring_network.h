@@ -20,7 +20,16 @@
 // taut at an iterate but slack at the solution then sheds its tension at
 // once, where Newton on the law t(eps(u)) alone halves its strain per
 // iteration (docs/history.md, "Link tensions as Newton unknowns").
+//
+// Fibre sheets (FibreSheet) enter as fields of infinitesimal links: at each
+// point of the sheet's quadrature (sheet_quadrature), a family of unit
+// direction a and membrane stiffness k = EA / spacing is a link of rest
+// vector a (L = 1) whose current vector is F a, the fibre's stretch, so that
+//     delta_i = grad N_i . a,   EA_link = k w_q   (w_q the point's area),
+// and the link's energy EA_link L psi(eps) is the sheet's k psi(eps) dA at
+// that point. The sheet's links are local to the rank that owns their cell.
 #include <softchain/fem/embedded_points.h>
+#include <softchain/fem/fibre_sheet.h>
 #include <softchain/fem/spring_polyline.h>
 #include <softchain/fem/tension_only_law.h>
 
@@ -48,10 +57,9 @@ namespace softchain::fem
     // in one cell.
     EmbeddedSpringNetwork(const FiniteElementSpace            &space,
                           const std::vector<SpringPolyline>   &polylines,
+                          const std::vector<FibreSheet>       &sheets,
                           const std::map<std::string, double> &axial_rigidity,
                           double                               smoothing_strain);
-
-    bool empty() const { return links.empty(); }
 
     const TensionOnlyLaw &law() const { return tension_law; }
     // The norm of the link forces at rest, where every link carries the
@@ -86,16 +94,17 @@ namespace softchain::fem
     const std::vector<TensionOnlyLaw::State> &link_states() const { return link_state; }
     void restore_link_states(const std::vector<TensionOnlyLaw::State> &states) { link_state = states; }
 
-    // Tension of every link on the law (identical on every rank).
+    // Tension of every polyline link on the law (identical on every rank).
     std::vector<double> tensions(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u) const;
 
     const EmbeddedPoints             &points() const { return *nodes; }
+    // The polylines' links (the sheets' have no nodes).
     const std::vector<Link>          &all_links() const { return links; }
     const std::vector<std::string>   &networks() const { return network_names; }
 
   private:
     std::unique_ptr<EmbeddedPoints> nodes;
-    std::vector<Link>               links;
+    std::vector<Link>               links; // the polylines' (owned: indices 0 .. links.size())
     std::vector<std::string>        network_names;
     TensionOnlyLaw                  tension_law;
     double                          rest_force_norm = 0;
@@ -106,11 +115,17 @@ namespace softchain::fem
     // delta_i = N_i(node b) - N_i(node a).
     struct LinkStencil
     {
+      std::vector<dealii::types::global_dof_index> dof; // the cell's, in its order
       std::vector<unsigned int>                    component;
       std::vector<double>                          delta;
       dealii::Tensor<1, 3>                         rest_vector; // X_b - X_a
+      double                                       rest_length;
+      double                                       axial_rigidity;
     };
     LinkStencil link_stencil(const Link &link) const;
+    // Adds the links of a sheet's quadrature points (after the polylines'
+    // links, indices links.size() and up).
+    void add_sheet(const FiniteElementSpace &space, const FibreSheet &sheet, double axial_rigidity);
     // x_b - x_a of owned link k, from the DoF values of its cell or of a
     // global ghosted vector (zero: the rest vector).
     dealii::Tensor<1, 3> link_vector(unsigned int k, const dealii::Vector<double> &cell_u) const;
@@ -122,7 +137,8 @@ namespace softchain::fem
     double add_link(unsigned int k, const dealii::Vector<double> &u,
                     dealii::FullMatrix<double> *matrix, dealii::Vector<double> &rhs) const;
 
-    // Stencils of this rank's links; the links of each cell (by active cell index).
+    // Stencils of this rank's links (a polyline link k at k, the sheets'
+    // after them); the links of each cell (by active cell index).
     std::vector<LinkStencil>               owned_stencils;
     std::vector<std::vector<unsigned int>> links_in_cell;
     std::vector<unsigned int>              owned_links;

@@ -1,8 +1,9 @@
 #pragma once
 // FingerMesh: the serial reference mesh of a design with its boundary ids
-// (boundary_ids.h), material regions and spring polylines, from one of three
+// (boundary_ids.h), material regions, spring polylines and fibre sheets, from one of three
 // sources: the built-in hollow bender, a gmsh .msh file, or a parametric
 // finger design meshed by gmsh (source/geometry).
+#include <softchain/fem/fibre_sheet.h>
 #include <softchain/fem/parameters.h>
 #include <softchain/fem/spring_polyline.h>
 
@@ -18,6 +19,7 @@ namespace softchain::fem
     dealii::Triangulation<3>            triangulation;
     std::vector<std::string>    material_names; // by material id
     std::vector<SpringPolyline> springs;
+    std::vector<FibreSheet>     sheets;
     std::string                 description; // for logs and the database
 
     // Throws data::InputError naming the file or parameter on bad input

@@ -65,6 +65,7 @@ namespace softchain::fem
                       const dealii::Triangulation<3>            &serial_mesh,
                       const std::vector<std::string>    &material_names,
                       const std::vector<SpringPolyline> &springs,
+                      const std::vector<FibreSheet>     &sheets,
                       MPI_Comm                           communicator,
                       std::ostream                      &log);
 

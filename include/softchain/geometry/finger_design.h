@@ -59,8 +59,14 @@ namespace softchain::geometry
     int              resolution = 1; // 0 coarse, 1 default, 2 fine
     bool             hexahedra  = false;
     std::array<double, 3> mesh_sizes{{0.008, 0.004, 0.0018}}; // m, per resolution
+    // Hexahedra: at least this many elements across each wall and the bottom
+    // layer, however large the elements along the finger.
+    int              wall_layers = 1;
     FingerDimensions dimensions;
     SpringLayout     springs;
+    // Parametric shapes: the fabric and threads as the paper's 1D springs
+    // (false) or homogenised over sheets (true; Reinforcement).
+    bool             fibre_sheets = false;
     SurfaceDesign    surface;
 
     bool   parametric() const { return shape != Shape::stl; }

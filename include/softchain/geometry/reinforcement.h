@@ -8,6 +8,13 @@
 //    through the middle of the side and top walls and of the bottom layer.
 // Every node lies strictly inside the silicone (FingerDimensions::
 // material_margin > 0).
+//
+// The same structures homogenised (`Finger design/Reinforcement = sheets`):
+//  - fabric_sheet: the grid's trapezoid, fibres along x and z, each family
+//    with the grid's spacing;
+//  - thread_sheets: the rings' rectangle swept over the cavity, four planar
+//    strips (bottom layer, side walls, top wall) with hoop fibres a thread
+//    pitch apart.
 #include <softchain/geometry/finger_design.h>
 #include <softchain/geometry/spring_network.h>
 
@@ -18,5 +25,7 @@ namespace softchain::geometry
   public:
     static SpringNetwork fabric(const FingerDimensions &dimensions, const SpringLayout &layout);
     static SpringNetwork threads(const FingerDimensions &dimensions, const SpringLayout &layout);
+    static SpringNetwork fabric_sheet(const FingerDimensions &dimensions, const SpringLayout &layout);
+    static SpringNetwork thread_sheets(const FingerDimensions &dimensions, const SpringLayout &layout);
   };
 } // namespace softchain::geometry

@@ -3,7 +3,10 @@
 // polylines of tension-only springs given by their nodes in reference
 // coordinates (m). Each node lies inside the body material and moves with the
 // cell that contains it. Names used: "fabric" (strain-limiting layer) and
-// "thread" (cross-sectional rings).
+// "thread" (cross-sectional rings). A network may instead, or as well, hold
+// its fibres smeared over sheets (FibreSheet).
+#include <softchain/geometry/fibre_sheet.h>
+
 #include <Eigen/Core>
 
 #include <string>
@@ -20,7 +23,8 @@ namespace softchain::geometry
     };
 
     std::string           name;
-    std::vector<Polyline> polylines;
+    std::vector<Polyline>   polylines;
+    std::vector<FibreSheet> sheets;
 
     std::size_t n_nodes() const;
   };

@@ -43,18 +43,32 @@ namespace softchain::fem
       return names;
     }
 
-    std::vector<SpringPolyline> read_springs(const std::string &file)
+    Point<3> to_point(const Eigen::Vector3d &p)
     {
-      std::vector<SpringPolyline> result;
+      return Point<3>(p[0], p[1], p[2]);
+    }
+
+    void read_springs(const std::string &file, FingerMesh &mesh)
+    {
       for (const auto &network : geometry::SpringNetworkFile::read(file))
-        for (const auto &polyline : network.polylines)
-          {
-            SpringPolyline line{network.name, {}, polyline.closed};
-            for (const auto &p : polyline.points)
-              line.points.emplace_back(p[0], p[1], p[2]);
-            result.push_back(line);
-          }
-      return result;
+        {
+          for (const auto &polyline : network.polylines)
+            {
+              SpringPolyline line{network.name, {}, polyline.closed};
+              for (const auto &p : polyline.points)
+                line.points.push_back(to_point(p));
+              mesh.springs.push_back(line);
+            }
+          for (const auto &sheet : network.sheets)
+            {
+              FibreSheet fem_sheet{network.name, {}, {}};
+              for (const auto &p : sheet.corners)
+                fem_sheet.corners.push_back(to_point(p));
+              for (const auto &f : sheet.families)
+                fem_sheet.families.push_back({to_point(f.direction), f.spacing});
+              mesh.sheets.push_back(fem_sheet);
+            }
+        }
     }
   } // namespace
 
@@ -126,7 +140,10 @@ namespace softchain::fem
           }
         read_gmsh_mesh(mesh_file, mesh);
         mesh.triangulation.refine_global(prm.mesh.global_refinements);
-        mesh.springs = spring_file.empty() ? std::vector<SpringPolyline>() : read_springs(spring_file);
+        mesh.springs.clear();
+        mesh.sheets.clear();
+        if (!spring_file.empty())
+          read_springs(spring_file, mesh);
         mesh.description = mesh_file;
       }
     if (prm.mesh.node_jitter > 0) // boundary nodes stay: the shape is kept
@@ -145,6 +162,8 @@ namespace softchain::fem
     std::set<std::string> networks;
     for (const auto &polyline : mesh.springs)
       networks.insert(polyline.network);
+    for (const auto &sheet : mesh.sheets)
+      networks.insert(sheet.network);
     for (const auto &network : networks)
       if (prm.springs.axial_rigidity.count(network) == 0)
         {

@@ -72,6 +72,7 @@ namespace softchain::fem
                                        const Triangulation<3>            &serial_mesh,
                                        const std::vector<std::string>    &material_names,
                                        const std::vector<SpringPolyline> &spring_polylines,
+                                       const std::vector<FibreSheet>     &fibre_sheets,
                                        MPI_Comm                           communicator,
                                        std::ostream                      &log_stream)
     : prm(parameters)
@@ -93,11 +94,12 @@ namespace softchain::fem
       }
     pressure     = std::make_unique<FollowerPressure>(*fe_space);
     tip_traction = std::make_unique<DeadSurfaceTraction>(*fe_space, boundary::tip);
-    if (!spring_polylines.empty())
+    if (!spring_polylines.empty() || !fibre_sheets.empty())
       springs = std::make_unique<EmbeddedSpringNetwork>(*fe_space,
                                                          cell_conforming_polylines(
                                                            spring_polylines, serial_mesh,
                                                            *fe_space->mapping),
+                                                         fibre_sheets,
                                                          prm.springs.axial_rigidity,
                                                          prm.springs.smoothing_strain);
     for (const auto &name : material_names)

@@ -1,7 +1,9 @@
 #include <softchain/data/input_error.h>
 #include <softchain/fem/embedded_spring_network.h>
+#include <softchain/fem/sheet_quadrature.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -15,22 +17,26 @@ namespace softchain::fem
   EmbeddedSpringNetwork::EmbeddedSpringNetwork(
     const FiniteElementSpace            &space,
     const std::vector<SpringPolyline>   &polylines,
+    const std::vector<FibreSheet>       &sheets,
     const std::map<std::string, double> &axial_rigidity,
     const double                         smoothing_strain)
     : tension_law(smoothing_strain)
   {
+    const auto rigidity_of = [&](const std::string &network) {
+      const auto rigidity = axial_rigidity.find(network);
+      if (rigidity == axial_rigidity.end())
+        throw data::InputError("Springs/Axial rigidity: no value for spring network '" + network + "'");
+      if (std::find(network_names.begin(), network_names.end(), network) == network_names.end())
+        network_names.push_back(network);
+      return rigidity->second;
+    };
     // Two embedded nodes per link, both evaluated in the cell around the
     // link's midpoint (cell_conforming_polylines() puts each link in one cell).
     std::vector<Point<3>> ends, midpoints;
     for (const auto &polyline : polylines)
       {
-        const auto rigidity = axial_rigidity.find(polyline.network);
-        if (rigidity == axial_rigidity.end())
-          throw data::InputError("Springs/Axial rigidity: no value for spring network '" +
-                                 polyline.network + "'");
-        auto name = std::find(network_names.begin(), network_names.end(), polyline.network);
-        if (name == network_names.end())
-          name = network_names.insert(network_names.end(), polyline.network);
+        const double EA   = rigidity_of(polyline.network);
+        const auto   name = std::find(network_names.begin(), network_names.end(), polyline.network);
         const auto        &p       = polyline.points;
         const unsigned int n       = p.size();
         const unsigned int n_links = n < 2 ? 0 : (polyline.closed ? n : n - 1);
@@ -40,8 +46,7 @@ namespace softchain::fem
             if (a.distance(b) < 1e-12) // a repeated node: no link
               continue;
             links.push_back({static_cast<unsigned int>(ends.size()),
-                             static_cast<unsigned int>(ends.size() + 1), a.distance(b),
-                             rigidity->second,
+                             static_cast<unsigned int>(ends.size() + 1), a.distance(b), EA,
                              static_cast<unsigned int>(name - network_names.begin())});
             ends.insert(ends.end(), {a, b});
             const Point<3> middle = a + 0.5 * (b - a);
@@ -68,19 +73,49 @@ namespace softchain::fem
           links_in_cell[a.cell].push_back(k);
           owned_links.push_back(k);
         }
+    for (const auto &sheet : sheets)
+      add_sheet(space, sheet, rigidity_of(sheet.network));
     double squares = 0;
     for (const unsigned int k : owned_links)
       {
         const LinkStencil &s = owned_stencils[k];
         const Tensor<1, 3> e = s.rest_vector / s.rest_vector.norm();
-        const double       T = links[k].axial_rigidity * tension_law.tension(0.0);
+        const double       T = s.axial_rigidity * tension_law.tension(0.0);
         for (unsigned int i = 0; i < s.component.size(); ++i)
           squares += std::pow(T * s.delta[i] * e[s.component[i]], 2);
       }
     rest_force_norm = std::sqrt(Utilities::MPI::sum(squares, space.communicator));
-    link_state.assign(links.size(), tension_law.state_at(0.0));
+    link_state.assign(owned_stencils.size(), tension_law.state_at(0.0));
     state_before = link_state;
-    state_step.assign(links.size(), {0.0, 0.0});
+    state_step.assign(owned_stencils.size(), {0.0, 0.0});
+  }
+
+  void EmbeddedSpringNetwork::add_sheet(const FiniteElementSpace &space, const FibreSheet &sheet,
+                                        const double axial_rigidity)
+  {
+    const FiniteElement<3> &fe = *space.fe;
+    for (const auto &rule : sheet_quadrature(space, sheet.corners))
+      {
+        FEValues<3> values(*space.mapping, fe, Quadrature<3>(rule.unit_points), update_gradients);
+        values.reinit(rule.cell);
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        rule.cell->get_dof_indices(dofs);
+        for (unsigned int q = 0; q < rule.weights.size(); ++q)
+          for (const auto &family : sheet.families)
+            {
+              LinkStencil s{dofs, {}, {}, family.direction, 1.0,
+                            axial_rigidity / family.spacing * rule.weights[q]};
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  s.component.push_back(c);
+                  s.delta.push_back(values.shape_grad_component(i, q, c) * family.direction);
+                }
+              links_in_cell[rule.cell->active_cell_index()].push_back(owned_stencils.size());
+              owned_links.push_back(owned_stencils.size());
+              owned_stencils.push_back(std::move(s));
+            }
+      }
   }
 
   // The DoFs of the link's cell, in its order, each with
@@ -89,8 +124,12 @@ namespace softchain::fem
   EmbeddedSpringNetwork::link_stencil(const Link &link) const
   {
     const auto &a = nodes->stencil(link.a), &b = nodes->stencil(link.b);
-    LinkStencil result{a.component, b.weight,
-                       nodes->reference_point(link.b) - nodes->reference_point(link.a)};
+    LinkStencil result{a.dof,
+                       a.component,
+                       b.weight,
+                       nodes->reference_point(link.b) - nodes->reference_point(link.a),
+                       link.rest_length,
+                       link.axial_rigidity};
     for (unsigned int i = 0; i < a.weight.size(); ++i)
       result.delta[i] -= a.weight[i];
     return result;
@@ -109,11 +148,10 @@ namespace softchain::fem
                                                   const TrilinosWrappers::MPI::Vector &u,
                                                   const bool with_rest) const
   {
-    const LinkStencil &s    = owned_stencils[k];
-    const auto        &dofs = nodes->stencil(links[k].a).dof;
-    Tensor<1, 3>       d    = with_rest ? s.rest_vector : Tensor<1, 3>();
+    const LinkStencil &s = owned_stencils[k];
+    Tensor<1, 3>       d = with_rest ? s.rest_vector : Tensor<1, 3>();
     for (unsigned int i = 0; i < s.component.size(); ++i)
-      d[s.component[i]] += s.delta[i] * u[dofs[i]];
+      d[s.component[i]] += s.delta[i] * u[s.dof[i]];
     return d;
   }
 
@@ -127,12 +165,11 @@ namespace softchain::fem
                                          FullMatrix<double> *matrix, Vector<double> &rhs) const
   {
     const LinkStencil          &s     = owned_stencils[k];
-    const Link                 &link  = links[k];
     const TensionOnlyLaw::State state = link_state[k];
     const Tensor<1, 3>          d     = link_vector(k, u);
     const double                l     = d.norm();
-    const double                eps   = (l - link.rest_length) / link.rest_length;
-    const double                EA    = link.axial_rigidity;
+    const double                eps   = (l - s.rest_length) / s.rest_length;
+    const double                EA    = s.axial_rigidity;
     const double                T     = EA * tension_law.condensed_tension(state, eps);
     const Tensor<1, 3>          e     = d / l;
     double                      f_norm_squared = 0;
@@ -144,7 +181,7 @@ namespace softchain::fem
       }
     if (matrix)
       {
-        const double dT_dl = EA * tension_law.condensed_slope(state) / link.rest_length;
+        const double dT_dl = EA * tension_law.condensed_slope(state) / s.rest_length;
         const double T_own = EA * state.tension;
         double       H[3][3];
         for (unsigned int c = 0; c < 3; ++c)
@@ -171,7 +208,7 @@ namespace softchain::fem
   {
     for (const unsigned int k : owned_links)
       {
-        const double L   = links[k].rest_length;
+        const double L   = owned_stencils[k].rest_length;
         const double eps = (link_vector(k, u, true).norm() - L) / L;
         // At its rest length (to the round-off of the reference positions)
         // a link starts on the taut side of the knee (TensionOnlyLaw::rest_start).
@@ -186,7 +223,7 @@ namespace softchain::fem
   {
     for (const unsigned int k : owned_links)
       {
-        const double       L     = links[k].rest_length;
+        const double       L     = owned_stencils[k].rest_length;
         const Tensor<1, 3> d     = link_vector(k, u, true);
         const double       l     = d.norm();
         const double       d_eps = link_vector(k, du, false) * d / (l * L);

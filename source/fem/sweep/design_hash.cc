@@ -36,6 +36,14 @@ namespace softchain::fem
           for (const auto &p : spring.points)
             text += point_text(p) + '\n';
         }
+      for (const auto &sheet : mesh.sheets)
+        {
+          text += "h " + sheet.network + '\n';
+          for (const auto &p : sheet.corners)
+            text += point_text(p) + '\n';
+          for (const auto &f : sheet.families)
+            text += "fibre " + point_text(Point<3>(f.direction)) + ' ' + data::canonical(f.spacing) + '\n';
+        }
       return text;
     }
   } // namespace

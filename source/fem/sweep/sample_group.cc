@@ -61,7 +61,8 @@ namespace softchain::fem
   SampleGroup::SampleGroup(const Parameters &parameters, const FingerMesh &mesh,
                            const MPI_Comm group, std::ostream &log)
     : prm(without_obstacles(parameters))
-    , solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, group, log)
+    , solver(prm, mesh.triangulation, mesh.material_names, mesh.springs, mesh.sheets, group,
+             log)
     , nodes(solver.space())
     , base(solver.space())
     , rest_volume(solver.pressure_load().has_cavity() ?
