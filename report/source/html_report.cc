@@ -92,6 +92,27 @@ namespace softchain::report
                                                         "Plots = false in subsection Reduction).");
   }
 
+  // The FEM's own error, beside the chain's: fem_accuracy.csv of
+  // `softchain accuracy` (its last row holds the converged estimate and,
+  // in the distance column, that estimate's uncertainty).
+  void HtmlReport::fem_accuracy_paragraph(HtmlDocument &page) const
+  {
+    const std::string path = output_directory_ + "/fem_accuracy.csv";
+    if (!fs::exists(path))
+      {
+        page.paragraph("The FEM's discretisation error is not estimated for this design (run "
+                       "`softchain accuracy` on its .prm; docs/fem_accuracy.md).");
+        return;
+      }
+    const auto        table = data::CsvTable::read(path);
+    const std::size_t last  = table.n_rows() - 1;
+    page.paragraph("FEM discretisation error (softchain accuracy, at the .prm's Loads): the design's "
+                   "mesh lies " + fmt(table.number(0, "distance_to_converged_percent_L")) +
+                   " % of L from the mesh-converged answer, which is uncertain to " +
+                   fmt(table.number(last, "distance_to_converged_percent_L")) +
+                   " % of L. The chain's errors below are against the design's own FEM.");
+  }
+
   // The answer first: how far the chain and the baseline land from the FEM,
   // and what one FEM sample and one chain equilibrium cost.
   void HtmlReport::summary_section(HtmlDocument &page) const
@@ -107,6 +128,7 @@ namespace softchain::report
     page.paragraph(std::to_string(samples_.size()) + " FEM samples (" + std::to_string(failed) +
                    " failed), median " + fmt(median(fem_times)) + " s of wall time per sample. Chain: " +
                    data::method_name(chain_.method) + " at b = " + fmt(chain_.half_width_fraction) + " a.");
+    fem_accuracy_paragraph(page);
     if (!fs::exists(data::ChainFileSet(output_directory_).validation_summary))
       {
         page.paragraph("No chain validation (chain/validation_summary.csv is missing; see section 4).");

@@ -11,6 +11,10 @@ namespace softchain::app
   int solve_command(const data::PrmFile &prm);
   // The sample sweep into <output dir>/database.h5 (fem::SampleSweep).
   int sweep_command(const data::PrmFile &prm);
+  // The design's FEM discretisation error: Loads on its mesh against the
+  // converged estimate from three finer meshes with fibre sheets;
+  // <output dir>/fem_accuracy.csv.
+  int accuracy_command(const data::PrmFile &prm);
   // The whole pipeline: sweep, reduction, chain, report; lists every output file.
   int run_command(const data::PrmFile &prm);
 } // namespace softchain::app

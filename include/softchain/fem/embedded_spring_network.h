@@ -98,6 +98,20 @@ namespace softchain::fem
     std::vector<double> tensions(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u) const;
 
     const EmbeddedPoints             &points() const { return *nodes; }
+    // A sheet's fibre family at one quadrature point, at the displacement
+    // given to sheet_fibres(): deformed place, unit deformed direction
+    // F a / |F a| and membrane tension per unit width (EA / spacing) t(eps) [N/m].
+    struct SheetFibre
+    {
+      dealii::Point<3>     place;
+      dealii::Tensor<1, 3> direction;
+      double               tension_per_width;
+      unsigned int         network;
+    };
+    bool has_sheets() const { return with_sheets; }
+    // This rank's sheet fibres.
+    std::vector<SheetFibre> sheet_fibres(const dealii::TrilinosWrappers::MPI::Vector &ghosted_u) const;
+
     // The polylines' links (the sheets' have no nodes).
     const std::vector<Link>          &all_links() const { return links; }
     const std::vector<std::string>   &networks() const { return network_names; }
@@ -123,9 +137,22 @@ namespace softchain::fem
       double                                       axial_rigidity;
     };
     LinkStencil link_stencil(const Link &link) const;
+    unsigned int network_index(const std::string &network) const;
     // Adds the links of a sheet's quadrature points (after the polylines'
     // links, indices links.size() and up).
     void add_sheet(const FiniteElementSpace &space, const FibreSheet &sheet, double axial_rigidity);
+    // Where each sheet link's quadrature point lies: reference place and
+    // the shape values there (in its stencil's DoF order), for the output.
+    struct SheetPlace
+    {
+      unsigned int        link;
+      dealii::Point<3>    reference;
+      std::vector<double> value;
+      double              width; // the point's area over the rest length: k = EA_link / width
+      unsigned int        network;
+    };
+    std::vector<SheetPlace> sheet_places;
+    bool                    with_sheets = false;
     // x_b - x_a of owned link k, from the DoF values of its cell or of a
     // global ghosted vector (zero: the rest vector).
     dealii::Tensor<1, 3> link_vector(unsigned int k, const dealii::Vector<double> &cell_u) const;

@@ -141,9 +141,12 @@ namespace softchain::fem
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       write_pvd(directory + "/" + name + ".pvd", body_series);
 
-    if (solver.spring_network())
+    if (solver.spring_network() && !solver.spring_network()->all_links().empty())
       write_series_part(solver, name, "springs", time, spring_series,
                         [this](const QuasiStaticSolver &s, const std::string &f) { write_springs(s, f); });
+    if (solver.spring_network() && solver.spring_network()->has_sheets())
+      write_series_part(solver, name, "sheets", time, sheet_series,
+                        [this](const QuasiStaticSolver &s, const std::string &f) { write_sheets(s, f); });
     if (solver.obstacle_contact())
       write_series_part(solver, name, "contact", time, contact_series,
                         [this](const QuasiStaticSolver &s, const std::string &f) { write_contact(s, f); });
@@ -183,6 +186,40 @@ namespace softchain::fem
       }
     write_cells_vtu(directory + "/" + file, x, ends, 2, 3,
                     {{"tension", "Float64", 1, tensions}, {"network", "Int32", 1, networks}});
+  }
+
+  // The fibre sheets' quadrature points of all ranks as VTK vertices at
+  // their deformed places, one per fibre family, written by rank 0.
+  void SolutionOutput::write_sheets(const QuasiStaticSolver &solver, const std::string &file) const
+  {
+    std::vector<double> local; // per fibre: x (3), direction (3), tension per width, network
+    for (const auto &f : solver.spring_network()->sheet_fibres(solver.displacement()))
+      {
+        for (unsigned int i = 0; i < 3; ++i)
+          local.push_back(f.place[i]);
+        for (unsigned int i = 0; i < 3; ++i)
+          local.push_back(f.direction[i]);
+        local.insert(local.end(), {f.tension_per_width, static_cast<double>(f.network)});
+      }
+    const auto all = Utilities::MPI::gather(solver.space().communicator, local, 0);
+    if (Utilities::MPI::this_mpi_process(solver.space().communicator) != 0)
+      return;
+    std::vector<Point<3>>     x;
+    std::vector<double>       direction, tension, network;
+    std::vector<unsigned int> vertices;
+    for (const auto &rank : all)
+      for (std::size_t k = 0; k + 8 <= rank.size(); k += 8)
+        {
+          vertices.push_back(x.size());
+          x.emplace_back(rank[k], rank[k + 1], rank[k + 2]);
+          direction.insert(direction.end(), {rank[k + 3], rank[k + 4], rank[k + 5]});
+          tension.push_back(rank[k + 6]);
+          network.push_back(rank[k + 7]);
+        }
+    write_cells_vtu(directory + "/" + file, x, vertices, 1, 1,
+                    {{"tension_per_width", "Float64", 1, tension},
+                     {"fibre_direction", "Float64", 3, direction},
+                     {"network", "Int32", 1, network}});
   }
 
   // The contact quadrature points of all ranks as VTK vertices at their

@@ -75,6 +75,7 @@ namespace softchain::fem
         }
     for (const auto &sheet : sheets)
       add_sheet(space, sheet, rigidity_of(sheet.network));
+    with_sheets = !sheets.empty();
     double squares = 0;
     for (const unsigned int k : owned_links)
       {
@@ -96,7 +97,8 @@ namespace softchain::fem
     const FiniteElement<3> &fe = *space.fe;
     for (const auto &rule : sheet_quadrature(space, sheet.corners))
       {
-        FEValues<3> values(*space.mapping, fe, Quadrature<3>(rule.unit_points), update_gradients);
+        FEValues<3> values(*space.mapping, fe, Quadrature<3>(rule.unit_points),
+                           update_values | update_gradients | update_quadrature_points);
         values.reinit(rule.cell);
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
         rule.cell->get_dof_indices(dofs);
@@ -111,6 +113,14 @@ namespace softchain::fem
                   s.component.push_back(c);
                   s.delta.push_back(values.shape_grad_component(i, q, c) * family.direction);
                 }
+              SheetPlace place{static_cast<unsigned int>(owned_stencils.size()),
+                               values.quadrature_point(q),
+                               {},
+                               rule.weights[q],
+                               network_index(sheet.network)};
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                place.value.push_back(values.shape_value_component(i, q, s.component[i]));
+              sheet_places.push_back(std::move(place));
               links_in_cell[rule.cell->active_cell_index()].push_back(owned_stencils.size());
               owned_links.push_back(owned_stencils.size());
               owned_stencils.push_back(std::move(s));
@@ -237,6 +247,29 @@ namespace softchain::fem
     for (const unsigned int k : owned_links)
       link_state[k] = {state_before[k].tension + a * state_step[k].tension,
                        state_before[k].gap + a * state_step[k].gap};
+  }
+
+  unsigned int EmbeddedSpringNetwork::network_index(const std::string &network) const
+  {
+    return std::find(network_names.begin(), network_names.end(), network) - network_names.begin();
+  }
+
+  std::vector<EmbeddedSpringNetwork::SheetFibre>
+  EmbeddedSpringNetwork::sheet_fibres(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    std::vector<SheetFibre> fibres;
+    for (const SheetPlace &place : sheet_places)
+      {
+        const LinkStencil &s = owned_stencils[place.link];
+        Point<3>           x = place.reference;
+        for (unsigned int i = 0; i < s.dof.size(); ++i)
+          x[s.component[i]] += place.value[i] * u[s.dof[i]];
+        const Tensor<1, 3> d = link_vector(place.link, u, true);
+        fibres.push_back({x, d / d.norm(),
+                          s.axial_rigidity / place.width * tension_law.tension(d.norm() - 1),
+                          place.network});
+      }
+    return fibres;
   }
 
   std::vector<double>

@@ -43,6 +43,7 @@ namespace softchain::report
 
   private:
     void summary_section(HtmlDocument &page) const;
+    void fem_accuracy_paragraph(HtmlDocument &page) const;
     void design_section(HtmlDocument &page) const;
     void finger_section(HtmlDocument &page) const;
     void stiffness_section(HtmlDocument &page) const;

@@ -1,0 +1,167 @@
+// `softchain accuracy FILE.prm`: how far the design's FEM answer lies from
+// the mesh-converged finger. The design's Loads are solved on its own mesh
+// and model, then with the fibres as sheets (the model with a converged
+// answer) and two elements across the walls on three meshes, the design's
+// element size times 1, 1/sqrt(2) and 1/2. A Richardson extrapolation of the
+// mean tip displacement over those three (data::RichardsonExtrapolation)
+// estimates the converged answer and its uncertainty; the design's distance
+// to it, in % of the finger's length, is its discretisation error
+// (docs/fem_accuracy.md).
+#include <softchain/app/commands.h>
+#include <softchain/app/solve_loads.h>
+#include <softchain/data/content_hash.h>
+#include <softchain/data/csv_table.h>
+#include <softchain/data/input_error.h>
+#include <softchain/data/richardson_extrapolation.h>
+#include <softchain/fem/boundary_average.h>
+#include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/finger_mesh.h>
+#include <softchain/fem/quasi_static_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace softchain::app
+{
+  using namespace dealii;
+  using namespace softchain::fem;
+
+  namespace
+  {
+    // One mesh and reinforcement of the design.
+    struct Discretisation
+    {
+      std::string name;
+      double      mesh_size;
+      int         wall_layers;
+      bool        sheets;
+    };
+
+    struct Solved
+    {
+      Discretisation     discretisation;
+      unsigned int       dofs;
+      double             wall_time;
+      bool               converged;
+      Tensor<1, 3>       tip; // mean tip displacement, m
+    };
+
+    Solved solve(const Parameters &prm, const Discretisation &d, ConditionalOStream &out)
+    {
+      Parameters variant = prm;
+      variant.finger_design->mesh_sizes[variant.finger_design->resolution] = d.mesh_size;
+      variant.finger_design->wall_layers  = d.wall_layers;
+      variant.finger_design->fibre_sheets = d.sheets;
+      FingerMesh mesh;
+      FingerMesh::build(variant, mesh);
+      std::ostringstream log;
+      QuasiStaticSolver  solver(variant, mesh.triangulation, mesh.material_names, mesh.springs,
+                                mesh.sheets, MPI_COMM_WORLD, log);
+      const auto result = solve_loads(solver, variant, log);
+      const Solved solved{d, static_cast<unsigned int>(solver.space().dof_handler.n_dofs()),
+                          result.wall_time, result.converged,
+                          mean_boundary_displacement(solver.space(), solver.displacement(), boundary::tip)};
+      out << "  " << d.name << ": " << 1e3 * d.mesh_size << " mm, " << d.wall_layers
+          << " across the walls, " << solved.dofs << " DoFs, "
+          << (result.converged ? "converged" : "FAILED: " + result.reason) << ", " << result.wall_time
+          << " s, tip displacement [mm] " << 1e3 * solved.tip << '\n';
+      return solved;
+    }
+
+    void check_design(const Parameters &prm)
+    {
+      const auto refuse = [&](const std::string &why) {
+        throw data::InputError(prm.file + ": softchain accuracy " + why);
+      };
+      if (!prm.finger_design || !prm.finger_design->parametric())
+        refuse("needs a parametric design (Mesh/Source = finger design, Finger design/Shape p10, p13 "
+               "or parallelepiped): it refines the design's mesh");
+      if (!prm.finger_design->hexahedra)
+        refuse("needs Finger design/Element shape = hex (the layers across the walls are hexahedra)");
+      if (prm.loads.control != LoadParameters::Control::pressure)
+        refuse("solves Loads under Control = pressure");
+    }
+  } // namespace
+
+  int accuracy_command(const data::PrmFile &file)
+  {
+    ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    Parameters         prm = Parameters::read(file);
+    prm.contact            = geometry::ContactScene(); // the finger alone
+    check_design(prm);
+    const geometry::FingerDesign &design = *prm.finger_design;
+    const double                  h      = design.mesh_size();
+    const double                  length = design.length();
+    out << "softchain accuracy: " << prm.design.name << ", subsection Loads on the design's mesh and "
+        << "on three finer ones with fibre sheets:\n";
+
+    std::vector<Solved> runs;
+    runs.push_back(solve(prm, {"design", h, design.wall_layers, design.fibre_sheets}, out));
+    for (const double refinement : {1.0, std::sqrt(0.5), 0.5})
+      runs.push_back(solve(prm, {"sheets", refinement * h, 2, true}, out));
+    for (const Solved &run : runs)
+      if (!run.converged)
+        {
+          out << "FAILED: the " << run.discretisation.name << " solve at "
+              << 1e3 * run.discretisation.mesh_size << " mm did not converge\n";
+          return 2;
+        }
+
+    // Per component, finest first, with h = DoFs^(-1/3). A component that
+    // the loads leave at rest on every mesh (below 1e-9 of the length: a
+    // symmetric finger's z) has nothing to extrapolate.
+    std::array<double, 3> sizes;
+    for (int k = 0; k < 3; ++k)
+      sizes[k] = std::cbrt(1.0 / runs[3 - k].dofs);
+    Tensor<1, 3> converged;
+    double       uncertainty_squared = 0, order = 0;
+    bool         asymptotic = true;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        if (std::max({std::abs(runs[1].tip[c]), std::abs(runs[2].tip[c]), std::abs(runs[3].tip[c])}) <
+            1e-9 * length)
+          {
+            converged[c] = runs[3].tip[c];
+            continue;
+          }
+        const auto r = data::RichardsonExtrapolation::of(sizes, {runs[3].tip[c], runs[2].tip[c], runs[1].tip[c]});
+        converged[c] = r.value;
+        uncertainty_squared += r.uncertainty * r.uncertainty;
+        asymptotic = asymptotic && r.asymptotic;
+        order      = std::max(order, r.order);
+      }
+    const double to_percent  = 100 / length;
+    const double uncertainty = std::sqrt(uncertainty_squared) * to_percent;
+
+    data::CsvTable table({"run", "mesh_size_mm", "wall_layers", "reinforcement", "dofs", "wall_time_s",
+                          "tip_dx_mm", "tip_dy_mm", "tip_dz_mm", "distance_to_converged_percent_L"});
+    for (const Solved &run : runs)
+      table.add_row({run.discretisation.name, data::canonical(1e3 * run.discretisation.mesh_size),
+                     std::to_string(run.discretisation.wall_layers),
+                     run.discretisation.sheets ? "sheets" : "springs", std::to_string(run.dofs),
+                     data::canonical(run.wall_time), data::canonical(1e3 * run.tip[0]),
+                     data::canonical(1e3 * run.tip[1]), data::canonical(1e3 * run.tip[2]),
+                     data::canonical((run.tip - converged).norm() * to_percent)});
+    table.add_row({asymptotic ? "converged (Richardson)" : "converged (finest run)", "", "", "sheets", "",
+                   "", data::canonical(1e3 * converged[0]), data::canonical(1e3 * converged[1]),
+                   data::canonical(1e3 * converged[2]), data::canonical(uncertainty)});
+    const std::string csv = prm.design.output_directory + "/fem_accuracy.csv";
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::filesystem::create_directories(prm.design.output_directory);
+        table.write(csv);
+      }
+    out << std::setprecision(3) << "converged tip displacement [mm] " << 1e3 * converged << " ("
+        << (asymptotic ? "Richardson, observed order " + data::canonical(order) : "the finest run: "
+                                                                                    "not yet asymptotic")
+        << "), uncertain to " << uncertainty << " % of L; table: " << csv << '\n'
+        << "FEM discretisation error: " << (runs[0].tip - converged).norm() * to_percent
+        << " % of L (+- " << uncertainty << ")\n";
+    return 0;
+  }
+} // namespace softchain::app
