@@ -156,10 +156,14 @@ namespace softchain::app
         std::filesystem::create_directories(prm.design.output_directory);
         table.write(csv);
       }
+    std::ostringstream how;
+    how << std::setprecision(3);
+    if (asymptotic)
+      how << "Richardson, observed order " << order;
+    else
+      how << "the finest run: the meshes are not yet in the asymptotic range";
     out << std::setprecision(3) << "converged tip displacement [mm] " << 1e3 * converged << " ("
-        << (asymptotic ? "Richardson, observed order " + data::canonical(order) : "the finest run: "
-                                                                                    "not yet asymptotic")
-        << "), uncertain to " << uncertainty << " % of L; table: " << csv << '\n'
+        << how.str() << "), uncertain to " << uncertainty << " % of L; table: " << csv << '\n'
         << "FEM discretisation error: " << (runs[0].tip - converged).norm() * to_percent
         << " % of L (+- " << uncertainty << ")\n";
     return 0;

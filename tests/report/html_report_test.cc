@@ -180,3 +180,26 @@ TEST_CASE("A missing input is an error naming the file")
                         Catch::Contains(outputs.file(missing)));
     }
 }
+
+// The summary gives the FEM's own error beside the chain's when `softchain
+// accuracy` has written fem_accuracy.csv (its first row the design's
+// distance to the converged estimate, its last that estimate's
+// uncertainty), and says how to get it when not.
+TEST_CASE("The summary shows the FEM's discretisation error, or how to estimate it")
+{
+  const SyntheticOutputs outputs("report_fem_accuracy");
+  const auto html = [&] {
+    return HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
+  };
+  CHECK(html().find("run `softchain accuracy` on its .prm") != std::string::npos);
+  softchain::data::CsvTable table({"run", "distance_to_converged_percent_L"});
+  using Row = std::vector<std::string>;
+  table.add_row(Row{"design", "2.07"});
+  table.add_row(Row{"sheets", "0.5"});
+  table.add_row(Row{"converged (Richardson)", "0.313"});
+  table.write(outputs.file("fem_accuracy.csv"));
+  const std::string with = html();
+  CHECK(with.find("mesh lies 2.07 % of L from the mesh-converged answer, which is uncertain to 0.313 % of L") !=
+        std::string::npos);
+  CHECK(with.find("FEM discretisation error") < with.find("1. The design"));
+}
