@@ -115,7 +115,7 @@ namespace
 TEST_CASE("a sheet pulled along its fibres adds its membrane tension to the reaction",
           "[fem][springs][sheets]")
 {
-  for (const std::vector<unsigned int> cells : {std::vector<unsigned int>{10, 3, 3},
+  for (const std::vector<unsigned int> &cells : {std::vector<unsigned int>{10, 3, 3},
                                                 std::vector<unsigned int>{10, 2, 3}})
     for (const double eps : {1e-2, 0.5 * d, -1e-2}) // taut, at the knee, slack
       {

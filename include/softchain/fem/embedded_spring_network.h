@@ -148,7 +148,7 @@ namespace softchain::fem
       unsigned int        link;
       dealii::Point<3>    reference;
       std::vector<double> value;
-      double              width; // the point's area over the rest length: k = EA_link / width
+      double              area; // the point's weight [m^2]: the family's EA / s = EA_link / area
       unsigned int        network;
     };
     std::vector<SheetPlace> sheet_places;

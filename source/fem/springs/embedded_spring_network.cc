@@ -266,7 +266,7 @@ namespace softchain::fem
           x[s.component[i]] += place.value[i] * u[s.dof[i]];
         const Tensor<1, 3> d = link_vector(place.link, u, true);
         fibres.push_back({x, d / d.norm(),
-                          s.axial_rigidity / place.width * tension_law.tension(d.norm() - 1),
+                          s.axial_rigidity / place.area * tension_law.tension(d.norm() - 1),
                           place.network});
       }
     return fibres;
