@@ -85,20 +85,22 @@ namespace softchain::geometry
                                         const std::string &spring_source)
   {
     const PointLocator locator(mesh);
+    const auto         check = [&](const Eigen::Vector3d &p, const std::string &what, std::size_t k,
+                           const SpringNetwork &network) {
+      if (!locator.locate(p))
+        throw InputError(spring_source + ": " + what + " " + point_text(p) + " of " +
+                         (what == "node" ? "polyline " : "sheet ") + std::to_string(k + 1) +
+                         " of network '" + network.name + "' lies outside the body mesh " + mesh.path);
+    };
     for (const auto &network : networks)
-      for (std::size_t l = 0; l < network.polylines.size(); ++l)
-        for (const auto &p : network.polylines[l].points)
-          if (!locator.locate(p))
-            throw InputError(spring_source + ": node " + point_text(p) + " of polyline " +
-                             std::to_string(l + 1) + " of network '" + network.name +
-                             "' lies outside the body mesh " + mesh.path);
-    for (const auto &network : networks)
-      for (std::size_t l = 0; l < network.sheets.size(); ++l)
-        for (const auto &p : network.sheets[l].corners)
-          if (!locator.locate(p))
-            throw InputError(spring_source + ": corner " + point_text(p) + " of sheet " +
-                             std::to_string(l + 1) + " of network '" + network.name +
-                             "' lies outside the body mesh " + mesh.path);
+      {
+        for (std::size_t l = 0; l < network.polylines.size(); ++l)
+          for (const auto &p : network.polylines[l].points)
+            check(p, "node", l, network);
+        for (std::size_t l = 0; l < network.sheets.size(); ++l)
+          for (const auto &p : network.sheets[l].corners)
+            check(p, "corner", l, network);
+      }
   }
 
   void MeshChecks::check_all(const MshFile &mesh, const std::vector<SpringNetwork> &networks,

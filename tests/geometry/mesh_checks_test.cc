@@ -86,6 +86,11 @@ TEST_CASE("a spring node outside the body is named", "[geometry][checks]")
   SpringNetwork outside{"thread", {{true, {{0.1, 0.1, 0.1}, {0.9, 0.9, 0.1}}}}};
   CHECK_THROWS_WITH(MeshChecks::check_springs_inside(mesh, {inside, outside}, "springs.txt"),
                     Contains("springs.txt") && Contains("'thread'") && Contains("0.9"));
+  // A fibre sheet's corners, likewise.
+  SpringNetwork sheet{"fabric", {}, {{{{0.1, 0.1, 0.1}, {0.5, 0.1, 0.1}, {0.5, 0.9, 0.8}},
+                                      {{Eigen::Vector3d::UnitX(), 0.002}}}}};
+  CHECK_THROWS_WITH(MeshChecks::check_springs_inside(mesh, {sheet}, "springs.txt"),
+                    Contains("corner") && Contains("sheet 1") && Contains("'fabric'") && Contains("0.8"));
 }
 
 TEST_CASE("msh files other than ASCII 2.2 with first-order cells are refused", "[geometry][checks]")

@@ -101,6 +101,33 @@ namespace softchain::fem
         }
       out << "</CellData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
     }
+
+    // Each rank's points as flat records, x (3) and then the components of
+    // every array of `arrays` in order (their `values` left empty),
+    // gathered to rank 0 and written there as VTK vertices.
+    void write_gathered_vertices(const std::string &file, const MPI_Comm communicator,
+                                 const std::vector<double> &local, std::vector<CellArray> arrays)
+    {
+      const auto all = Utilities::MPI::gather(communicator, local, 0);
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      unsigned int record = 3;
+      for (const auto &a : arrays)
+        record += a.components;
+      std::vector<Point<3>>     x;
+      std::vector<unsigned int> vertices;
+      for (const auto &rank : all)
+        for (std::size_t k = 0; k + record <= rank.size(); k += record)
+          {
+            vertices.push_back(x.size());
+            x.emplace_back(rank[k], rank[k + 1], rank[k + 2]);
+            std::size_t i = k + 3;
+            for (auto &a : arrays)
+              for (unsigned int c = 0; c < a.components; ++c)
+                a.values.push_back(rank[i++]);
+          }
+      write_cells_vtu(file, x, vertices, 1, 1, arrays);
+    }
   } // namespace
 
   SolutionOutput::SolutionOutput(const std::string &dir, const unsigned int subdivisions)
@@ -194,32 +221,12 @@ namespace softchain::fem
   {
     std::vector<double> local; // per fibre: x (3), direction (3), tension per width, network
     for (const auto &f : solver.spring_network()->sheet_fibres(solver.displacement()))
-      {
-        for (unsigned int i = 0; i < 3; ++i)
-          local.push_back(f.place[i]);
-        for (unsigned int i = 0; i < 3; ++i)
-          local.push_back(f.direction[i]);
-        local.insert(local.end(), {f.tension_per_width, static_cast<double>(f.network)});
-      }
-    const auto all = Utilities::MPI::gather(solver.space().communicator, local, 0);
-    if (Utilities::MPI::this_mpi_process(solver.space().communicator) != 0)
-      return;
-    std::vector<Point<3>>     x;
-    std::vector<double>       direction, tension, network;
-    std::vector<unsigned int> vertices;
-    for (const auto &rank : all)
-      for (std::size_t k = 0; k + 8 <= rank.size(); k += 8)
-        {
-          vertices.push_back(x.size());
-          x.emplace_back(rank[k], rank[k + 1], rank[k + 2]);
-          direction.insert(direction.end(), {rank[k + 3], rank[k + 4], rank[k + 5]});
-          tension.push_back(rank[k + 6]);
-          network.push_back(rank[k + 7]);
-        }
-    write_cells_vtu(directory + "/" + file, x, vertices, 1, 1,
-                    {{"tension_per_width", "Float64", 1, tension},
-                     {"fibre_direction", "Float64", 3, direction},
-                     {"network", "Int32", 1, network}});
+      local.insert(local.end(), {f.place[0], f.place[1], f.place[2], f.direction[0], f.direction[1],
+                                 f.direction[2], f.tension_per_width, static_cast<double>(f.network)});
+    write_gathered_vertices(directory + "/" + file, solver.space().communicator, local,
+                            {{"tension_per_width", "Float64", 1, {}},
+                             {"fibre_direction", "Float64", 3, {}},
+                             {"network", "Int32", 1, {}}});
   }
 
   // The contact quadrature points of all ranks as VTK vertices at their
@@ -230,35 +237,12 @@ namespace softchain::fem
     const auto  states  = contact.point_states(solver.displacement(), solver.load_state().obstacle_motion);
     std::vector<double> local; // per point: x (3), pressure, t_T (3), gap, status
     for (const auto &s : states)
-      {
-        for (unsigned int i = 0; i < 3; ++i)
-          local.push_back(s.deformed[i]);
-        local.push_back(s.pressure);
-        for (unsigned int i = 0; i < 3; ++i)
-          local.push_back(s.tangential[i]);
-        local.push_back(s.gap);
-        local.push_back(static_cast<double>(s.status));
-      }
-    const auto all = Utilities::MPI::gather(solver.space().communicator, local, 0);
-    if (Utilities::MPI::this_mpi_process(solver.space().communicator) != 0)
-      return;
-    std::vector<Point<3>>     x;
-    std::vector<double>       pressure, tangential, gap, status;
-    std::vector<unsigned int> vertices;
-    for (const auto &rank : all)
-      for (std::size_t k = 0; k + 9 <= rank.size(); k += 9)
-        {
-          vertices.push_back(x.size());
-          x.emplace_back(rank[k], rank[k + 1], rank[k + 2]);
-          pressure.push_back(rank[k + 3]);
-          tangential.insert(tangential.end(), {rank[k + 4], rank[k + 5], rank[k + 6]});
-          gap.push_back(rank[k + 7]);
-          status.push_back(rank[k + 8]);
-        }
-    write_cells_vtu(directory + "/" + file, x, vertices, 1, 1,
-                    {{"contact_pressure", "Float64", 1, pressure},
-                     {"tangential_traction", "Float64", 3, tangential},
-                     {"gap", "Float64", 1, gap},
-                     {"contact_status", "Int32", 1, status}});
+      local.insert(local.end(), {s.deformed[0], s.deformed[1], s.deformed[2], s.pressure, s.tangential[0],
+                                 s.tangential[1], s.tangential[2], s.gap, static_cast<double>(s.status)});
+    write_gathered_vertices(directory + "/" + file, solver.space().communicator, local,
+                            {{"contact_pressure", "Float64", 1, {}},
+                             {"tangential_traction", "Float64", 3, {}},
+                             {"gap", "Float64", 1, {}},
+                             {"contact_status", "Int32", 1, {}}});
   }
 } // namespace softchain::fem
