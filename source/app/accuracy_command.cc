@@ -73,6 +73,64 @@ namespace softchain::app
       return solved;
     }
 
+    // The converged tip displacement from the three sheet runs (runs 1 to 3,
+    // coarsest first), per component, with h = DoFs^(-1/3). A component that
+    // the loads leave at rest on every mesh (below 1e-9 of the length: a
+    // symmetric finger's z) has nothing to extrapolate.
+    struct Estimate
+    {
+      Tensor<1, 3> tip;
+      double       uncertainty = 0; // m
+      double       order       = 0; // the largest observed
+      bool         asymptotic  = true;
+    };
+
+    Estimate converged_estimate(const std::vector<Solved> &runs, const double length)
+    {
+      std::array<double, 3> sizes;
+      for (int k = 0; k < 3; ++k)
+        sizes[k] = std::cbrt(1.0 / runs[3 - k].dofs);
+      Estimate estimate;
+      double   uncertainty_squared = 0;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          const std::array<double, 3> f{{runs[3].tip[c], runs[2].tip[c], runs[1].tip[c]}};
+          estimate.tip[c] = f[0];
+          if (std::max({std::abs(f[0]), std::abs(f[1]), std::abs(f[2])}) < 1e-9 * length)
+            continue;
+          const auto r    = data::RichardsonExtrapolation::of(sizes, f);
+          estimate.tip[c] = r.value;
+          uncertainty_squared += r.uncertainty * r.uncertainty;
+          estimate.asymptotic = estimate.asymptotic && r.asymptotic;
+          estimate.order      = std::max(estimate.order, r.order);
+        }
+      estimate.uncertainty = std::sqrt(uncertainty_squared);
+      return estimate;
+    }
+
+    // <output>/fem_accuracy.csv (rank 0): one row per run with its distance
+    // to the estimate, then the estimate with its uncertainty (% of L).
+    void write_table(const std::string &csv, const std::vector<Solved> &runs, const Estimate &estimate,
+                     const double length)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      const auto mm = [](double v) { return data::canonical(1e3 * v); };
+      data::CsvTable table({"run", "mesh_size_mm", "wall_layers", "reinforcement", "dofs", "wall_time_s",
+                            "tip_dx_mm", "tip_dy_mm", "tip_dz_mm", "distance_to_converged_percent_L"});
+      for (const Solved &run : runs)
+        table.add_row({run.discretisation.name, mm(run.discretisation.mesh_size),
+                       std::to_string(run.discretisation.wall_layers),
+                       run.discretisation.sheets ? "sheets" : "springs", std::to_string(run.dofs),
+                       data::canonical(run.wall_time), mm(run.tip[0]), mm(run.tip[1]), mm(run.tip[2]),
+                       data::canonical((run.tip - estimate.tip).norm() * 100 / length)});
+      table.add_row({estimate.asymptotic ? "converged (Richardson)" : "converged (finest run)", "", "",
+                     "sheets", "", "", mm(estimate.tip[0]), mm(estimate.tip[1]), mm(estimate.tip[2]),
+                     data::canonical(estimate.uncertainty * 100 / length)});
+      std::filesystem::create_directories(std::filesystem::path(csv).parent_path());
+      table.write(csv);
+    }
+
     void check_design(const Parameters &prm)
     {
       const auto refuse = [&](const std::string &why) {
@@ -112,59 +170,20 @@ namespace softchain::app
           return 2;
         }
 
-    // Per component, finest first, with h = DoFs^(-1/3). A component that
-    // the loads leave at rest on every mesh (below 1e-9 of the length: a
-    // symmetric finger's z) has nothing to extrapolate.
-    std::array<double, 3> sizes;
-    for (int k = 0; k < 3; ++k)
-      sizes[k] = std::cbrt(1.0 / runs[3 - k].dofs);
-    Tensor<1, 3> converged;
-    double       uncertainty_squared = 0, order = 0;
-    bool         asymptotic = true;
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        if (std::max({std::abs(runs[1].tip[c]), std::abs(runs[2].tip[c]), std::abs(runs[3].tip[c])}) <
-            1e-9 * length)
-          {
-            converged[c] = runs[3].tip[c];
-            continue;
-          }
-        const auto r = data::RichardsonExtrapolation::of(sizes, {runs[3].tip[c], runs[2].tip[c], runs[1].tip[c]});
-        converged[c] = r.value;
-        uncertainty_squared += r.uncertainty * r.uncertainty;
-        asymptotic = asymptotic && r.asymptotic;
-        order      = std::max(order, r.order);
-      }
-    const double to_percent  = 100 / length;
-    const double uncertainty = std::sqrt(uncertainty_squared) * to_percent;
-
-    data::CsvTable table({"run", "mesh_size_mm", "wall_layers", "reinforcement", "dofs", "wall_time_s",
-                          "tip_dx_mm", "tip_dy_mm", "tip_dz_mm", "distance_to_converged_percent_L"});
-    for (const Solved &run : runs)
-      table.add_row({run.discretisation.name, data::canonical(1e3 * run.discretisation.mesh_size),
-                     std::to_string(run.discretisation.wall_layers),
-                     run.discretisation.sheets ? "sheets" : "springs", std::to_string(run.dofs),
-                     data::canonical(run.wall_time), data::canonical(1e3 * run.tip[0]),
-                     data::canonical(1e3 * run.tip[1]), data::canonical(1e3 * run.tip[2]),
-                     data::canonical((run.tip - converged).norm() * to_percent)});
-    table.add_row({asymptotic ? "converged (Richardson)" : "converged (finest run)", "", "", "sheets", "",
-                   "", data::canonical(1e3 * converged[0]), data::canonical(1e3 * converged[1]),
-                   data::canonical(1e3 * converged[2]), data::canonical(uncertainty)});
-    const std::string csv = prm.design.output_directory + "/fem_accuracy.csv";
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      {
-        std::filesystem::create_directories(prm.design.output_directory);
-        table.write(csv);
-      }
+    const Estimate    estimate = converged_estimate(runs, length);
+    const std::string csv      = prm.design.output_directory + "/fem_accuracy.csv";
+    write_table(csv, runs, estimate, length);
+    const double uncertainty = estimate.uncertainty * 100 / length;
+    const Tensor<1, 3> &converged = estimate.tip;
     std::ostringstream how;
     how << std::setprecision(3);
-    if (asymptotic)
-      how << "Richardson, observed order " << order;
+    if (estimate.asymptotic)
+      how << "Richardson, observed order " << estimate.order;
     else
       how << "the finest run: the meshes are not yet in the asymptotic range";
     out << std::setprecision(3) << "converged tip displacement [mm] " << 1e3 * converged << " ("
         << how.str() << "), uncertain to " << uncertainty << " % of L; table: " << csv << '\n'
-        << "FEM discretisation error: " << (runs[0].tip - converged).norm() * to_percent
+        << "FEM discretisation error: " << (runs[0].tip - converged).norm() * 100 / length
         << " % of L (+- " << uncertainty << ")\n";
     return 0;
   }
