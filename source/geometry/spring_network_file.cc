@@ -11,6 +11,11 @@ namespace softchain::geometry
   {
     const std::string header = "# SoftChain spring network v1";
 
+    std::string point(const Eigen::Vector3d &p)
+    {
+      return data::canonical(p.x()) + " " + data::canonical(p.y()) + " " + data::canonical(p.z());
+    }
+
     // The next line that is neither blank nor a comment, as a stream.
     bool next_significant(TextLines &lines, std::istringstream &stream)
     {
@@ -99,14 +104,6 @@ namespace softchain::geometry
       }
     return networks;
   }
-
-  namespace
-  {
-    std::string point(const Eigen::Vector3d &p)
-    {
-      return data::canonical(p.x()) + " " + data::canonical(p.y()) + " " + data::canonical(p.z());
-    }
-  } // namespace
 
   std::string SpringNetworkFile::text(const std::vector<SpringNetwork> &networks)
   {

@@ -26,7 +26,7 @@ namespace softchain::fem
       const auto rigidity = axial_rigidity.find(network);
       if (rigidity == axial_rigidity.end())
         throw data::InputError("Springs/Axial rigidity: no value for spring network '" + network + "'");
-      if (std::find(network_names.begin(), network_names.end(), network) == network_names.end())
+      if (network_index(network) == network_names.size())
         network_names.push_back(network);
       return rigidity->second;
     };
@@ -35,8 +35,7 @@ namespace softchain::fem
     std::vector<Point<3>> ends, midpoints;
     for (const auto &polyline : polylines)
       {
-        const double EA   = rigidity_of(polyline.network);
-        const auto   name = std::find(network_names.begin(), network_names.end(), polyline.network);
+        const double EA = rigidity_of(polyline.network);
         const auto        &p       = polyline.points;
         const unsigned int n       = p.size();
         const unsigned int n_links = n < 2 ? 0 : (polyline.closed ? n : n - 1);
@@ -47,7 +46,7 @@ namespace softchain::fem
               continue;
             links.push_back({static_cast<unsigned int>(ends.size()),
                              static_cast<unsigned int>(ends.size() + 1), a.distance(b), EA,
-                             static_cast<unsigned int>(name - network_names.begin())});
+                             network_index(polyline.network)});
             ends.insert(ends.end(), {a, b});
             const Point<3> middle = a + 0.5 * (b - a);
             midpoints.insert(midpoints.end(), {middle, middle});
@@ -107,19 +106,18 @@ namespace softchain::fem
             {
               LinkStencil s{dofs, {}, {}, family.direction, 1.0,
                             axial_rigidity / family.spacing * rule.weights[q]};
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  s.component.push_back(c);
-                  s.delta.push_back(values.shape_grad_component(i, q, c) * family.direction);
-                }
-              SheetPlace place{static_cast<unsigned int>(owned_stencils.size()),
+              SheetPlace  place{static_cast<unsigned int>(owned_stencils.size()),
                                values.quadrature_point(q),
                                {},
                                rule.weights[q],
                                network_index(sheet.network)};
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                place.value.push_back(values.shape_value_component(i, q, s.component[i]));
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  s.component.push_back(c);
+                  s.delta.push_back(values.shape_grad_component(i, q, c) * family.direction);
+                  place.value.push_back(values.shape_value_component(i, q, c));
+                }
               sheet_places.push_back(std::move(place));
               links_in_cell[rule.cell->active_cell_index()].push_back(owned_stencils.size());
               owned_links.push_back(owned_stencils.size());

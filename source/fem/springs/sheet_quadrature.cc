@@ -68,15 +68,6 @@ namespace softchain::fem
         }
       return polygon;
     }
-
-    bool boxes_overlap(const BoundingBox<3> &a, const BoundingBox<3> &b, const double tol)
-    {
-      for (unsigned int d = 0; d < 3; ++d)
-        if (a.get_boundary_points().first[d] > b.get_boundary_points().second[d] + tol ||
-            b.get_boundary_points().first[d] > a.get_boundary_points().second[d] + tol)
-          return false;
-      return true;
-    }
   } // namespace
 
   std::vector<CellSheetQuadrature> sheet_quadrature(const FiniteElementSpace    &space,
@@ -89,8 +80,11 @@ namespace softchain::fem
     std::vector<CellSheetQuadrature> result;
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       {
-        if (!cell->is_locally_owned() ||
-            !boxes_overlap(cell->bounding_box(), sheet_box, 1e-10 * cell->diameter()))
+        if (!cell->is_locally_owned())
+          continue;
+        BoundingBox<3> cell_box = cell->bounding_box();
+        cell_box.extend(1e-10 * cell->diameter());
+        if (cell_box.get_neighbor_type(sheet_box) == NeighborType::not_neighbors)
           continue;
         const Polygon piece = clip_to_cell(corners, normal, cell);
         CellSheetQuadrature cell_rule{cell, {}, {}};
