@@ -51,6 +51,11 @@ namespace softchain::chain
     model_.chain_at(load.pressure, chain_);
     model_.stiffness().diagonal(load.pressure, stiffness_);
     model_.actuation().torque(load.pressure, pressure_torque_);
+    pressure_angles_ = pressure_torque_.cwiseQuotient(stiffness_);
+    force_law_.clear();
+    if (const JointForceLaw *law = model_.force_law())
+      for (int j = 0; j < law->n_joints(); ++j)
+        force_law_.push_back(law->at(load.pressure, j));
     loads_.clear();
     for (const PointLoad &p : load.point_loads)
       {
@@ -71,14 +76,44 @@ namespace softchain::chain
     chain_.update_pose(q, pose_);
     const double contact = contact_.update(pose_);
     accumulate_distal_loads();
-    const double strain = 0.5 * q.dot(stiffness_.cwiseProduct(q));
+    const double strain = evaluate_springs(q);
     const double work   = pressure_torque_.dot(q);
-    residual_           = stiffness_.cwiseProduct(q) - pressure_torque_ - generalised_force_;
-    residual_scale_     = stiffness_.cwiseProduct(q).lpNorm<Eigen::Infinity>() +
+    residual_           = spring_torque_ - pressure_torque_ - generalised_force_;
+    residual_scale_     = spring_torque_.lpNorm<Eigen::Infinity>() +
                       pressure_torque_.lpNorm<Eigen::Infinity>() +
                       generalised_force_.lpNorm<Eigen::Infinity>();
     energy_ += strain - work + contact;
     energy_magnitude_ += strain + std::abs(work) + contact;
+  }
+
+  // The joints' spring torques, their tangent blocks and energy at q: K_j
+  // q_j (energy q_j^T K_j q_j / 2) for a joint with linear springs; J_p,j p +
+  // T_j(q_j - q_p,j) (energy J_p,j p . q_j + W_j(q_j - q_p,j)) for a joint
+  // with a force law (JointForceLaw), which the same pressure torque holds
+  // at q_p.
+  double ChainEquilibrium::evaluate_springs(const Eigen::VectorXd &q)
+  {
+    spring_torque_.resize(q.size());
+    spring_tangent_.resize(chain_.n_joints());
+    double energy = 0.0;
+    for (int j = 0; j < chain_.n_joints(); ++j)
+      {
+        const auto qj = q.segment<3>(3 * j);
+        if (force_law_.empty() || !force_law_[j].lower)
+          {
+            const auto k = stiffness_.segment<3>(3 * j);
+            spring_torque_.segment<3>(3 * j) = k.cwiseProduct(qj);
+            spring_tangent_[j]               = k.asDiagonal();
+            energy += 0.5 * qj.dot(k.cwiseProduct(qj));
+            continue;
+          }
+        const auto jp = pressure_torque_.segment<3>(3 * j);
+        const data::FabricHinge::Value v = force_law_[j].evaluate(qj - pressure_angles_.segment<3>(3 * j));
+        spring_torque_.segment<3>(3 * j) = jp + v.torque;
+        spring_tangent_[j]               = v.tangent;
+        energy += jp.dot(qj) + v.energy;
+      }
+    return energy;
   }
 
   // Backward pass from the tip: M_m, B_m (header) and Q_m = A_m^T M_m, with
@@ -155,7 +190,7 @@ namespace softchain::chain
         const Eigen::Matrix3d lower = tangent_.coupling(j) * axes;
         Eigen::Matrix3d      &d     = tangent_.diagonal(j);
         d                           = lower.selfadjointView<Eigen::Lower>();
-        d.diagonal() += stiffness_.segment<3>(3 * j);
+        d += spring_tangent_[j];
       }
   }
 
@@ -497,10 +532,9 @@ namespace softchain::chain
   Equilibrium ChainEquilibrium::solve(const ChainLoad &load)
   {
     set_load(load);
-    const Eigen::VectorXd free = pressure_torque_.cwiseQuotient(stiffness_);
     if (contact_.empty())
-      return iterate(free);
-    return iterate(before_first_contact(free));
+      return iterate(pressure_angles_);
+    return iterate(before_first_contact(pressure_angles_));
   }
 
   // The free pose may lie deep inside an obstacle, where the nearest surface

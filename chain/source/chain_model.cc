@@ -56,6 +56,20 @@ namespace softchain::chain
     return rigid;
   }
 
+  void ChainModel::set_force_law(JointForceLaw law)
+  {
+    if (law.n_joints() != chain_.n_joints())
+      throw std::invalid_argument("ChainModel: the force law has another number of joints");
+    force_law_ = std::move(law);
+  }
+
+  ChainModel ChainModel::with_linear_joints() const
+  {
+    ChainModel linear = *this;
+    linear.force_law_.reset();
+    return linear;
+  }
+
   double ChainModel::link_compliance(const double pressure) const
   {
     return link_compliance_ ? link_compliance_->at(pressure) : 0.0;

@@ -23,6 +23,11 @@ namespace softchain::chain
                       "the compliance c(p) the reduction fitted to the chord samples "
                       "(<label>_link_compliance.csv; links rigid without it); none: links rigid "
                       "under forces (the paper's chain). Ignored with Link geometry = rigid");
+      section.declare("Joint law", "measured",
+                      "measured: under forces each joint axis follows the torque-angle curve "
+                      "the reduction measured over all force samples at each pressure "
+                      "(<label>_joint_law.csv; linear springs without it); linear: springs "
+                      "k(p) about the pressure-only state (the paper's chain)");
       section.declare("Missing stiffness", "rigid",
                       "a joint axis whose k is NaN or not positive in the CSV (no usable sample, "
                       "e.g. a joint in the solid base fill, or a torque opposite to the "
@@ -60,6 +65,10 @@ namespace softchain::chain
     section.require(compliance == "measured" || compliance == "none", "Link compliance",
                     "'" + compliance + "' is neither measured nor none");
     p.link_compliance = compliance == "measured";
+    const std::string law = section.get("Joint law");
+    section.require(law == "measured" || law == "linear", "Joint law",
+                    "'" + law + "' is neither measured nor linear");
+    p.measured_joint_law = law == "measured";
     const std::string missing = section.get("Missing stiffness");
     section.require(missing == "rigid" || missing == "error", "Missing stiffness",
                     "'" + missing + "' is neither rigid nor error");

@@ -41,8 +41,10 @@ namespace softchain::chain
     {
       std::vector<ChainModel> models;
       const auto read = [&](const StiffnessFiles &files, const std::string &name) {
-        const ChainModel model =
+        ChainModel model =
           files.read_model(name, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing);
+        if (!p.measured_joint_law)
+          model = model.with_linear_joints();
         if (!p.pressure_link_geometry)
           return model.with_rigid_links();
         return p.link_compliance ? model : model.without_link_compliance();

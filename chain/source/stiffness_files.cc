@@ -273,6 +273,40 @@ namespace softchain::chain
       return result;
     }
 
+    // The joints' force laws (FabricHinge per joint and pressure): springs
+    // and fibre stiffness positive (kappa may be 0), pre-stretch not negative.
+    JointForceLaw read_force_law(const std::string &path, int n)
+    {
+      const std::vector<std::string> columns = {"pressure", "joint", "k_psi", "k_theta", "k_phi",
+                                                "kappa", "r", "theta_0"};
+      const CsvTable table = read_table(path, columns);
+      std::vector<std::map<double, data::FabricHinge>> per_joint(n);
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          data::FabricHinge hinge;
+          for (int a = 0; a < 3; ++a)
+            hinge.k[a] = finite_number(table, path, row, k_columns_of_axis[a]);
+          hinge.kappa   = finite_number(table, path, row, "kappa");
+          hinge.r       = finite_number(table, path, row, "r");
+          hinge.theta_0 = finite_number(table, path, row, "theta_0");
+          if (!(hinge.k.minCoeff() > 0) || hinge.kappa < 0 || hinge.theta_0 < 0)
+            throw InputError(where(path, row) +
+                             "k_psi, k_theta and k_phi must be positive, kappa and theta_0 not negative");
+          const int joint = joint_index(table, path, row, n);
+          if (!per_joint[joint].emplace(finite_number(table, path, row, "pressure"), hinge).second)
+            throw InputError(where(path, row) + "pressure " + table.text(row, "pressure") +
+                             " listed twice for joint " + table.text(row, "joint"));
+        }
+      std::vector<JointForceLaw::Table> tables(n);
+      for (int i = 0; i < n; ++i)
+        for (const auto &[pressure, hinge] : per_joint[i])
+          {
+            tables[i].pressures.push_back(pressure);
+            tables[i].hinges.push_back(hinge);
+          }
+      return JointForceLaw(std::move(tables));
+    }
+
     std::vector<PiecewiseLinear> read_pressure_torque(const std::string &path, int n)
     {
       const std::vector<std::string> components = {"jp_x", "jp_y", "jp_z"};
@@ -420,6 +454,7 @@ namespace softchain::chain
     pressure_torque_path_     = files.pressure_torque;
     link_geometry_path_       = files.link_geometry;
     link_compliance_path_     = files.link_compliance;
+    joint_law_path_           = files.joint_law;
   }
 
   std::string StiffnessFiles::label(const data::RotationMethod method, double half_width_fraction)
@@ -463,6 +498,8 @@ namespace softchain::chain
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
     if (in_pressure)
       joints.link_compliance = read_link_compliance(link_compliance_path_);
+    if (in_pressure && std::filesystem::exists(joint_law_path_) && CsvTable::read(joint_law_path_).n_rows() > 0)
+      joints.force_law = read_force_law(joint_law_path_, n);
     if (twist_axes)
       joints.twist_points = table.twist_points;
     return joints.model(name, tip, in_pressure);

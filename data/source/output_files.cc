@@ -19,6 +19,7 @@ namespace softchain::data
     kphi_vs_pressure   = stem + "_kphi_vs_pressure.csv";
     ktheta_vs_pressure = stem + "_ktheta_vs_pressure.csv";
     kpsi_vs_pressure   = stem + "_kpsi_vs_pressure.csv";
+    joint_law          = stem + "_joint_law.csv";
     pressure_torque    = stem + "_pressure_torque.csv";
     link_geometry      = stem + "_link_geometry.csv";
     link_compliance    = stem + "_link_compliance.csv";

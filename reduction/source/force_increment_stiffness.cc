@@ -18,24 +18,23 @@ namespace softchain::reduction
       return std::find(roles.begin(), roles.end(), sample.role()) != roles.end();
     }
 
-    // The pressure-only state at `pressure`: a pressure sample, or the rest
-    // (nullptr with `found`) at p = 0.
-    const SampleReduction *base_state(const std::vector<SampleReduction> &samples,
-                                      const std::vector<std::string> &pressure_roles,
-                                      const double pressure, bool &found)
-    {
-      found = pressure == 0.0;
-      if (found)
-        return nullptr;
-      for (const auto &sample : samples)
-        if (has_role(sample, pressure_roles) && sample.pressure() == pressure)
-          {
-            found = true;
-            return &sample;
-          }
-      return nullptr;
-    }
   } // namespace
+
+  const SampleReduction *pressure_state(const std::vector<SampleReduction> &samples,
+                                        const std::vector<std::string>     &pressure_roles,
+                                        const double pressure, bool &found)
+  {
+    found = pressure == 0.0;
+    if (found)
+      return nullptr;
+    for (const auto &sample : samples)
+      if (has_role(sample, pressure_roles) && sample.pressure() == pressure)
+        {
+          found = true;
+          return &sample;
+        }
+    return nullptr;
+  }
 
   ForceIncrementStiffness::ForceIncrementStiffness(const std::vector<SampleReduction> &samples,
                                                    const std::vector<std::string> &force_roles,
@@ -50,7 +49,7 @@ namespace softchain::reduction
         if (!has_role(sample, force_roles))
           continue;
         bool                   found = false;
-        const SampleReduction *base  = base_state(samples, pressure_roles, sample.pressure(), found);
+        const SampleReduction *base  = pressure_state(samples, pressure_roles, sample.pressure(), found);
         if (!found)
           {
             ++n_without_base_;

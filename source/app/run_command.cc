@@ -90,6 +90,7 @@ namespace softchain::app
                name.find("_kphi_vs_pressure") != std::string::npos ? "k_phi per pressure and joint" :
                name.find("_ktheta_vs_pressure") != std::string::npos ? "k_theta per pressure and joint" :
                name.find("_kpsi_vs_pressure") != std::string::npos ? "k_psi per pressure and joint" :
+               name.find("_joint_law") != std::string::npos ? "the joints' torque-angle curves under forces" :
                name.find("_pressure_torque") != std::string::npos ? "pressure torque J_p per joint" :
                name.find("_link_geometry") != std::string::npos ? "the chain's joints and tip per pressure" :
                ext == ".csv" ? "joint stiffness table k_psi, k_theta, k_phi" : "reduction output";

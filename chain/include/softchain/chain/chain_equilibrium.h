@@ -9,6 +9,10 @@
 // generalised force of the Euler angles, Q_{i,alpha} = a_{i,alpha} . M_i with
 // M_i = sum_{k distal to i} (x_k - c_i) x f_k the moment about joint i: the
 // reduction's joint-frame torque to first order, exactly so in planar bending.
+// With a JointForceLaw the joints it covers replace K_j q_j by J_p,j p +
+// T_j(q_j - q_p,j) (q_p = K^-1 J_p p), 1/2 q_j^T K_j q_j by J_p,j p . q_j +
+// W_j(q_j - q_p,j) and K_j by the law's symmetric tangent dT_j/dq_j: the
+// problem stays conservative and H symmetric, in ChainTangent's form.
 // The tangent H = dr/dq = K - dQ/dq is the Hessian of U, symmetric:
 //   dQ_{j,alpha}/dq_{l,beta} = [(l,beta) before (j,alpha)] (a_{l,beta} x a_{j,alpha}) . M_j
 //                              + a_{j,alpha} . B_max(j,l) a_{l,beta},
@@ -124,6 +128,7 @@ namespace softchain::chain
     Equilibrium iterate(const Eigen::VectorXd &start);
     Eigen::VectorXd before_first_contact(const Eigen::VectorXd &free);
     void   evaluate(const Eigen::VectorXd &q);
+    double evaluate_springs(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
     void   add_contact_tangent(Eigen::MatrixXd &dense) const;
     Eigen::Vector3d twist_moment(int m) const;
@@ -151,6 +156,8 @@ namespace softchain::chain
     // Load (set_load)
     Eigen::VectorXd           stiffness_;       // diag K
     Eigen::VectorXd           pressure_torque_; // J_p p
+    Eigen::VectorXd           pressure_angles_; // q_p = K^-1 J_p p, the pressure-only state
+    std::vector<JointForceLaw::Blend> force_law_; // per joint at the load's pressure; empty: linear
     std::vector<AttachedLoad> loads_;           // sorted by link
     ChainContact              contact_;         // the load's obstacles
     Eigen::MatrixXd           contact_rows_;    // V of the contact's tangent
@@ -171,6 +178,8 @@ namespace softchain::chain
     bool                      has_dense_tangent_ = false;
 
     // State of the last evaluation
+    Eigen::VectorXd              spring_torque_; // the joints' spring torques
+    std::vector<Eigen::Matrix3d> spring_tangent_; // their derivatives, K's diagonal blocks
     ChainPose                    pose_;
     std::vector<Eigen::Vector3d> moment_;       // M_i
     std::vector<Eigen::Matrix3d> moment_gradient_; // B_i

@@ -2,10 +2,12 @@
 // ChainModel: one finger of the chain tier, i.e. the geometry (KinematicChain,
 // optionally with links shaped by the pressure: LinkGeometry), the joint
 // stiffness K, the pressure actuation J_p and, optionally, the links' series
-// compliance (LinkCompliance) and the surface it touches obstacles with
+// compliance (LinkCompliance), the joints' nonlinear response to forces
+// (JointForceLaw) and the surface it touches obstacles with
 // (CollisionSurface); everything the equilibrium K q = J_p p + J(q)^T f
 // needs besides the load.
 #include <softchain/chain/collision_surface.h>
+#include <softchain/chain/joint_force_law.h>
 #include <softchain/chain/joint_stiffness.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/chain/link_compliance.h>
@@ -52,6 +54,12 @@ namespace softchain::chain
     // The collision surface, or nullptr (the model cannot touch).
     const CollisionSurface  *collision_surface() const;
     const JointStiffness    &stiffness() const { return stiffness_; }
+    // The joints' response to forces along measured curves (JointForceLaw),
+    // or nullptr: linear springs K(p) about the pressure-only state.
+    void                     set_force_law(JointForceLaw law);
+    const JointForceLaw     *force_law() const { return force_law_ ? &*force_law_ : nullptr; }
+    // The same model with linear springs (no force law).
+    ChainModel               with_linear_joints() const;
     const PressureActuation &actuation() const { return actuation_; }
     // The tabulated pressures of K(p), J_p(p) and the link geometry U(p)
     // together (sorted, unique): between consecutive ones all three are
@@ -65,6 +73,7 @@ namespace softchain::chain
     PressureActuation actuation_;
     std::optional<LinkGeometry> link_geometry_;
     std::optional<LinkCompliance> link_compliance_;
+    std::optional<JointForceLaw>  force_law_;
     std::optional<CollisionSurface> collision_surface_;
   };
 } // namespace softchain::chain

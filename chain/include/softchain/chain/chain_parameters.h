@@ -8,6 +8,7 @@
 //     set Interpolate k_phi in pressure = true   # k_phi(p) and J_p(p) tables
 //     set Link geometry = pressure               # pressure | rigid
 //     set Link compliance = measured             # measured | none
+//     set Joint law = measured                   # measured | linear
 //     set Validation roles = validation, pressure
 //     set Baseline Young's modulus = 2.6e5       # Pa, beam-theory baseline
 //     set Newton tolerance = 1e-10               # relative residual
@@ -31,6 +32,7 @@ namespace softchain::chain
     bool                     in_pressure         = true;
     bool                     pressure_link_geometry = true; // links as the pressure shapes them (LinkGeometry)
     bool                     link_compliance     = true; // links in series with the joints (LinkCompliance)
+    bool                     measured_joint_law  = true; // joints follow the measured curves (JointForceLaw)
     bool                     rigid_where_missing = true; // NaN or k <= 0: rigid joint (or an error)
     std::vector<std::string> validation_roles    = {"validation", "pressure"};
     double                   baseline_youngs_modulus = 2.6e5;

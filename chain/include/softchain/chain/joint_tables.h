@@ -3,7 +3,7 @@
 // they become a ChainModel: centres J_i, the twist axis points S_i, k per
 // joint and axis, optionally k(p) per axis, J_p(p) per joint and axis, and
 // the links' geometry in pressure (LinkGeometry) and their series compliance
-// c(p) (LinkCompliance).
+// c(p) (LinkCompliance), and the joints' response to forces (JointForceLaw).
 //
 // Twist axes: joint i twists (psi) about the proximal link's x axis through
 // S_i and bends (theta, phi) about J_i (KinematicChain::with_twist_offsets);
@@ -31,6 +31,7 @@ namespace softchain::chain
     std::vector<PiecewiseLinear>                pressure_torque; // J_p(p), 3 per joint
     std::optional<LinkGeometry>                 link_geometry;   // none: rigid reference links
     std::optional<PiecewiseLinear>              link_compliance; // c(p), m/N; none: links rigid under forces
+    std::optional<JointForceLaw>                force_law;       // none: linear springs about the pressure state
 
     // The chain to the tip point `tip`; J_p(p), the link geometry and the
     // link compliance from the tables when `pressure_tables`, else the rest

@@ -9,6 +9,9 @@
 //   <label>_kpsi_vs_pressure.csv, <label>_ktheta_vs_pressure.csv
 //                                 pressure,joint,k_psi (k_theta); optional, used
 //                                 when they hold more than one pressure
+//   <label>_joint_law.csv         pressure,joint,k_psi,k_theta,k_phi,kappa,r,theta_0
+//                                 (JointForceLaw; optional, without it or without
+//                                 rows the joints are linear springs under forces)
 //   <label>_pressure_torque.csv   pressure,joint,jp_x,jp_y,jp_z
 //   <label>_link_geometry.csv     pressure,point,x,y,z,rx,ry,rz (LinkGeometry; optional,
 //                                 without it the links are rigid between the
@@ -53,13 +56,15 @@ namespace softchain::chain
     const std::string &pressure_torque_path() const { return pressure_torque_path_; }
     const std::string &link_geometry_path() const { return link_geometry_path_; }
     const std::string &link_compliance_path() const { return link_compliance_path_; }
+    const std::string &joint_law_path() const { return joint_law_path_; }
     // k_psi(p) (axis 0) or k_theta(p) (axis 1).
     const std::string &force_in_pressure_path(int axis) const { return force_in_pressure_paths_[axis]; }
     bool               exist() const;
 
     // The chain of these files with the given tip point and the stiffness
     // `column`; `in_pressure` makes k_phi, J_p, the link geometry and the link
-    // compliance follow their pressure tables. A k
+    // compliance follow their pressure tables, and gives the joints the force
+    // law of the joint-law file where it has rows. A k
     // that is NaN or not positive at some joints holds them rigid
     // (`rigid_where_missing`) or is an InputError.
     // With `twist_axes`, joint i twists about the axis through its twist
@@ -76,5 +81,6 @@ namespace softchain::chain
     std::string pressure_torque_path_;
     std::string link_geometry_path_;
     std::string link_compliance_path_;
+    std::string joint_law_path_;
   };
 } // namespace softchain::chain

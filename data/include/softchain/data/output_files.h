@@ -40,6 +40,7 @@ namespace softchain::data
     std::string kphi_vs_pressure;   // <label>_kphi_vs_pressure.csv
     std::string ktheta_vs_pressure; // <label>_ktheta_vs_pressure.csv
     std::string kpsi_vs_pressure;   // <label>_kpsi_vs_pressure.csv
+    std::string joint_law;          // <label>_joint_law.csv: the force laws' knots
     std::string pressure_torque;    // <label>_pressure_torque.csv: J_p per pressure
     std::string link_geometry;      // <label>_link_geometry.csv
     std::string link_compliance;    // <label>_link_compliance.csv

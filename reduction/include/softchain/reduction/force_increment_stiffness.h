@@ -32,6 +32,13 @@
 
 namespace softchain::reduction
 {
+  // The pressure-only state at `pressure` that force samples there are
+  // measured from: a sample of one of `pressure_roles`, or the rest (nullptr
+  // with `found`) at p = 0; `found` false if there is none.
+  const SampleReduction *pressure_state(const std::vector<SampleReduction> &samples,
+                                        const std::vector<std::string>     &pressure_roles,
+                                        double pressure, bool &found);
+
   class ForceIncrementStiffness
   {
   public:

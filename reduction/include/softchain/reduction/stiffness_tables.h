@@ -9,6 +9,9 @@
 //   <label>_ktheta_vs_pressure.csv,
 //   <label>_kpsi_vs_pressure.csv  per pressure of the lateral (torsion)
 //                                 samples and joint: their least-squares k
+//   <label>_joint_law.csv         per pressure of the force samples and joint:
+//                                 the FabricHinge law fitted to their
+//                                 increments (FabricHingeFit)
 //   <label>_pressure_torque.csv   J_p per joint at rest (pressure 0) and at
 //                                 each pressure sample
 //   <label>_link_geometry.csv     the chain's link geometry (joints 1..n and
@@ -41,7 +44,7 @@ namespace softchain::reduction
     data::CsvTable link_geometry() const;
 
     // Writes the files into `directory` (created if missing); returns the
-    // link compliance fit's warnings.
+    // force laws' and the link compliance fit's warnings.
     std::vector<std::string> write(const std::string &directory) const;
 
   private:

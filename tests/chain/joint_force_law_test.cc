@@ -1,0 +1,138 @@
+// The chain with a JointForceLaw: its residual is the energy's gradient and
+// its tangent the residual's (central differences) with the fabric hinges
+// blended in pressure; the pressure-only state is unchanged by the law; a
+// law is completed with the linear springs at pressures it was not fitted
+// at; and the joint-law file is read, or rejected naming its row.
+#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/joint_force_law.h>
+#include <softchain/chain/stiffness_files.h>
+#include <softchain/data/input_error.h>
+
+#include "../data/scratch_directory.h"
+#include "central_differences.h"
+#include "reduction_output.h"
+#include "uniform_finger.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+using namespace softchain::chain;
+using softchain::data::FabricHinge;
+
+namespace
+{
+  constexpr int    n_joints = 5;
+  constexpr double a        = 0.01;
+
+  FabricHinge hinge(double scale, double theta_0)
+  {
+    FabricHinge h;
+    h.k       = scale * Eigen::Vector3d(0.03, 0.01, 0.02);
+    h.kappa   = scale * 0.05;
+    h.r       = 0.3;
+    h.theta_0 = theta_0;
+    return h;
+  }
+
+  // Every joint: the hinge at rest at 0 and a stiffer, pre-stretched one at 40 kPa.
+  ChainModel finger_with_law()
+  {
+    ChainModel                        model = testing::uniform_finger(n_joints, a, Eigen::Vector3d(0.03, 0.01, 0.02),
+                                                                      Eigen::Vector3d(0.01, -0.02, 0.05) * 1e-6);
+    std::vector<JointForceLaw::Table> tables(n_joints, {{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}});
+    model.set_force_law(JointForceLaw(tables));
+    return model;
+  }
+
+  Eigen::VectorXd angles(double amplitude)
+  {
+    Eigen::VectorXd q(3 * n_joints);
+    for (int j = 0; j < q.size(); ++j)
+      q[j] = amplitude * std::sin(2.3 * j + 1.0);
+    return q;
+  }
+} // namespace
+
+TEST_CASE("with a force law the residual is the energy's gradient and the tangent its derivative")
+{
+  // The hinges' energy is piecewise quadratic in the angles and the chain's
+  // kinematics smooth: central differences err by h^2/6 |r'''| + eps |r| /
+  // h as in chain_equilibrium_test (1e-8 of the largest entry at h = 1e-5),
+  // unless a fibre's kink lies within h of q (none does at these angles).
+  const ChainModel model = finger_with_law();
+  ChainEquilibrium solver(model);
+  solver.set_load({1e4, {{{0.045, 0.002, -0.001}, {0.05, -0.2, 0.1}}}}); // a quarter of the way
+  const Eigen::VectorXd q        = angles(0.2);
+  const Eigen::VectorXd residual = solver.residual(q);
+  CHECK((testing::energy_gradient(solver, q, 1e-5) - residual).cwiseAbs().maxCoeff() <
+        1e-8 * residual.cwiseAbs().maxCoeff());
+  const Eigen::MatrixXd tangent = solver.tangent(q);
+  CHECK((tangent - testing::central_differences(solver, q, 1e-5)).cwiseAbs().maxCoeff() <
+        1e-8 * tangent.cwiseAbs().maxCoeff());
+  // The fibres couple theta and phi of a joint: the law is in H.
+  CHECK(std::abs(tangent(1, 2)) > 1e-3 * tangent.cwiseAbs().maxCoeff());
+}
+
+TEST_CASE("the law leaves the pressure-only state and turns the joints along it under forces")
+{
+  const ChainModel law    = finger_with_law();
+  const ChainModel linear = law.with_linear_joints();
+  ChainEquilibrium with_law(law), without(linear);
+  const Equilibrium inflated = with_law.solve({3e4, {}});
+  REQUIRE(inflated.converged);
+  CHECK((inflated.angles - without.solve({3e4, {}}).angles).cwiseAbs().maxCoeff() < 1e-15);
+  // A lateral tip force at rest: every joint takes the hinge's torque
+  // increment, T(d) = Q, and the taut edge turns phi too (the law's
+  // coupling; the linear springs keep phi at 0).
+  const ChainLoad   lateral{0.0, {{{n_joints * a, 0.0, 0.0}, {0.0, 0.0, 0.02}}}};
+  const Equilibrium bent = with_law.solve(lateral);
+  REQUIRE(bent.converged);
+  CHECK(std::abs(bent.angles[3 * (n_joints - 1) + 2]) > 0.1 * std::abs(bent.angles[3 * (n_joints - 1) + 1]));
+  CHECK(std::abs(without.solve(lateral).angles[3 * (n_joints - 1) + 2]) < 1e-12);
+}
+
+TEST_CASE("a law is completed with the linear springs at the pressures it lacks")
+{
+  // Joint 1 has a law at 0 only; the springs' k(p) tables hold 0 and 8e4.
+  JointStiffness springs(std::vector<Eigen::Vector3d>(2, Eigen::Vector3d(1, 2, 3)));
+  springs.set_in_pressure(2, {PiecewiseLinear({0.0, 8e4}, {3.0, 6.0}), PiecewiseLinear({0.0, 8e4}, {3.0, 6.0})});
+  const JointForceLaw complete = JointForceLaw({{{0.0}, {hinge(1, 0)}}, {}}).completed_with(springs);
+  REQUIRE(complete.table(0).pressures == std::vector<double>{0.0, 8e4});
+  REQUIRE(complete.table(1).pressures == std::vector<double>{0.0, 8e4});
+  CHECK(complete.table(0).hinges[0].kappa == hinge(1, 0).kappa);
+  CHECK(complete.table(0).hinges[1].kappa == 0.0);
+  CHECK(complete.table(0).hinges[1].k == Eigen::Vector3d(1, 2, 6));
+  // Half way in pressure, half of each law's torque.
+  const Eigen::Vector3d d(0.01, 0.02, -0.01);
+  const Eigen::Vector3d expected = 0.5 * (hinge(1, 0).evaluate(d).torque + Eigen::Vector3d(1, 2, 6).cwiseProduct(d));
+  CHECK((complete.at(4e4, 0).evaluate(d).torque - expected).norm() < 1e-15 * expected.norm());
+}
+
+TEST_CASE("the joint-law file gives the chain its law, and bad rows are input errors naming the row")
+{
+  softchain::testing::ScratchDirectory dir("chain_joint_law");
+  const StiffnessFiles files(dir.path().string(), softchain::data::RotationMethod::affine_fit, 0.5);
+  const testing::UniformReduction r;
+  testing::write_reduction(files, r);
+  const Eigen::Vector3d tip(r.n * r.a, 0, 0);
+  CHECK(files.read_model("M2", tip, StiffnessColumn::value, true).force_law() == nullptr);
+  const auto write_law = [&](const std::string &extra_row) {
+    std::ofstream out(files.joint_law_path());
+    out << "pressure,joint,k_psi,k_theta,k_phi,kappa,r,theta_0,samples,relative_residual\n"
+        << "0,2,0.03,0.01,0.02,0.05,0.3,0,9,0.04\n"
+        << extra_row;
+  };
+  write_law("");
+  const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
+  REQUIRE(model.force_law() != nullptr);
+  CHECK(model.force_law()->table(1).hinges.front().kappa == 0.05);
+  CHECK_FALSE(model.force_law()->table(0).hinges.front().kappa > 0); // joint 1: the linear springs
+  CHECK(files.read_model("M2", tip, StiffnessColumn::value, false).force_law() == nullptr);
+  write_law("0,3,0.03,-0.01,0.02,0.05,0.3,0,9,0.04\n");
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
+                    Catch::Contains("_joint_law.csv, row 2") && Catch::Contains("must be positive"));
+  write_law("0,2,0.03,0.01,0.02,0.05,0.3,0,9,0.04\n");
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
+                    Catch::Contains("row 2") && Catch::Contains("listed twice for joint 2"));
+}

@@ -1,0 +1,83 @@
+// FabricHingeFit on synthetic increments: samples made by a known fabric
+// hinge (coupled, one or both edges taut) give that hinge back, samples past
+// a limit point are left out, and linear springs are recovered as linear.
+#include <softchain/reduction/fabric_hinge_fit.h>
+
+#include <catch2/catch.hpp>
+
+using softchain::data::FabricHinge;
+using softchain::reduction::FabricHingeFit;
+
+namespace
+{
+  // Increments shaped like P10's at rest (M2, joint 3): lateral forces turn
+  // theta and phi alike with some twist, torsion couples mostly psi,
+  // in-plane forces phi. Forces in N.
+  std::vector<FabricHingeFit::Increment> increments_of(const FabricHinge &hinge)
+  {
+    const std::vector<std::tuple<std::string, double, Eigen::Vector3d>> shapes = {
+      {"lateral", 0.1, {-0.004, -0.015, -0.013}}, {"lateral", 0.3, {-0.026, -0.042, -0.045}},
+      {"lateral", 0.5, {-0.075, -0.065, -0.098}}, {"torsion", 0.2, {-0.011, 0.0005, 0.0002}},
+      {"torsion", 0.6, {-0.031, 0.0012, -0.0004}}, {"bending", 0.1, {0.001, 0.0, -0.02}},
+      {"bending", 0.3, {0.0, 0.0003, -0.06}}};
+    std::vector<FabricHingeFit::Increment> increments;
+    for (const auto &[role, force, angle] : shapes)
+      increments.push_back({role, 0.0, force, angle, hinge.evaluate(angle).torque});
+    return increments;
+  }
+} // namespace
+
+TEST_CASE("a fabric hinge is recovered from the samples it made")
+{
+  // The grid holds r = 0.3 and theta_0 = max|d theta| / 2 (the lateral
+  // samples' 0.065 / 2): the fit is exact up to the normal equations'
+  // round-off, cond(N) eps ~ 1e-10 here.
+  for (const double theta_0 : {0.0, 0.0325})
+    {
+      FabricHinge made;
+      made.k       = Eigen::Vector3d(0.086, 0.052, 0.146);
+      made.kappa   = 0.58;
+      made.r       = 0.3;
+      made.theta_0 = theta_0;
+      FabricHingeFit::Fit fit;
+      REQUIRE(FabricHingeFit::fit(increments_of(made), fit));
+      CHECK((fit.hinge.k - made.k).cwiseAbs().maxCoeff() < 1e-8 * made.k.maxCoeff());
+      CHECK(fit.hinge.kappa == Approx(made.kappa).epsilon(1e-8));
+      CHECK(fit.hinge.r == Approx(made.r).epsilon(1e-12));
+      CHECK(fit.hinge.theta_0 == Approx(theta_0).margin(1e-15));
+      CHECK(fit.relative_residual < 1e-7);
+      CHECK(fit.n_samples == 7);
+    }
+}
+
+TEST_CASE("linear springs are fitted as linear springs")
+{
+  FabricHinge springs;
+  springs.k = Eigen::Vector3d(0.09, 0.4, 0.2);
+  FabricHingeFit::Fit fit;
+  REQUIRE(FabricHingeFit::fit(increments_of(springs), fit));
+  CHECK(fit.hinge.kappa == 0.0); // no fibre candidate beats the springs by more than round-off
+  CHECK((fit.hinge.k - springs.k).cwiseAbs().maxCoeff() < 1e-10 * springs.k.maxCoeff());
+}
+
+TEST_CASE("samples past a limit point and below the threshold are left out")
+{
+  FabricHinge springs;
+  springs.k = Eigen::Vector3d(0.09, 0.4, 0.2);
+  auto all  = increments_of(springs);
+  // A heavier lateral force that turns the joint less (sideways buckling
+  // moved the bending elsewhere), and one even heavier: both dropped.
+  all.push_back({"lateral", 0.0, 0.7, {-0.05, -0.05, -0.07}, springs.evaluate({-0.05, -0.05, -0.07}).torque});
+  all.push_back({"lateral", 0.0, 1.0, {-0.2, -0.2, -0.3}, springs.evaluate({-0.2, -0.2, -0.3}).torque});
+  // A torsion sample turning the joint by less than the threshold.
+  all.push_back({"torsion", 0.0, 0.05, {-0.0005, 0.0, 0.0}, springs.evaluate({-0.0005, 0.0, 0.0}).torque});
+  int        n_past_limit = 0;
+  const auto kept         = FabricHingeFit::usable(all, 1e-3, n_past_limit);
+  CHECK(kept.size() == 7);
+  CHECK(n_past_limit == 2);
+  // A joint turning against its torque has no positive fit.
+  std::vector<FabricHingeFit::Increment> against = {
+    {"lateral", 0.0, 0.1, {0.01, 0.01, 0.0}, {-0.001, -0.001, 0.0}}};
+  FabricHingeFit::Fit fit;
+  CHECK_FALSE(FabricHingeFit::fit(against, fit));
+}
