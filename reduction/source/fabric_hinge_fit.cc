@@ -1,6 +1,5 @@
 #include <softchain/reduction/fabric_hinge_fit.h>
 #include <softchain/reduction/force_increment_stiffness.h>
-#include <softchain/reduction/stiffness_extraction.h>
 
 #include <Eigen/Dense>
 
@@ -18,7 +17,7 @@ namespace softchain::reduction
     // A law that misses the samples' torques by more than this (relative,
     // weighted) is not used. Measured on P10: 4-11 % at rest, where the
     // layer's one-sided tension couples lateral and in-plane bending, and
-    // 17-52 % inflated, where the response to a lateral force is mostly
+    // 17-65 % inflated, where the response to a lateral force is mostly
     // twist and the law does not hold (docs/chain_fidelity.md).
     constexpr double largest_relative_residual = 0.15;
 
@@ -74,42 +73,47 @@ namespace softchain::reduction
   FabricHingeFit::FabricHingeFit(const std::vector<SampleReduction> &samples,
                                  const ReductionParameters &parameters, const std::size_t n_joints)
   {
+    for (std::size_t joint = 0; joint < n_joints; ++joint)
+      for (const auto &[pressure, all] : increments_of(samples, parameters, joint))
+        {
+          Fit result;
+          result.pressure = pressure;
+          result.joint    = joint;
+          if (fit(usable(all, parameters.rotation_threshold, n_past_limit_), result) &&
+              result.relative_residual <= largest_relative_residual)
+            fits_.push_back(result);
+          else
+            ++n_without_fit_;
+        }
+  }
+
+  std::map<double, std::vector<FabricHingeFit::Increment>>
+  FabricHingeFit::increments_of(const std::vector<SampleReduction> &samples,
+                                const ReductionParameters &parameters, const std::size_t joint)
+  {
     std::vector<std::string> force_roles = parameters.torsion_roles;
     force_roles.insert(force_roles.end(), parameters.lateral_roles.begin(), parameters.lateral_roles.end());
     force_roles.insert(force_roles.end(), parameters.bending_roles.begin(), parameters.bending_roles.end());
-    for (std::size_t joint = 0; joint < n_joints; ++joint)
+    std::map<double, std::vector<Increment>> by_pressure;
+    for (const SampleReduction &sample : samples)
       {
-        std::map<double, std::vector<Increment>> by_pressure;
-        for (const SampleReduction &sample : samples)
+        bool found = false;
+        if (!has_role(sample.role(), force_roles))
+          continue;
+        const SampleReduction *base = pressure_state(samples, parameters.pressure_roles, sample.pressure(), found);
+        if (!found)
+          continue;
+        const JointResult &loaded = sample.joints()[joint];
+        Increment increment{sample.role(), sample.pressure(), sample.force_norm(), angles_of(loaded.angles),
+                            loaded.torque};
+        if (base)
           {
-            if (!has_role(sample.role(), force_roles))
-              continue;
-            bool                   found = false;
-            const SampleReduction *base  = pressure_state(samples, parameters.pressure_roles, sample.pressure(), found);
-            if (!found)
-              continue;
-            const JointResult &loaded = sample.joints()[joint];
-            Increment          increment{sample.role(), sample.pressure(), sample.force_norm(),
-                                angles_of(loaded.angles), loaded.torque};
-            if (base)
-              {
-                increment.angle -= angles_of(base->joints()[joint].free_angles);
-                increment.torque -= base->joints()[joint].torque;
-              }
-            by_pressure[sample.pressure()].push_back(increment);
+            increment.angle -= angles_of(base->joints()[joint].free_angles);
+            increment.torque -= base->joints()[joint].torque;
           }
-        for (const auto &[pressure, all] : by_pressure)
-          {
-            Fit result;
-            result.pressure = pressure;
-            result.joint    = joint;
-            if (fit(usable(all, parameters.rotation_threshold, n_past_limit_), result) &&
-                result.relative_residual <= largest_relative_residual)
-              fits_.push_back(result);
-            else
-              ++n_without_fit_;
-          }
+        by_pressure[sample.pressure()].push_back(increment);
       }
+    return by_pressure;
   }
 
   std::vector<FabricHingeFit::Increment> FabricHingeFit::usable(const std::vector<Increment> &all,

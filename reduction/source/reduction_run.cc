@@ -122,13 +122,13 @@ namespace softchain::reduction
     };
 
     // Writes the CSV files of every (b, method); returns their labels and
-    // adds the rotations below the threshold to n_below_threshold.
+    // adds the counts of its warnings to `summary`.
     std::vector<std::string> write_tables(const ReductionParameters             &parameters,
                                           const GeometryFactory                 &geometry,
                                           double                                 spacing,
                                           const data::MeshRecord                &mesh,
                                           const std::vector<data::SampleRecord> &samples,
-                                          const std::string &directory, int &n_below_threshold)
+                                          const std::string &directory, ReductionSummary &summary)
     {
       std::vector<std::string> labels;
       for (const double fraction : parameters.slab_half_width_fractions)
@@ -136,10 +136,13 @@ namespace softchain::reduction
           {
             const MethodReduction reduction(method, fraction, parameters,
                                             geometry(fraction * spacing), mesh, samples);
-            for (const std::string &warning : StiffnessTables(reduction, parameters).write(directory))
+            const StiffnessTables tables(reduction, parameters);
+            for (const std::string &warning : tables.write(directory))
               std::cerr << "softchain reduce: warning: " << reduction.label() << ": " << warning << '\n';
             labels.push_back(reduction.label());
-            n_below_threshold += reduction.stiffness().n_below_threshold();
+            summary.n_below_threshold += reduction.stiffness().n_below_threshold();
+            summary.n_past_limit += tables.joint_law().n_past_limit();
+            summary.n_without_law += tables.joint_law().n_without_fit();
           }
       return labels;
     }
@@ -177,13 +180,23 @@ namespace softchain::reduction
     std::filesystem::create_directories(directory);
     const GeometryFactory geometry(parameters, layout, database.mesh(), samples, database_path_);
     const auto labels = write_tables(parameters, geometry, layout.spacing(), database.mesh(),
-                                     samples, directory, summary.n_below_threshold);
+                                     samples, directory, summary);
     if (summary.n_below_threshold > 0)
       std::cerr << "softchain reduce: warning: " << summary.n_below_threshold
                 << " (sample, joint, axis) rotations over all methods and b are below "
                    "Reduction/Rotation threshold = "
                 << parameters.rotation_threshold
                 << " rad or carry no torque, and give no stiffness (nan)\n";
+    if (summary.n_past_limit > 0)
+      std::cerr << "softchain reduce: warning: joint law: " << summary.n_past_limit
+                << " (sample, joint) force increments over all methods and b lie past a limit "
+                   "point (the joint turns or loads less than under a lighter force of the same "
+                   "kind, as past sideways buckling) and are not fitted\n";
+    if (summary.n_without_law > 0)
+      std::cerr << "softchain reduce: warning: joint law: " << summary.n_without_law
+                << " (joint, pressure) pairs over all methods and b have no fabric-hinge law (no "
+                   "positive fit, or one missing the torques by more than 15 %: on an inflated "
+                   "finger a lateral force twists first); the chain keeps linear springs there\n";
     if (parameters.plots)
       summary.plots_drawn = draw_plots(directory, labels, parameters.joint_spacing);
     return summary;

@@ -1,7 +1,6 @@
 // StiffnessTables: the CSV files of one (method, b) reduction.
 #include <softchain/reduction/link_compliance_fit.h>
 #include <softchain/data/output_files.h>
-#include <softchain/reduction/fabric_hinge_fit.h>
 #include <softchain/reduction/stiffness_tables.h>
 
 #include <algorithm>
@@ -15,6 +14,7 @@ namespace softchain::reduction
   StiffnessTables::StiffnessTables(const MethodReduction &reduction, const ReductionParameters &parameters)
     : reduction_(reduction)
     , parameters_(parameters)
+    , joint_law_(reduction.samples(), parameters, reduction.geometry().n_joints())
   {}
 
   std::vector<const SampleReduction *> StiffnessTables::pressure_samples() const
@@ -154,20 +154,9 @@ namespace softchain::reduction
     pressure_torque().write(files.pressure_torque);
     if (!reduction_.rest().link_geometry().empty())
       link_geometry().write(files.link_geometry);
-    const FabricHingeFit law(reduction_.samples(), parameters_, reduction_.geometry().n_joints());
-    law.table().write(files.joint_law);
+    joint_law_.table().write(files.joint_law);
     const LinkComplianceFit compliance(reduction_, parameters_);
     compliance.table().write(files.link_compliance);
-    std::vector<std::string> warnings = compliance.warnings();
-    if (law.n_past_limit() > 0)
-      warnings.push_back("joint law: " + std::to_string(law.n_past_limit()) +
-                         " (sample, joint) increments lie past a limit point (the joint turns or "
-                         "loads less than under a lighter force of the same kind) and are not "
-                         "fitted");
-    if (law.n_without_fit() > 0)
-      warnings.push_back("joint law: " + std::to_string(law.n_without_fit()) +
-                         " (joint, pressure) pairs have no fit with positive stiffness (a joint "
-                         "that turns against its torque); the chain keeps linear springs there");
-    return warnings;
+    return compliance.warnings();
   }
 } // namespace softchain::reduction

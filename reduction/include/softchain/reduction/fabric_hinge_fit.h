@@ -21,13 +21,15 @@
 // per role and pressure by increasing force while |d q| and |d tau| keep
 // growing: a force past a limit point (sideways buckling) and the heavier
 // ones are left out and counted. A (joint, pressure) whose samples admit no
-// positive fit gets no law: the chain keeps its linear springs there.
+// positive fit, or whose fit misses their torques by more than 15 %, gets no
+// law: the chain keeps its linear springs there.
 
 #include <softchain/data/csv_table.h>
 #include <softchain/data/fabric_hinge.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -48,8 +50,8 @@ namespace softchain::reduction
       double            relative_residual = 0.0; // |weighted residual| / |weighted d tau|
     };
     const std::vector<Fit> &fits() const { return fits_; }
-    // (joint, pressure) pairs without a positive fit, and samples left out
-    // past a limit point (over all joints).
+    // (joint, pressure) pairs without a law (above), and increments left
+    // out past a limit point (over all joints).
     int n_without_fit() const { return n_without_fit_; }
     int n_past_limit() const { return n_past_limit_; }
 
@@ -74,6 +76,12 @@ namespace softchain::reduction
     static bool fit(const std::vector<Increment> &increments, Fit &result);
 
   private:
+    // Per pressure, the increments of joint `joint` in every force sample
+    // that has a pressure-only state at its pressure.
+    static std::map<double, std::vector<Increment>> increments_of(const std::vector<SampleReduction> &samples,
+                                                                  const ReductionParameters &parameters,
+                                                                  std::size_t joint);
+
     std::vector<Fit> fits_;
     int              n_without_fit_ = 0;
     int              n_past_limit_  = 0;

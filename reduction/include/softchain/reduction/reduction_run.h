@@ -14,6 +14,8 @@ namespace softchain::reduction
     int n_samples_used   = 0; // converged samples reduced
     int n_failed_skipped = 0; // failed samples skipped (warning)
     int n_below_threshold = 0; // (sample, joint, axis, method, b) without k (warning)
+    int n_past_limit      = 0; // (sample, joint, method, b) increments the joint law leaves out (warning)
+    int n_without_law     = 0; // (joint, pressure, method, b) without a joint law (warning)
     bool plots_drawn      = false;
   };
 

@@ -23,6 +23,7 @@
 //                                 chord samples (LinkComplianceFit); no rows
 //                                 without chord samples
 #include <softchain/data/csv_table.h>
+#include <softchain/reduction/fabric_hinge_fit.h>
 #include <softchain/reduction/method_reduction.h>
 
 #include <string>
@@ -42,9 +43,11 @@ namespace softchain::reduction
     data::CsvTable k_vs_pressure(int axis) const;
     data::CsvTable pressure_torque() const;
     data::CsvTable link_geometry() const;
+    // The joints' law under forces (written as <label>_joint_law.csv).
+    const FabricHingeFit &joint_law() const { return joint_law_; }
 
     // Writes the files into `directory` (created if missing); returns the
-    // force laws' and the link compliance fit's warnings.
+    // link compliance fit's warnings.
     std::vector<std::string> write(const std::string &directory) const;
 
   private:
@@ -55,5 +58,6 @@ namespace softchain::reduction
 
     const MethodReduction     &reduction_;
     ReductionParameters        parameters_;
+    FabricHingeFit             joint_law_;
   };
 } // namespace softchain::reduction
