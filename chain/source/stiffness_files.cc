@@ -183,7 +183,11 @@ namespace softchain::chain
               }
           if (largest > 0 && !held.empty())
             warn_once("chain: warning: " + path + ": " + columns[axis] + " is not a positive stiffness at " +
-                        counted(held, "joint") + "; held rigid about this axis",
+                        counted(held, "joint") +
+                        "; held rigid about this axis (nan: no sample turned the joint by the "
+                        "rotation threshold; negative: it turned against its torque, carried by "
+                        "its neighbours or through another axis, as theta with psi on an "
+                        "inflated finger)",
                       std::cerr);
         }
     }
@@ -262,7 +266,9 @@ namespace softchain::chain
         }
       if (!skipped.empty())
         warn_once("chain: warning: " + path + ": " + column + " is not positive in " +
-                    counted(skipped, "row") + "; skipped",
+                    counted(skipped, "row") +
+                    "; skipped (the joint turned against its torque at that pressure, carried "
+                    "by its neighbours or through another axis)",
                   std::cerr);
       n_pressures = pressures.size();
       std::vector<PiecewiseLinear> result;
