@@ -53,9 +53,13 @@ namespace softchain::chain
     model_.actuation().torque(load.pressure, pressure_torque_);
     pressure_angles_ = pressure_torque_.cwiseQuotient(stiffness_);
     force_law_.clear();
+    law_springs_.clear();
     if (const JointForceLaw *law = model_.force_law())
       for (int j = 0; j < law->n_joints(); ++j)
-        force_law_.push_back(law->at(load.pressure, j));
+        {
+          force_law_.push_back(law->at(load.pressure, j));
+          law_springs_.push_back(force_law_.back().lower ? force_law_.back().springs() : std::nullopt);
+        }
     loads_.clear();
     for (const PointLoad &p : load.point_loads)
       {
@@ -107,8 +111,17 @@ namespace softchain::chain
             energy += 0.5 * qj.dot(k.cwiseProduct(qj));
             continue;
           }
-        const auto jp = pressure_torque_.segment<3>(3 * j);
-        const data::FabricHinge::Value v = force_law_[j].evaluate(qj - pressure_angles_.segment<3>(3 * j));
+        const auto            jp = pressure_torque_.segment<3>(3 * j);
+        const Eigen::Vector3d d  = qj - pressure_angles_.segment<3>(3 * j);
+        if (law_springs_[j]) // no fibres here: springs about q_p, without FabricHinge's edges
+          {
+            const Eigen::Vector3d &k         = *law_springs_[j];
+            spring_torque_.segment<3>(3 * j) = jp + k.cwiseProduct(d);
+            spring_tangent_[j]               = k.asDiagonal();
+            energy += jp.dot(qj) + 0.5 * d.dot(k.cwiseProduct(d));
+            continue;
+          }
+        const data::FabricHinge::Value v = force_law_[j].evaluate(d);
         spring_torque_.segment<3>(3 * j) = jp + v.torque;
         spring_tangent_[j]               = v.tangent;
         energy += jp.dot(qj) + v.energy;

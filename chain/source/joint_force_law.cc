@@ -73,4 +73,11 @@ namespace softchain::chain
     a.tangent = (1 - w) * a.tangent + w * b.tangent;
     return a;
   }
+
+  std::optional<Eigen::Vector3d> JointForceLaw::Blend::springs() const
+  {
+    if (lower->kappa != 0.0 || (weight != 0.0 && upper->kappa != 0.0))
+      return std::nullopt;
+    return weight == 0.0 ? lower->k : Eigen::Vector3d((1 - weight) * lower->k + weight * upper->k);
+  }
 } // namespace softchain::chain

@@ -92,6 +92,28 @@ TEST_CASE("the law leaves the pressure-only state and turns the joints along it 
   CHECK(std::abs(without.solve(lateral).angles[3 * (n_joints - 1) + 2]) < 1e-12);
 }
 
+TEST_CASE("a law without fibres is the linear springs it holds")
+{
+  // At a pressure where neither end of the blend has fibres the chain takes
+  // its fast path, J_p p + k (q - q_p), which is k q where k is the model's
+  // own stiffness (k q_p = J_p p): the residual and the tangent of the
+  // linear chain, up to round-off.
+  ChainModel        model = testing::uniform_finger(n_joints, a, Eigen::Vector3d(0.03, 0.01, 0.02),
+                                                    Eigen::Vector3d(0.01, -0.02, 0.05) * 1e-6);
+  FabricHinge       springs;
+  springs.k = Eigen::Vector3d(0.03, 0.01, 0.02);
+  model.set_force_law(JointForceLaw(std::vector<JointForceLaw::Table>(n_joints, {{0.0}, {springs}})));
+  const ChainModel  linear = model.with_linear_joints();
+  ChainEquilibrium  with_law(model), without(linear);
+  const ChainLoad   load{3e4, {{{0.045, 0.002, -0.001}, {0.05, -0.2, 0.1}}}};
+  with_law.set_load(load);
+  without.set_load(load);
+  const Eigen::VectorXd q = angles(0.2);
+  const Eigen::VectorXd r = without.residual(q);
+  CHECK((with_law.residual(q) - r).cwiseAbs().maxCoeff() < 1e-14 * r.cwiseAbs().maxCoeff());
+  CHECK((with_law.tangent(q) - without.tangent(q)).cwiseAbs().maxCoeff() < 1e-14);
+}
+
 TEST_CASE("a law is completed with the linear springs at the pressures it lacks")
 {
   // Joint 1 has a law at 0 only; the springs' k(p) tables hold 0 and 8e4.

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace softchain::chain
@@ -58,6 +59,9 @@ namespace softchain::chain
       const data::FabricHinge *upper  = nullptr;
       double                   weight = 0.0;
       data::FabricHinge::Value evaluate(const Eigen::Vector3d &increment) const;
+      // Without fibres at either end the law is linear springs: their
+      // stiffness (k blended), the chain's fast path; else nullopt.
+      std::optional<Eigen::Vector3d> springs() const;
     };
     Blend at(double pressure, int joint) const;
 
