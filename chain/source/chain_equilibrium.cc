@@ -53,13 +53,9 @@ namespace softchain::chain
     model_.actuation().torque(load.pressure, pressure_torque_);
     pressure_angles_ = pressure_torque_.cwiseQuotient(stiffness_);
     force_law_.clear();
-    law_springs_.clear();
     if (const JointForceLaw *law = model_.force_law())
       for (int j = 0; j < law->n_joints(); ++j)
-        {
-          force_law_.push_back(law->at(load.pressure, j));
-          law_springs_.push_back(force_law_.back().lower ? force_law_.back().springs() : std::nullopt);
-        }
+        force_law_.push_back(law->at(load.pressure, j));
     loads_.clear();
     for (const PointLoad &p : load.point_loads)
       {
@@ -113,9 +109,9 @@ namespace softchain::chain
           }
         const auto            jp = pressure_torque_.segment<3>(3 * j);
         const Eigen::Vector3d d  = qj - pressure_angles_.segment<3>(3 * j);
-        if (law_springs_[j]) // no fibres here: springs about q_p, without FabricHinge's edges
+        if (force_law_[j].springs) // no fibres here: springs about q_p, without FabricHinge's edges
           {
-            const Eigen::Vector3d &k         = *law_springs_[j];
+            const Eigen::Vector3d &k         = *force_law_[j].springs;
             spring_torque_.segment<3>(3 * j) = jp + k.cwiseProduct(d);
             spring_tangent_[j]               = k.asDiagonal();
             energy += jp.dot(qj) + 0.5 * d.dot(k.cwiseProduct(d));

@@ -49,15 +49,17 @@ namespace softchain::chain
       return blend;
     const auto upper = std::upper_bound(table.pressures.begin(), table.pressures.end(), pressure);
     if (upper == table.pressures.begin() || upper == table.pressures.end())
+      blend.lower = blend.upper =
+        upper == table.pressures.begin() ? &table.hinges.front() : &table.hinges.back();
+    else
       {
-        blend.lower = blend.upper =
-          upper == table.pressures.begin() ? &table.hinges.front() : &table.hinges.back();
-        return blend;
+        const std::size_t j = static_cast<std::size_t>(upper - table.pressures.begin());
+        blend.lower         = &table.hinges[j - 1];
+        blend.upper         = &table.hinges[j];
+        blend.weight = (pressure - table.pressures[j - 1]) / (table.pressures[j] - table.pressures[j - 1]);
       }
-    const std::size_t j = static_cast<std::size_t>(upper - table.pressures.begin());
-    blend.lower         = &table.hinges[j - 1];
-    blend.upper         = &table.hinges[j];
-    blend.weight = (pressure - table.pressures[j - 1]) / (table.pressures[j] - table.pressures[j - 1]);
+    if (blend.lower->kappa == 0.0 && (blend.weight == 0.0 || blend.upper->kappa == 0.0))
+      blend.springs = (1 - blend.weight) * blend.lower->k + blend.weight * blend.upper->k;
     return blend;
   }
 
@@ -74,10 +76,4 @@ namespace softchain::chain
     return a;
   }
 
-  std::optional<Eigen::Vector3d> JointForceLaw::Blend::springs() const
-  {
-    if (lower->kappa != 0.0 || (weight != 0.0 && upper->kappa != 0.0))
-      return std::nullopt;
-    return weight == 0.0 ? lower->k : Eigen::Vector3d((1 - weight) * lower->k + weight * upper->k);
-  }
 } // namespace softchain::chain

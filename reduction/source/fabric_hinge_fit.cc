@@ -73,8 +73,9 @@ namespace softchain::reduction
   FabricHingeFit::FabricHingeFit(const std::vector<SampleReduction> &samples,
                                  const ReductionParameters &parameters, const std::size_t n_joints)
   {
+    const auto per_joint = increments_of(samples, parameters, n_joints);
     for (std::size_t joint = 0; joint < n_joints; ++joint)
-      for (const auto &[pressure, all] : increments_of(samples, parameters, joint))
+      for (const auto &[pressure, all] : per_joint[joint])
         {
           Fit result;
           result.pressure = pressure;
@@ -87,14 +88,14 @@ namespace softchain::reduction
         }
   }
 
-  std::map<double, std::vector<FabricHingeFit::Increment>>
+  std::vector<std::map<double, std::vector<FabricHingeFit::Increment>>>
   FabricHingeFit::increments_of(const std::vector<SampleReduction> &samples,
-                                const ReductionParameters &parameters, const std::size_t joint)
+                                const ReductionParameters &parameters, const std::size_t n_joints)
   {
     std::vector<std::string> force_roles = parameters.torsion_roles;
     force_roles.insert(force_roles.end(), parameters.lateral_roles.begin(), parameters.lateral_roles.end());
     force_roles.insert(force_roles.end(), parameters.bending_roles.begin(), parameters.bending_roles.end());
-    std::map<double, std::vector<Increment>> by_pressure;
+    std::vector<std::map<double, std::vector<Increment>>> per_joint(n_joints);
     for (const SampleReduction &sample : samples)
       {
         bool found = false;
@@ -103,17 +104,20 @@ namespace softchain::reduction
         const SampleReduction *base = pressure_state(samples, parameters.pressure_roles, sample.pressure(), found);
         if (!found)
           continue;
-        const JointResult &loaded = sample.joints()[joint];
-        Increment increment{sample.role(), sample.pressure(), sample.force_norm(), angles_of(loaded.angles),
-                            loaded.torque};
-        if (base)
+        for (std::size_t joint = 0; joint < n_joints; ++joint)
           {
-            increment.angle -= angles_of(base->joints()[joint].free_angles);
-            increment.torque -= base->joints()[joint].torque;
+            const JointResult &loaded = sample.joints()[joint];
+            Increment increment{sample.role(), sample.pressure(), sample.force_norm(),
+                                angles_of(loaded.angles), loaded.torque};
+            if (base)
+              {
+                increment.angle -= angles_of(base->joints()[joint].free_angles);
+                increment.torque -= base->joints()[joint].torque;
+              }
+            per_joint[joint][sample.pressure()].push_back(increment);
           }
-        by_pressure[sample.pressure()].push_back(increment);
       }
-    return by_pressure;
+    return per_joint;
   }
 
   std::vector<FabricHingeFit::Increment> FabricHingeFit::usable(const std::vector<Increment> &all,

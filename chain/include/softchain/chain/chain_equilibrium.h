@@ -65,7 +65,6 @@
 #include <softchain/chain/chain_tangent.h>
 
 #include <Eigen/Core>
-#include <optional>
 #include <string>
 
 namespace softchain::chain
@@ -159,7 +158,6 @@ namespace softchain::chain
     Eigen::VectorXd           pressure_torque_; // J_p p
     Eigen::VectorXd           pressure_angles_; // q_p = K^-1 J_p p, the pressure-only state
     std::vector<JointForceLaw::Blend> force_law_; // per joint at the load's pressure; empty: linear
-    std::vector<std::optional<Eigen::Vector3d>> law_springs_; // per joint: its law's springs where it has no fibres
     std::vector<AttachedLoad> loads_;           // sorted by link
     ChainContact              contact_;         // the load's obstacles
     Eigen::MatrixXd           contact_rows_;    // V of the contact's tangent

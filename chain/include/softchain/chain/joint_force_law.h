@@ -58,10 +58,10 @@ namespace softchain::chain
       const data::FabricHinge *lower  = nullptr; // nullptr: no law
       const data::FabricHinge *upper  = nullptr;
       double                   weight = 0.0;
-      data::FabricHinge::Value evaluate(const Eigen::Vector3d &increment) const;
       // Without fibres at either end the law is linear springs: their
       // stiffness (k blended), the chain's fast path; else nullopt.
-      std::optional<Eigen::Vector3d> springs() const;
+      std::optional<Eigen::Vector3d> springs;
+      data::FabricHinge::Value       evaluate(const Eigen::Vector3d &increment) const;
     };
     Blend at(double pressure, int joint) const;
 

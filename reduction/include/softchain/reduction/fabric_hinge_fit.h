@@ -76,11 +76,11 @@ namespace softchain::reduction
     static bool fit(const std::vector<Increment> &increments, Fit &result);
 
   private:
-    // Per pressure, the increments of joint `joint` in every force sample
-    // that has a pressure-only state at its pressure.
-    static std::map<double, std::vector<Increment>> increments_of(const std::vector<SampleReduction> &samples,
-                                                                  const ReductionParameters &parameters,
-                                                                  std::size_t joint);
+    // Per joint and pressure, the increments of every force sample that has
+    // a pressure-only state at its pressure.
+    static std::vector<std::map<double, std::vector<Increment>>>
+    increments_of(const std::vector<SampleReduction> &samples, const ReductionParameters &parameters,
+                  std::size_t n_joints);
 
     std::vector<Fit> fits_;
     int              n_without_fit_ = 0;
