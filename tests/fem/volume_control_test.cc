@@ -43,7 +43,7 @@ TEST_CASE("the unit-pressure load is the derivative of the cavity volume", "[fem
   const auto v = test::smooth_displacement(*f.solver, 1e-3, 0.5, 11);
   f.solver->set_displacement(u);
   VolumeControlledInflation inflation(*f.solver, f.prm);
-  const TrilinosWrappers::MPI::Vector g = inflation.unit_pressure_load();
+  const TrilinosWrappers::MPI::Vector g = inflation.unit_load();
   const double eps = 1e-3;
   auto         shifted = [&](const double t) {
     TrilinosWrappers::MPI::Vector w(u);

@@ -4,11 +4,14 @@
 // (NewtonSolver). What s controls is the problem's business
 // (LoadPathProblem): the loads under pressure control and prescribed motion
 // (QuasiStaticSolver), the cavity volume under volume control
-// (VolumeControlledInflation). A problem predicts where a step starts,
+// (VolumeControlledInflation), the forces' conjugate displacement under
+// displacement control (DisplacementControlledForces). A problem predicts where a step starts,
 // keeps the converged states and returns to the last one when a step fails;
 // the path cuts the failed step and tries again.
 //
-// The path ends when s reaches 1, when a cut step falls below
+// The path ends when s reaches 1, when the problem has reached its goal
+// before (goal_reached(): displacement control stops where the forces
+// reach theirs), when a cut step falls below
 // Solver/Minimum load step, or after Solver/Maximum load step attempts
 // (converged and failed steps together): every input ends in bounded time.
 #include <softchain/fem/newton_solver.h>
@@ -36,6 +39,8 @@ namespace softchain::fem
     // multipliers (an augmented Lagrangian's Uzawa step) and returns true if
     // Newton must solve on with them; false when the state is accepted.
     virtual bool augment() { return false; }
+    // After a converged step: true ends the path there, short of s = 1.
+    virtual bool goal_reached() const { return false; }
   };
 
   class LoadPath
@@ -43,7 +48,7 @@ namespace softchain::fem
   public:
     enum class Stop
     {
-      finished,          // s = 1 reached
+      finished,          // s = 1 (or the problem's goal) reached
       step_too_small,    // a cut step fell below Minimum load step
       too_many_attempts  // Maximum load step attempts used up
     };

@@ -165,6 +165,9 @@ namespace softchain::fem
       return !springs && !(contact && contact->has_friction());
     }
     const FollowerPressure              &pressure_load() const { return *pressure; }
+    // The nodal load of dead `point_loads` at their reference points, zero
+    // at the constrained DoFs (displacement control's unit load).
+    dealii::TrilinosWrappers::MPI::Vector point_load_vector(const std::vector<PointLoad> &point_loads) const;
     // The contact with the obstacles of subsection Contact (none: nullptr).
     const ObstacleContact               *obstacle_contact() const { return contact.get(); }
     // Puts the obstacles of `scene` in the following solves, with a fresh
@@ -239,8 +242,9 @@ namespace softchain::fem
                         const dealii::AffineConstraints<double> &constraints);
     // Do cell sums under `constraints` go through `scatter`'s places?
     bool by_places(const dealii::AffineConstraints<double> &constraints) const;
-    void assemble_point_loads(const std::vector<PointLoad>         &point_loads,
-                              const dealii::AffineConstraints<double> &constraints);
+    void assemble_point_loads(const std::vector<PointLoad>            &point_loads,
+                              const dealii::AffineConstraints<double> &constraints,
+                              dealii::TrilinosWrappers::MPI::Vector   &vector) const;
     LoadState                      newton_target; // the state Newton iterates towards
     double                         correction_taken = 1.0; // of the last Newton update (line search)
 

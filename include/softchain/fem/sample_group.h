@@ -37,7 +37,10 @@ namespace softchain::fem
     // found. A sample with a tip motion needs `anchor`, the equilibrium its
     // motion is relative to (InputError without). A contact sample is solved
     // against its own obstacles (the obstacles at their place from the
-    // start) and records the wrench each receives. A failed solve returns the last converged state,
+    // start) and records the wrench each receives. A force sample that load
+    // control cannot solve (a limit point of the forces: the finger buckles
+    // sideways) is solved on by displacement control; its record's reason
+    // then says where the limit lay. A failed solve returns the last converged state,
     // its reason and load factor along the path from the start. Writes
     // vtu/sample_<id>_* when Output/Write VTU.
     data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
@@ -61,5 +64,11 @@ namespace softchain::fem
     // A volume-controlled sample: the cavity inflated to volume `target`
     // from the current state; `pressure` receives the pressure reached.
     QuasiStaticSolver::Result inflate(double target, double &pressure);
+    // A force sample that load control could not solve, continued from its
+    // last converged state by displacement control (DisplacementControlledForces)
+    // where only its forces change on the way; else `failed` unchanged.
+    QuasiStaticSolver::Result pass_force_limit(const LoadState &target,
+                                               const QuasiStaticSolver::Result &failed,
+                                               std::string &note);
   };
 } // namespace softchain::fem

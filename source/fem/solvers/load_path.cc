@@ -51,6 +51,8 @@ namespace softchain::fem
             ++result.load_steps;
             log << "    load step " << result.load_steps << ": " << name << ' ' << path.reached()
                 << ", " << iterations << " Newton iterations\n";
+            if (problem.goal_reached())
+              break;
             continue;
           }
         problem.reject_step();

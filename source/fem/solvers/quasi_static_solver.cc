@@ -264,8 +264,9 @@ namespace softchain::fem
     return scatter && &constraints == &fe_space->fixed_dofs;
   }
 
-  void QuasiStaticSolver::assemble_point_loads(const std::vector<PointLoad>  &point_loads,
-                                               const AffineConstraints<double> &constraints)
+  void QuasiStaticSolver::assemble_point_loads(const std::vector<PointLoad>    &point_loads,
+                                               const AffineConstraints<double> &constraints,
+                                               TrilinosWrappers::MPI::Vector   &vector) const
   {
     std::vector<Point<3>> points;
     for (const auto &l : point_loads)
@@ -278,8 +279,18 @@ namespace softchain::fem
           Vector<double> local(stencil.dof.size());
           for (unsigned int i = 0; i < stencil.dof.size(); ++i)
             local(i) = stencil.weight[i] * point_loads[k].force[stencil.component[i]];
-          constraints.distribute_local_to_global(local, stencil.dof, rhs);
+          constraints.distribute_local_to_global(local, stencil.dof, vector);
         }
+  }
+
+  TrilinosWrappers::MPI::Vector
+  QuasiStaticSolver::point_load_vector(const std::vector<PointLoad> &point_loads) const
+  {
+    TrilinosWrappers::MPI::Vector q(rhs);
+    q = 0;
+    assemble_point_loads(point_loads, active_constraints ? *active_constraints : fe_space->fixed_dofs, q);
+    q.compress(VectorOperation::add);
+    return q;
   }
 
   bool QuasiStaticSolver::assemble(const LoadState &state, const bool with_matrix)
@@ -316,7 +327,7 @@ namespace softchain::fem
       pressure->assemble(u_ghosted, state.pressure, constraints, with_matrix ? &matrix : nullptr,
                          rhs, by_places(constraints) ? scatter.get() : nullptr);
     if (!state.point_loads.empty())
-      assemble_point_loads(state.point_loads, constraints);
+      assemble_point_loads(state.point_loads, constraints, rhs);
     if (state.tip_traction.norm() > 0)
       tip_traction->assemble(state.tip_traction, constraints, rhs);
     // The obstacles' contact forces count among the external loads (their

@@ -1,3 +1,4 @@
+#include <softchain/fem/displacement_controlled_forces.h>
 #include <softchain/fem/sample_group.h>
 #include <softchain/fem/solution_output.h>
 #include <softchain/fem/volume_controlled_inflation.h>
@@ -142,6 +143,35 @@ namespace softchain::fem
     return result;
   }
 
+  // A force sample whose load control failed, from the last state it
+  // converged at: by displacement control, which follows the finger past a
+  // limit point of the forces (a sideways buckling). `failed` is the load
+  // control's outcome; `note` receives where the limit point lay.
+  QuasiStaticSolver::Result SampleGroup::pass_force_limit(const LoadState                 &target,
+                                                          const QuasiStaticSolver::Result &failed,
+                                                          std::string                     &note)
+  {
+    if (!DisplacementControlledForces::applies(solver.load_state(), target))
+      return failed;
+    const auto                   start = std::chrono::steady_clock::now();
+    DisplacementControlledForces control(solver, prm, target);
+    const auto                   outcome = control.solve();
+    QuasiStaticSolver::Result    result  = failed;
+    result.converged = outcome.converged;
+    result.failure   = outcome.converged ? QuasiStaticSolver::Failure::none : failed.failure;
+    result.reason    = outcome.converged ? "" : failed.reason + "; then " + outcome.reason;
+    if (outcome.converged)
+      result.load_factor_reached = 1.0;
+    result.newton_iterations += outcome.newton_iterations;
+    result.load_steps += outcome.load_steps;
+    result.wall_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (outcome.converged && outcome.limit_fraction)
+      note = "passed a limit point of the forces at " +
+             std::to_string(static_cast<int>(std::round(100 * *outcome.limit_fraction))) +
+             " % of them by displacement control";
+    return result;
+  }
+
   data::SampleRecord SampleGroup::solve(const Sample &sample, const data::SampleRecord *start,
                                         const data::SampleRecord *anchor, const unsigned int index)
   {
@@ -161,16 +191,19 @@ namespace softchain::fem
     data::SampleRecord record;
     record.id        = sample.id;
     record.actuation = sample.actuation;
-    const auto result =
+    std::string note; // how a converged sample was reached, where that matters
+    auto        result =
       sample.actuation.cavity_volume_ratio ?
         inflate(*sample.actuation.cavity_volume_ratio * rest_volume, record.actuation.pressure) :
         solver.solve(load_of(sample.actuation),
                      first_step(start ? &start->actuation : nullptr, sample.actuation));
+    if (!result.converged && !sample.actuation.cavity_volume_ratio)
+      result = pass_force_limit(load_of(sample.actuation), result, note);
     record.status = result.converged ? data::SampleStatus::converged :
                     result.failure == QuasiStaticSolver::Failure::limit_point ?
                                        data::SampleStatus::limit_point :
                                        data::SampleStatus::failed;
-    record.reason              = result.converged ? "" :
+    record.reason              = result.converged ? note :
                                    result.reason + (start ? " (load path from sample " + start->id + ")" :
                                                             " (load path from rest)");
     record.load_factor_reached = result.load_factor_reached;

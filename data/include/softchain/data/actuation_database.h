@@ -158,7 +158,10 @@ namespace softchain::data
     std::string id; // sample_id(design_hash, actuation)
     Actuation   actuation;
     SampleStatus status = SampleStatus::converged;
-    std::string  reason; // why it failed (empty if converged)
+    // Why it failed; for a converged sample, how it was reached where that
+    // matters (a limit point of the forces passed by displacement control),
+    // else empty.
+    std::string  reason;
     double      load_factor_reached = 1.0;
     int         newton_iterations   = 0;
     int         load_steps          = 0;
