@@ -223,6 +223,8 @@ namespace softchain::data
         }
       if (const auto &ratio = sample.actuation.cavity_volume_ratio)
         write_attribute(group, "cavity_volume_ratio", *ratio, path);
+      if (std::isfinite(sample.force_limit))
+        write_attribute(group, "force_limit", sample.force_limit, path);
       write_obstacles(group, sample, path);
     }
 
@@ -276,6 +278,8 @@ namespace softchain::data
       sample.force_points_deformed = read_points(group, "force_points_deformed", path);
       sample.x                     = read_points(group, "x", path);
       read_obstacles(group, id, sample.actuation, sample.obstacle_wrenches, path);
+      if (H5Aexists(group, "force_limit") > 0)
+        sample.force_limit = read_double_attribute(group, "force_limit", path);
       if (H5Lexists(group, "base_wrench", H5P_DEFAULT) > 0)
         {
           const auto wrench = read_points(group, "base_wrench", path);

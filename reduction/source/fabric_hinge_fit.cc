@@ -108,7 +108,7 @@ namespace softchain::reduction
           {
             const JointResult &loaded = sample.joints()[joint];
             Increment increment{sample.role(), sample.pressure(), sample.force_norm(),
-                                angles_of(loaded.angles), loaded.torque};
+                                angles_of(loaded.angles), loaded.torque, sample.past_force_limit()};
             if (base)
               {
                 increment.angle -= angles_of(base->joints()[joint].free_angles);
@@ -134,8 +134,9 @@ namespace softchain::reduction
                          [](const Increment &a, const Increment &b) { return a.force < b.force; });
         for (std::size_t i = 0; i < group.size(); ++i)
           {
-            if (i > 0 && !(group[i].angle.norm() > group[i - 1].angle.norm() &&
-                           group[i].torque.norm() > group[i - 1].torque.norm()))
+            if (group[i].past_force_limit ||
+                (i > 0 && !(group[i].angle.norm() > group[i - 1].angle.norm() &&
+                            group[i].torque.norm() > group[i - 1].torque.norm())))
               {
                 n_past_limit += static_cast<int>(group.size() - i);
                 break;

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace softchain::reduction
@@ -18,6 +19,7 @@ namespace softchain::reduction
     : id_(sample.id)
     , role_(sample.actuation.role)
     , pressure_(sample.actuation.pressure)
+    , past_force_limit_(std::isfinite(sample.force_limit))
     , point_forces_(sample.actuation.point_forces)
   {
     const JointFrames frames(method, geometry.slabs(), geometry.reference_points(),

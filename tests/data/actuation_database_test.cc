@@ -55,6 +55,8 @@ namespace
     s.force_points_deformed = {{1.0 + shift, 0.5, 0.5 - shift}};
     s.base_force            = {0.0, -0.25, 0.0};
     s.base_moment           = {0.0, 0.0, -0.25 * (1.0 + shift)};
+    if (shift > 0) // a sample that buckled on the way, and others that did not
+      s.force_limit = 0.2 + shift;
     return s;
   }
 

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 namespace softchain::testing
 {
   inline void check_equal_samples(const data::SampleRecord &a, const data::SampleRecord &b)
@@ -25,6 +27,7 @@ namespace softchain::testing
     CHECK(a.force_points_deformed == b.force_points_deformed);
     CHECK(a.base_force == b.base_force);
     CHECK(a.base_moment == b.base_moment);
+    CHECK(((std::isnan(a.force_limit) && std::isnan(b.force_limit)) || a.force_limit == b.force_limit));
     REQUIRE(a.obstacle_wrenches.size() == b.obstacle_wrenches.size());
     for (std::size_t k = 0; k < a.obstacle_wrenches.size(); ++k)
       {

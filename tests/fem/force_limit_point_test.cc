@@ -6,7 +6,10 @@
 #include "fem_test_tools.h"
 
 #include <softchain/fem/boundary_ids.h>
+#include <softchain/data/actuation_database.h>
 #include <softchain/fem/displacement_controlled_forces.h>
+#include <softchain/fem/finger_mesh.h>
+#include <softchain/fem/sample_group.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -15,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 using namespace dealii;
 using namespace softchain;
@@ -115,4 +119,34 @@ TEST_CASE("displacement control passes the snap-through of a shallow arch", "[fe
   f.solver->reset();
   REQUIRE(f.solver->solve(crown_load(before->load)).converged);
   CHECK(-test::displacement_at(*f.solver, crown)[1] == Approx(before->displacement).epsilon(1e-6));
+}
+
+TEST_CASE("the sweep stores a force sample past a limit point with its limit", "[fem][stability]")
+{
+  // The arch as a sample group's finger: its solve of a crown force beyond
+  // the snap-through (load control fails there) goes on by displacement
+  // control, and the record says where the limit lay.
+  FingerMesh mesh;
+  shallow_arch(mesh.triangulation, 16);
+  mesh.material_names = {"solid"};
+  const Parameters  prm = test::parameters_from_text("arch_sweep", test::solid_prm("Q2", "log", 2.6e5, 0.48));
+  std::ostringstream log;
+  SampleGroup        group(prm, mesh, MPI_COMM_WORLD, log);
+  Sample             sample;
+  sample.label                  = "crown 10 mN";
+  sample.actuation.role         = "crown";
+  sample.actuation.point_forces = {{{crown[0], crown[1], crown[2]}, {0.0, -0.01, 0.0}}};
+  sample.id                     = data::sample_id("arch", sample.actuation);
+  const auto record             = group.solve(sample, nullptr, nullptr, 0);
+  INFO(record.reason);
+  REQUIRE(record.converged());
+  CHECK(record.load_factor_reached == 1.0);
+  // The snap-through load of the test above (2.117 mN): displacement
+  // control starts where load control stopped, just below the peak
+  // (measured 0.01 % apart; 1 % asserted).
+  CHECK(record.force_limit == Approx(2.117e-3).epsilon(0.01));
+  CHECK_THAT(record.reason, Catch::Contains("passed a limit point of the forces"));
+  // The crown went through: it lies below the supports (7 mm above them at rest).
+  REQUIRE(record.force_points_deformed.size() == 1);
+  CHECK(record.force_points_deformed[0][1] < 0.0);
 }

@@ -75,6 +75,15 @@ TEST_CASE("samples past a limit point and below the threshold are left out")
   const auto kept         = FabricHingeFit::usable(all, 1e-3, n_past_limit);
   CHECK(kept.size() == 7);
   CHECK(n_past_limit == 2);
+  // A heavier bending force that turns the joint more, but that the FEM
+  // followed past a limit point of its forces (displacement control): it
+  // lies on the buckled branch, and is left out with those heavier.
+  auto buckled = increments_of(springs);
+  buckled.push_back({"bending", 0.0, 0.9, {0.0, 0.3, 0.0}, springs.evaluate({0.0, 0.3, 0.0}).torque, true});
+  buckled.push_back({"bending", 0.0, 1.2, {0.0, 0.4, 0.0}, springs.evaluate({0.0, 0.4, 0.0}).torque});
+  int past = 0;
+  CHECK(FabricHingeFit::usable(buckled, 1e-3, past).size() == 7);
+  CHECK(past == 2);
   // A joint turning against its torque has no positive fit.
   std::vector<FabricHingeFit::Increment> against = {
     {"lateral", 0.0, 0.1, {0.01, 0.01, 0.0}, {-0.001, -0.001, 0.0}}};

@@ -36,8 +36,10 @@ namespace softchain::fem
       unsigned int newton_iterations = 0;
       unsigned int load_steps        = 0;
       // Where the forces passed a limit point (mu fell from one step to the
-      // next): the peak's mu / F; none on a path without one.
-      std::optional<double> limit_fraction;
+      // next): the peak's mu / F, and the forces' magnitude there [N] (the
+      // root sum of squares over the points, the start's forces included);
+      // none on a path without one.
+      std::optional<double> limit_fraction, limit_force;
       std::vector<PathPoint> path; // (c [m], mu [N]) of every converged step
     };
 

@@ -39,8 +39,8 @@ namespace softchain::fem
     // against its own obstacles (the obstacles at their place from the
     // start) and records the wrench each receives. A force sample that load
     // control cannot solve (a limit point of the forces: the finger buckles
-    // sideways) is solved on by displacement control; its record's reason
-    // then says where the limit lay. A failed solve returns the last converged state,
+    // sideways) is solved on by displacement control; its record's
+    // force_limit and reason then say where the limit lay. A failed solve returns the last converged state,
     // its reason and load factor along the path from the start. Writes
     // vtu/sample_<id>_* when Output/Write VTU.
     data::SampleRecord solve(const Sample &sample, const data::SampleRecord *start,
@@ -69,6 +69,6 @@ namespace softchain::fem
     // where only its forces change on the way; else `failed` unchanged.
     QuasiStaticSolver::Result pass_force_limit(const LoadState &target,
                                                const QuasiStaticSolver::Result &failed,
-                                               std::string &note);
+                                               data::SampleRecord &record);
   };
 } // namespace softchain::fem

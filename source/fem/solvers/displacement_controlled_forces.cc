@@ -117,7 +117,10 @@ namespace softchain::fem
     result.load_steps        = path.steps.load_steps;
     for (std::size_t k = 1; k < path.points.size() && !result.limit_fraction; ++k)
       if (path.points[k].load < path.points[k - 1].load)
-        result.limit_fraction = path.points[k - 1].load / force_increment;
+        {
+          result.limit_fraction = path.points[k - 1].load / force_increment;
+          result.limit_force    = magnitude(load_at(path.points[k - 1].load).point_loads);
+        }
     std::ostringstream why;
     if (!goal_reached())
       {
@@ -126,7 +129,7 @@ namespace softchain::fem
                   "Solver/Maximum load step attempts used up" :
                 path.steps.stop == LoadPath::Stop::step_too_small ?
                   "steps below Solver/Minimum load step failed (" + describe(path.steps.last_failure) + ")" :
-                  "the force points moved the mesh's diameter")
+                  "the force points moved the body's diagonal")
             << " at " << 100 * load_amount() / force_increment << " % of the force increment";
         result.reason = why.str();
         return result;

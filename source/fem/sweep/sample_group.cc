@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace softchain::fem
 {
@@ -146,10 +148,11 @@ namespace softchain::fem
   // A force sample whose load control failed, from the last state it
   // converged at: by displacement control, which follows the finger past a
   // limit point of the forces (a sideways buckling). `failed` is the load
-  // control's outcome; `note` receives where the limit point lay.
+  // control's outcome; `record` receives where the limit point lay (its
+  // force_limit and reason).
   QuasiStaticSolver::Result SampleGroup::pass_force_limit(const LoadState                 &target,
                                                           const QuasiStaticSolver::Result &failed,
-                                                          std::string                     &note)
+                                                          data::SampleRecord              &record)
   {
     if (!DisplacementControlledForces::applies(solver.load_state(), target))
       return failed;
@@ -165,10 +168,17 @@ namespace softchain::fem
     result.newton_iterations += outcome.newton_iterations;
     result.load_steps += outcome.load_steps;
     result.wall_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (outcome.converged && outcome.limit_fraction)
-      note = "passed a limit point of the forces at " +
-             std::to_string(static_cast<int>(std::round(100 * *outcome.limit_fraction))) +
-             " % of them by displacement control";
+    std::ostringstream how;
+    how << std::setprecision(3);
+    if (outcome.converged && outcome.limit_force)
+      {
+        how << "passed a limit point of the forces at " << *outcome.limit_force
+            << " N by displacement control";
+        record.force_limit = *outcome.limit_force;
+      }
+    else if (outcome.converged)
+      how << "solved by displacement control after load control failed (" << failed.reason << ')';
+    record.reason = how.str();
     return result;
   }
 
@@ -191,19 +201,18 @@ namespace softchain::fem
     data::SampleRecord record;
     record.id        = sample.id;
     record.actuation = sample.actuation;
-    std::string note; // how a converged sample was reached, where that matters
-    auto        result =
+    auto result =
       sample.actuation.cavity_volume_ratio ?
         inflate(*sample.actuation.cavity_volume_ratio * rest_volume, record.actuation.pressure) :
         solver.solve(load_of(sample.actuation),
                      first_step(start ? &start->actuation : nullptr, sample.actuation));
     if (!result.converged && !sample.actuation.cavity_volume_ratio)
-      result = pass_force_limit(load_of(sample.actuation), result, note);
+      result = pass_force_limit(load_of(sample.actuation), result, record);
     record.status = result.converged ? data::SampleStatus::converged :
                     result.failure == QuasiStaticSolver::Failure::limit_point ?
                                        data::SampleStatus::limit_point :
                                        data::SampleStatus::failed;
-    record.reason              = result.converged ? note :
+    record.reason              = result.converged ? record.reason :
                                    result.reason + (start ? " (load path from sample " + start->id + ")" :
                                                             " (load path from rest)");
     record.load_factor_reached = result.load_factor_reached;

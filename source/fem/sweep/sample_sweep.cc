@@ -42,7 +42,7 @@ namespace boost::serialization
   {
     archive &s.id &s.actuation.pressure &s.status &s.reason &s.load_factor_reached
       &s.newton_iterations &s.load_steps &s.wall_time &s.x &s.force_points_deformed &s.base_force
-        &s.base_moment &s.obstacle_wrenches;
+        &s.base_moment &s.obstacle_wrenches &s.force_limit;
   }
 } // namespace boost::serialization
 

@@ -46,6 +46,8 @@ namespace softchain::fem
       }
     if (record.actuation.cavity_volume_ratio) // the pressure volume control found
       out << "  p = " << std::setprecision(0) << record.actuation.pressure << " Pa";
+    if (record.converged() && !record.reason.empty()) // how it was reached
+      out << "  (" << record.reason << ')';
     out << std::defaultfloat << std::endl;
   }
 } // namespace softchain::fem

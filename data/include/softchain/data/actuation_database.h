@@ -175,6 +175,11 @@ namespace softchain::data
     Point3 base_moment = {{NAN, NAN, NAN}};
     // What each obstacle of the actuation receives, in its order.
     std::vector<ObstacleWrench> obstacle_wrenches;
+    // A force sample that passed a limit point of its forces on the way (a
+    // sideways buckling, followed by displacement control): the forces'
+    // magnitude at the limit [N], the root sum of squares over the points.
+    // NaN for a sample without one: it lies on the branch from the start.
+    double force_limit = NAN;
 
     bool converged() const { return status == SampleStatus::converged; }
   };

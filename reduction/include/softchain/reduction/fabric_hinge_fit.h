@@ -19,8 +19,10 @@
 //
 // Samples used: those turning the joint by at least the rotation threshold,
 // per role and pressure by increasing force while |d q| and |d tau| keep
-// growing: a force past a limit point (sideways buckling) and the heavier
-// ones are left out and counted. A (joint, pressure) whose samples admit no
+// growing and the FEM passed no limit point of the forces on the way: a
+// force past a limit point (sideways buckling) and the heavier ones are left
+// out and counted. The law holds up to the limit; the chain does not follow
+// the finger past it. A (joint, pressure) whose samples admit no
 // positive fit, or whose fit misses their torques by more than 15 %, gets no
 // law: the chain keeps its linear springs there.
 
@@ -66,6 +68,7 @@ namespace softchain::reduction
       double          force;  // N, the sample's force_norm
       Eigen::Vector3d angle;  // d q
       Eigen::Vector3d torque; // d tau
+      bool            past_force_limit = false; // the sample buckled on the way
     };
     // Those turning the joint by at least `threshold`, per role up to the
     // first past a limit point (the rest counted in `n_past_limit`).

@@ -37,6 +37,9 @@ namespace softchain::reduction
     double                          pressure() const { return pressure_; }
     // Sum of the magnitudes |f_k| of the sample's point forces (N).
     double                          force_norm() const;
+    // Whether the sample passed a limit point of its forces on the way (the
+    // finger buckled sideways; data::SampleRecord::force_limit).
+    bool                            past_force_limit() const { return past_force_limit_; }
     const std::vector<JointResult> &joints() const { return joints_; }
     // The chain's link geometry U_1..U_n, U_T at this sample: joint and tip
     // positions at zero angles (chain/link_geometry.h); empty if the mesh
@@ -63,6 +66,7 @@ namespace softchain::reduction
     std::string              id_;
     std::string              role_;
     double                   pressure_;
+    bool                     past_force_limit_;
     std::vector<JointResult> joints_;
     std::vector<Eigen::Vector3d> link_geometry_;
     std::vector<Eigen::Matrix3d> link_rotations_; // R_i of link i (the last torque-carrying frame)
