@@ -190,8 +190,9 @@ namespace softchain::reduction
     if (summary.n_past_limit > 0)
       std::cerr << "softchain reduce: warning: joint law: " << summary.n_past_limit
                 << " (sample, joint) force increments over all methods and b lie past a limit "
-                   "point (the joint turns or loads less than under a lighter force of the same "
-                   "kind, as past sideways buckling) and are not fitted\n";
+                   "point (the FEM passed a limit point of the forces on the way, or the joint "
+                   "turns or loads less than under a lighter force of the same kind, as past "
+                   "sideways buckling) and are not fitted: the joint law stops at the limit\n";
     if (summary.n_without_law > 0)
       std::cerr << "softchain reduce: warning: joint law: " << summary.n_without_law
                 << " (joint, pressure) pairs over all methods and b have no fabric-hinge law (no "
