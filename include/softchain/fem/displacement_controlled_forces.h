@@ -52,7 +52,7 @@ namespace softchain::fem
     DisplacementControlledForces(QuasiStaticSolver &solver, const Parameters &prm,
                                  const LoadState &target);
 
-    double conjugate_displacement() const override { return q * solver.displacement(); }
+    double conjugate_displacement() const override { return q * owned_displacement(); }
     dealii::TrilinosWrappers::MPI::Vector unit_load() const override { return q; }
 
     // Leaves the solver at the target's equilibrium, or at the last
