@@ -16,6 +16,19 @@ namespace softchain::fem
 
   namespace
   {
+    // u_i at a DoF this rank owns, in the Trilinos vector's own storage: a
+    // write there needs no communication. (Element access followed by
+    // compress() is not symmetric: compress() communicates only on the ranks
+    // that accessed elements, so a rank without tip DoFs went on while one
+    // with them waited in it, and a sweep's tip motions hung on two ranks.)
+    double &owned_entry(TrilinosWrappers::MPI::Vector &u, const types::global_dof_index i)
+    {
+      Epetra_FEVector &v     = u.trilinos_vector();
+      const int        local = v.Map().LID(static_cast<TrilinosWrappers::types::int_type>(i));
+      Assert(local >= 0, ExcMessage("not a locally owned DoF"));
+      return v[0][local];
+    }
+
     // R(theta) v by Rodrigues' formula.
     Tensor<1, 3> rotate(const Tensor<1, 3> &theta, const Tensor<1, 3> &v)
     {
@@ -44,10 +57,13 @@ namespace softchain::fem
   }
 
   // Every relevant tip DoF held (ghosts too, so that each rank's constraints
-  // hold the DoFs its cells touch).
+  // hold the DoFs its cells touch). The lines are indexed globally, as the
+  // space's fixed DoFs they are merged with (those of every rank: merged
+  // into constraints over this rank's relevant DoFs, another rank's clamped
+  // DoFs crashed the merge).
   void PrescribedTip::hold_face(const FiniteElementSpace &space)
   {
-    held.reinit(space.relevant_dofs);
+    held.clear();
     for (const auto index :
          DoFTools::extract_boundary_dofs(space.dof_handler, ComponentMask(), {boundary::tip}))
       if (space.relevant_dofs.is_element(index) && !space.fixed_dofs.is_constrained(index))
@@ -135,9 +151,8 @@ namespace softchain::fem
         const BoundaryDof &dof    = owned_tip_dofs[k];
         const Tensor<1, 3> target = centre_ + rotate(motion.rotation, anchored[k] - centre_) +
                                     motion.translation;
-        owned_u[dof.index] = target[dof.component] - dof.support_point[dof.component];
+        owned_entry(owned_u, dof.index) = target[dof.component] - dof.support_point[dof.component];
       }
-    owned_u.compress(VectorOperation::insert);
   }
 
   // Every tip DoF shifted by the same amount per component, so that the
@@ -146,7 +161,6 @@ namespace softchain::fem
   {
     const Tensor<1, 3> shift = anchored_mean + motion.translation - mean_displacement(owned_u);
     for (const BoundaryDof &dof : owned_tip_dofs)
-      owned_u[dof.index] += shift[dof.component];
-    owned_u.compress(VectorOperation::insert);
+      owned_entry(owned_u, dof.index) += shift[dof.component];
   }
 } // namespace softchain::fem
