@@ -189,6 +189,8 @@ namespace softchain::fem
     // Deformed positions of `points` (reference, inside the body).
     std::vector<dealii::Point<3>> deformed_points(const std::vector<dealii::Point<3>> &points) const;
     dealii::TimerOutput          &timer() { return computing_timer; }
+    // The solver's log (Output/Verbose: Newton's iterations and load steps).
+    std::ostream                 &log_stream() const { return log; }
 
   private:
     // The fraction a of the step from `from` to `to` (owned states) that the

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace softchain::fem
 {
@@ -130,8 +129,7 @@ namespace softchain::fem
       contact_converged = solver.obstacle_contact()->history();
     points = &path.points;
     path.points.push_back({c_start, mu});
-    std::ostringstream log;
-    path.steps = LoadPath(prm, first_step, name, log).follow(*this);
+    path.steps = LoadPath(prm, first_step, name, solver.log_stream()).follow(*this);
     solver.set_state(predictor->last(), loads());
     points = nullptr;
     return path;
