@@ -41,6 +41,8 @@ namespace softchain::fem
       // none on a path without one.
       std::optional<double> limit_fraction, limit_force;
       std::vector<PathPoint> path; // (c [m], mu [N]) of every converged step
+      // mu / F of the state the solver is left at (1 when converged).
+      double reached_fraction = 0;
     };
 
     // Whether `start` (the solver's converged state) and `target` differ only

@@ -121,6 +121,7 @@ namespace softchain::fem
           result.limit_fraction = path.points[k - 1].load / force_increment;
           result.limit_force    = magnitude(load_at(path.points[k - 1].load).point_loads);
         }
+    result.reached_fraction = load_amount() / force_increment;
     std::ostringstream why;
     if (!goal_reached())
       {
@@ -139,6 +140,7 @@ namespace softchain::fem
     result.newton_iterations += last.newton_iterations;
     result.load_steps += last.load_steps;
     result.converged = last.converged;
+    result.reached_fraction += (1.0 - result.reached_fraction) * last.load_factor_reached;
     if (!last.converged)
       result.reason = "displacement control passed the forces, but load control back to them failed: " +
                       last.reason;

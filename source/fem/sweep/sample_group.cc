@@ -163,8 +163,10 @@ namespace softchain::fem
     result.converged = outcome.converged;
     result.failure   = outcome.converged ? QuasiStaticSolver::Failure::none : failed.failure;
     result.reason    = outcome.converged ? "" : failed.reason + "; then " + outcome.reason;
-    if (outcome.converged)
-      result.load_factor_reached = 1.0;
+    // The path went on from load factor r towards the target: the stored
+    // state lies at r + (1 - r) mu / F (below r where the forces fell past
+    // the limit).
+    result.load_factor_reached += (1.0 - failed.load_factor_reached) * outcome.reached_fraction;
     result.newton_iterations += outcome.newton_iterations;
     result.load_steps += outcome.load_steps;
     result.wall_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
