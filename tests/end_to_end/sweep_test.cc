@@ -85,6 +85,15 @@ namespace
     return largest;
   }
 
+  // `serial` swept on one rank and `parallel` on two, both successfully.
+  void sweep_on_one_and_two_ranks(const TinyDesign &serial, const TinyDesign &parallel)
+  {
+    REQUIRE(serial.run("sweep").status == 0);
+    const auto outcome = parallel.run("sweep", 2);
+    INFO(outcome.output);
+    REQUIRE(outcome.status == 0);
+  }
+
   std::string file_bytes(const std::string &file)
   {
     std::ifstream      in(file, std::ios::binary);
@@ -612,10 +621,7 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
   const std::string two_groups  = with_volume + "\nset Sample groups = 2";
   TinyDesign        serial("sweep_serial", two_groups);
   TinyDesign        parallel("sweep_parallel", two_groups);
-  REQUIRE(serial.run("sweep").status == 0);
-  const auto outcome = parallel.run("sweep", 2);
-  INFO(outcome.output);
-  REQUIRE(outcome.status == 0);
+  sweep_on_one_and_two_ranks(serial, parallel);
   const auto a = ActuationDatabase::open(serial.database());
   const auto b = ActuationDatabase::open(parallel.database());
   // One rank per sample group: every sample is the same serial solve.
@@ -654,10 +660,7 @@ TEST_CASE("the validation protocol's tip motions give the same samples on 1 and 
                                "  set Steps = 1\nend\n";
   TinyDesign serial("protocol_serial", "set Pressure sweep = 10e3", springs + protocol);
   TinyDesign split("protocol_split", "set Pressure sweep = 10e3", springs + protocol);
-  REQUIRE(serial.run("sweep").status == 0);
-  const auto outcome = split.run("sweep", 2);
-  INFO(outcome.output);
-  REQUIRE(outcome.status == 0);
+  sweep_on_one_and_two_ranks(serial, split);
   // The protocol's samples in the same order (protocol_samples.csv); their
   // ids differ, since the inflation's pressure and tip frame, which the
   // motions are defined in, differ in the last digits.
