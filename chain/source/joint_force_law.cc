@@ -75,5 +75,4 @@ namespace softchain::chain
     a.tangent = (1 - w) * a.tangent + w * b.tangent;
     return a;
   }
-
 } // namespace softchain::chain

@@ -135,7 +135,7 @@ TEST_CASE("the sweep stores a force sample past a limit point with its limit", "
   Sample             sample;
   sample.label                  = "crown 10 mN";
   sample.actuation.role         = "crown";
-  sample.actuation.point_forces = {{{crown[0], crown[1], crown[2]}, {0.0, -0.01, 0.0}}};
+  sample.actuation.point_forces = {{{{crown[0], crown[1], crown[2]}}, {{0.0, -0.01, 0.0}}}};
   sample.id                     = data::sample_id("arch", sample.actuation);
   const auto record             = group.solve(sample, nullptr, nullptr, 0);
   INFO(record.reason);

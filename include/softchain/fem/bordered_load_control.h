@@ -101,8 +101,6 @@ namespace softchain::fem
 
     QuasiStaticSolver &solver;
     const Parameters  &prm;
-    // The owned copy of the solver's displacement.
-    dealii::TrilinosWrappers::MPI::Vector owned_displacement() const;
 
   private:
     double mu;

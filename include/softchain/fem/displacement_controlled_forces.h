@@ -54,7 +54,7 @@ namespace softchain::fem
     DisplacementControlledForces(QuasiStaticSolver &solver, const Parameters &prm,
                                  const LoadState &target);
 
-    double conjugate_displacement() const override { return q * owned_displacement(); }
+    double conjugate_displacement() const override { return q * solver.owned_displacement(); }
     dealii::TrilinosWrappers::MPI::Vector unit_load() const override { return q; }
 
     // Leaves the solver at the target's equilibrium, or at the last
@@ -65,6 +65,7 @@ namespace softchain::fem
 
   private:
     const LoadState                       start, target;
+    const std::vector<PointLoad>          increment;       // f_1 - f_0 per point
     const double                          force_increment; // F
     const dealii::TrilinosWrappers::MPI::Vector q;
 

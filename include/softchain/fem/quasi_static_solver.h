@@ -80,6 +80,8 @@ namespace softchain::fem
     // The pieces, for tests and output.
     const FiniteElementSpace            &space() const { return *fe_space; }
     const dealii::TrilinosWrappers::MPI::Vector &displacement() const { return u_ghosted; }
+    // The same without ghosts (this rank's DoFs), for dot products and copies.
+    const dealii::TrilinosWrappers::MPI::Vector &owned_displacement() const { return u_owned; }
     void set_displacement(const dealii::TrilinosWrappers::MPI::Vector &owned_u);
     // u = owned_u with the springs' link states (their tensions and gaps,
     // Newton unknowns) kept as they are: a predictor's start, from which the

@@ -15,14 +15,6 @@ namespace softchain::fem
     , obstacle_motion(solver.load_state().obstacle_motion)
   {}
 
-  TrilinosWrappers::MPI::Vector BorderedLoadControl::owned_displacement() const
-  {
-    const FiniteElementSpace     &s = solver.space();
-    TrilinosWrappers::MPI::Vector u(s.owned_dofs, s.communicator);
-    u = solver.displacement();
-    return u;
-  }
-
   LoadState BorderedLoadControl::loads() const
   {
     LoadState state       = load_at(mu);
@@ -95,7 +87,7 @@ namespace softchain::fem
 
   void BorderedLoadControl::accept_step(const double s)
   {
-    predictor->converged(s, owned_displacement(), mu);
+    predictor->converged(s, solver.owned_displacement(), mu);
     links_converged   = solver.link_states();
     contact_converged = solver.accept_contact_state(obstacle_motion);
     points->push_back({conjugate_displacement(), mu});
@@ -123,7 +115,7 @@ namespace softchain::fem
     Path path;
     c_start         = conjugate_displacement();
     c_end           = end;
-    predictor       = std::make_unique<ContinuationPredictor>(owned_displacement(), mu);
+    predictor       = std::make_unique<ContinuationPredictor>(solver.owned_displacement(), mu);
     links_converged = solver.link_states();
     if (solver.obstacle_contact())
       contact_converged = solver.obstacle_contact()->history();

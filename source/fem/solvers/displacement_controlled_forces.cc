@@ -79,8 +79,9 @@ namespace softchain::fem
     : BorderedLoadControl(solver, prm, 0.0)
     , start(solver.load_state())
     , target(target)
-    , force_increment(magnitude(force_increment_of(start, target)))
-    , q(solver.point_load_vector(scaled(force_increment_of(start, target), 1.0 / force_increment)))
+    , increment(force_increment_of(start, target))
+    , force_increment(magnitude(increment))
+    , q(solver.point_load_vector(scaled(increment, 1.0 / force_increment)))
   {}
 
   LoadState DisplacementControlledForces::load_at(const double mu) const
