@@ -114,7 +114,7 @@ TEST_CASE("the follower pressure added by places equals deal.II's distribution",
     return; // the one-rank path
   const std::string element = GENERATE(as<std::string>{}, "Q2", "P2");
   INFO(element);
-  test::SolverFixture f(test::parameters_from_text("scatter", test::bender_prm(element, 4)));
+  test::SolverFixture f(test::parameters_from_text("scatter_pressure", test::bender_prm(element, 4)));
   f.solver->set_displacement(test::smooth_displacement(*f.solver, 2e-3, 0.05, 3));
   const auto &space = f.solver->space();
   TwoSums                 sums(*f.solver);

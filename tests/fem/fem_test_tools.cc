@@ -7,10 +7,13 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <random>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace softchain::fem::test
 {
@@ -18,9 +21,15 @@ namespace softchain::fem::test
 
   std::string write_prm(const std::string &name, const std::string &text)
   {
+    // Written beside and renamed into place: another test process (ctest -j)
+    // reading the same name then sees a whole file, never a half-written one.
     const std::string file = name + ".prm";
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(file) << text;
+      {
+        const std::string partial = file + "." + std::to_string(::getpid());
+        std::ofstream(partial) << text;
+        std::filesystem::rename(partial, file);
+      }
     MPI_Barrier(MPI_COMM_WORLD);
     return file;
   }

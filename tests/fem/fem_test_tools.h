@@ -12,7 +12,7 @@
 
 namespace softchain::fem::test
 {
-  // Writes `text` to `name`.prm in the test directory (rank 0 writes, all
+  // Writes `text` to `name`.prm in the test directory, whole at once (rank 0 writes, all
   // ranks wait for it) and returns the file name.
   std::string write_prm(const std::string &name, const std::string &text);
 

@@ -156,13 +156,15 @@ namespace
       mesh);
   }
 
-  // FEM (u_r(A), u_r(B)) on the x axis.
-  std::array<double, 2> fem_radial_displacements(const Tube &t, const std::string &element,
-                                                 const unsigned int n_r, const unsigned int n_t)
+  // FEM (u_r(A), u_r(B)) on the x axis. `prm_name` names the .prm file, one
+  // per test case (safe under ctest -j, which runs the test cases at once).
+  std::array<double, 2> fem_radial_displacements(const std::string &prm_name, const Tube &t,
+                                                 const std::string &element, const unsigned int n_r,
+                                                 const unsigned int n_t)
   {
     Triangulation<3> mesh;
     quarter_ring(t, n_r, n_t, element[0] == 'P', mesh);
-    test::MeshSolverFixture f(test::parameters_from_text("thick_cylinder",
+    test::MeshSolverFixture f(test::parameters_from_text(prm_name,
                                                          test::solid_prm(element, "log", E, nu)),
                               mesh);
     LoadState load;
@@ -191,7 +193,7 @@ TEST_CASE("thick cylinder under internal pressure matches the exact inflation", 
       std::vector<double>                error;
       for (const unsigned int n : {1u, 2u, 4u})
         {
-          fem.push_back(fem_radial_displacements(thick, element, 2 * n, 4 * n));
+          fem.push_back(fem_radial_displacements("thick_cylinder", thick, element, 2 * n, 4 * n));
           error.push_back(std::max(std::abs(fem.back()[0] / exact[0] - 1),
                                    std::abs(fem.back()[1] / exact[1] - 1)));
           WARN("thick cylinder, " << element << " on " << 2 * n << " x " << 4 * n
@@ -229,7 +231,7 @@ TEST_CASE("Q2 converges at its rate through a thin wall", "[fem][cylinder][conve
   const auto             exact = exact_radial_displacements({c.mu, c.lambda}, thin);
   std::vector<std::array<double, 2>> fem;
   for (const unsigned int n : {1u, 2u, 4u})
-    fem.push_back(fem_radial_displacements(thin, "Q2", n, 48));
+    fem.push_back(fem_radial_displacements("thin_wall", thin, "Q2", n, 48));
   for (const unsigned int i : {0u, 1u})
     {
       const double order = std::log2(std::abs(fem[0][i] - fem[1][i]) / std::abs(fem[1][i] - fem[2][i]));
