@@ -2,19 +2,22 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace softchain::chain
 {
   void ChainContact::set(const CollisionSurface *surface, const double pressure,
-                         const std::vector<data::ObstacleRecord> &obstacles, const double stiffness)
+                         const std::vector<data::ObstacleRecord> &obstacles, const double stiffness,
+                         const std::vector<double> &skin_compliance)
   {
     obstacles_.clear();
     poses_.clear();
     touches_.clear();
-    surface_   = surface;
-    stiffness_ = stiffness;
+    skin_compliance_.clear();
+    surface_       = surface;
+    stiffness_     = stiffness;
     if (obstacles.empty())
       return;
     if (surface == nullptr)
@@ -32,16 +35,160 @@ namespace softchain::chain
         poses_.push_back(obstacles_.back().pose(1.0));
       }
     surface->offsets_at(pressure, offsets_);
+    for (const double c : skin_compliance)
+      if (!(c >= 0.0) || !std::isfinite(c))
+        throw std::invalid_argument("chain contact: a skin compliance is negative or not finite");
+    if (std::any_of(skin_compliance.begin(), skin_compliance.end(), [](double c) { return c > 0.0; }))
+      {
+        if (skin_compliance.size() + 1 != surface->link_begin().size())
+          throw std::invalid_argument("chain contact: one skin compliance per link is needed");
+        skin_compliance_ = skin_compliance;
+        skin_shift_.assign(skin_compliance.size(), 0.0);
+      }
   }
 
-  // The touches are the points inside an obstacle: g < 0.
+  // The touches are the points inside an obstacle: g < 0. With a skin, each
+  // link's points near the obstacles (at s = 0) are displaced by its s_b
+  // first. "Near": a skin that relieves its touching points (a_k > 0) gives
+  // at most their deepest penetration over a_k (then none would push), so
+  // the points within that of an obstacle are all that may touch at s_b.
   double ChainContact::update(const ChainPose &pose)
   {
-    candidates(pose, 0.0, touches_);
     double energy = 0.0;
+    if (!has_skin())
+      candidates(pose, 0.0, touches_);
+    else
+      {
+        std::fill(skin_shift_.begin(), skin_shift_.end(), 0.0);
+        std::vector<Touch> near;
+        candidates(pose, 0.0, near);
+        double reach = 0.0;
+        for (const Touch &t : near)
+          {
+            const double a = t.normal.dot(skin_direction(pose, t.link));
+            if (a > 0.0)
+              reach = std::max(reach, -t.gap / a);
+          }
+        if (reach > 0.0)
+          candidates(pose, reach, near);
+        touches_.clear();
+        for (auto first = near.begin(); first != near.end();)
+          {
+            const int  link = first->link;
+            const auto last = std::find_if(first, near.end(), [&](const Touch &t) { return t.link != link; });
+            const std::vector<Touch> group(first, last);
+            const double s = skin_compliance_[link] > 0.0 ? skin_shift(pose, link, group) : 0.0;
+            skin_shift_[link] = s;
+            energy += skin_compliance_[link] > 0.0 ? 0.5 * s * s / skin_compliance_[link] : 0.0;
+            const Eigen::Vector3d shift = s * skin_direction(pose, link);
+            for (const Touch &point : group)
+              {
+                Touch touch;
+                if (touch_at(point.position + shift, link, point.point, point.obstacle, touch))
+                  touches_.push_back(touch);
+              }
+            first = last;
+          }
+      }
     for (const Touch &touch : touches_)
       energy += 0.5 * stiffness_ * touch.gap * touch.gap;
     return energy;
+  }
+
+  Eigen::Vector3d ChainContact::skin_direction(const ChainPose &pose, const int link) const
+  {
+    return pose.link_rotations[link].col(1);
+  }
+
+  bool ChainContact::touch_at(const Eigen::Vector3d &x, const int link, const int k, const int o,
+                              Touch &touch) const
+  {
+    const geometry::SignedDistance d = obstacles_[o].body->distance(x, poses_[o]);
+    touch = {link, k, o, x, d.normal, Eigen::Vector3d(-stiffness_ * std::min(d.gap, 0.0) * d.normal),
+             d.gap, d.hessian};
+    return d.gap < 0.0;
+  }
+
+  // E'(s) = k_s s + sum_k k_c min(g_k(s), 0) a_k(s) is increasing where the
+  // points' normals lie along d (a_k >= 0, plane and round obstacles alike
+  // to first order), so the root is bracketed from s = 0 towards -E'(0) and
+  // found by Newton's method, bisecting where a step leaves the bracket.
+  double ChainContact::skin_shift(const ChainPose &pose, const int link, const std::vector<Touch> &near) const
+  {
+    const Eigen::Vector3d d   = skin_direction(pose, link);
+    const double          k_s = 1.0 / skin_compliance_[link];
+    double                scale = 0.0;
+    const auto            slope = [&](const double s, double &curvature) {
+      double value = k_s * s;
+      curvature    = k_s;
+      scale        = std::abs(value);
+      for (const Touch &point : near)
+        {
+          Touch t;
+          if (!touch_at(point.position + s * d, link, point.point, point.obstacle, t))
+            continue;
+          const double a = t.normal.dot(d);
+          value += stiffness_ * t.gap * a;
+          scale += std::abs(stiffness_ * t.gap * a);
+          curvature += stiffness_ * (a * a + t.gap * d.dot(t.curvature * d));
+        }
+      return value;
+    };
+    double       curvature = 0.0;
+    const double start     = slope(0.0, curvature);
+    if (start == 0.0)
+      return 0.0;
+    const double sign = start < 0.0 ? 1.0 : -1.0; // the root lies at sign * |s|
+    double       inner = 0.0, outer = -start / k_s, unused = 0.0;
+    for (int i = 0; i < 60 && sign * slope(outer, unused) < 0.0; ++i)
+      outer *= 2.0;
+    double s = inner - start / curvature;
+    for (int iteration = 0; iteration < 100; ++iteration)
+      {
+        if (!(sign * (s - inner) > 0.0 && sign * (outer - s) > 0.0))
+          s = 0.5 * (inner + outer);
+        const double value = slope(s, curvature);
+        if (std::abs(value) <= 1e-14 * scale || std::abs(outer - inner) <= 1e-15 * std::abs(s))
+          break;
+        (sign * value < 0.0 ? inner : outer) = s;
+        s -= value / curvature;
+      }
+    return s;
+  }
+
+  void ChainContact::skins(const ChainPose &pose, const int n_angles, std::vector<Skin> &skins) const
+  {
+    skins.clear();
+    for (std::size_t b = 0; b < skin_compliance_.size(); ++b)
+      if (skin_compliance_[b] > 0.0)
+        {
+          Skin skin;
+          skin.link            = static_cast<int>(b);
+          skin.direction       = skin_direction(pose, skin.link);
+          skin.shift           = skin_shift_[b];
+          skin.stiffness       = 1.0 / skin_compliance_[b];
+          skin.penetration_row = Eigen::RowVectorXd::Zero(n_angles);
+          skins.push_back(skin);
+        }
+    Eigen::RowVectorXd row(n_angles);
+    auto               skin = skins.begin();
+    for (const Touch &touch : touches_)
+      {
+        while (skin != skins.end() && skin->link < touch.link)
+          ++skin;
+        if (skin == skins.end() || skin->link != touch.link)
+          continue;
+        const Eigen::Vector3d &d = skin->direction;
+        const double           f = stiffness_ * touch.gap;
+        jacobian_row(pose, touch, touch.curvature * d, row);
+        skin->penetration_row += f * row;
+        // d turns with the link: d(n . d)/dq_{i,alpha} = a_{i,alpha} . (d x n).
+        const Eigen::Vector3d w = d.cross(touch.normal);
+        for (int i = 0; i <= touch.link; ++i)
+          for (int alpha = 0; alpha < 3; ++alpha)
+            skin->penetration_row[3 * i + alpha] += f * pose.joint_axes[i].col(alpha).dot(w);
+        skin->penetration_curvature += f * d.dot(touch.curvature * d);
+      }
   }
 
   void ChainContact::jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
@@ -88,10 +235,37 @@ namespace softchain::chain
       }
   }
 
+  // With a skin, one row u_b per touching link with weight -1 / D_b (header).
   void ChainContact::tangent_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
                                   Eigen::VectorXd &weights) const
   {
     rows_of_touches(pose, true, n_angles, rows, weights);
+    if (!has_skin())
+      return;
+    std::vector<Skin> links;
+    skins(pose, n_angles, links);
+    Eigen::RowVectorXd row(n_angles);
+    for (const Skin &skin : links)
+      {
+        Eigen::RowVectorXd u = skin.penetration_row;
+        double             D = skin.stiffness + skin.penetration_curvature;
+        bool               touching = false;
+        for (const Touch &touch : touches_)
+          if (touch.link == skin.link)
+            {
+              const double a = touch.normal.dot(skin.direction);
+              jacobian_row(pose, touch, touch.normal, row);
+              u += stiffness_ * a * row;
+              D += stiffness_ * a * a;
+              touching = true;
+            }
+        if (!touching)
+          continue;
+        rows.conservativeResize(rows.rows() + 1, n_angles);
+        weights.conservativeResize(weights.size() + 1);
+        rows.row(rows.rows() - 1) = u;
+        weights[weights.size() - 1] = -1.0 / D;
+      }
   }
 
   void ChainContact::curvature_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
@@ -126,22 +300,20 @@ namespace softchain::chain
       {
         const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
         const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
+        const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
         const Eigen::Vector3d  centre = c + R * cluster.centre;
         for (std::size_t o = 0; o < obstacles_.size(); ++o)
           {
             const geometry::Obstacle &obstacle = obstacles_[o];
-            if (obstacle.body->gap(centre, poses_[o]) > cluster.radius + margin)
+            if (obstacle.body->gap(centre, poses_[o]) > cluster.radius + std::abs(s) + margin)
               continue;
             for (int k = cluster.begin; k < cluster.end; ++k)
               {
-                const Eigen::Vector3d x = c + R * offsets_[k];
+                const Eigen::Vector3d x = c + R * (offsets_[k] + Eigen::Vector3d(0.0, s, 0.0));
                 if (!(obstacle.body->gap(x, poses_[o]) < margin))
                   continue;
-                const geometry::SignedDistance d = obstacle.body->distance(x, poses_[o]);
-                near.push_back({cluster.link, k, static_cast<int>(o), x, d.normal,
-                                d.gap < 0.0 ? Eigen::Vector3d(-stiffness_ * d.gap * d.normal)
-                                            : Eigen::Vector3d::Zero(),
-                                d.gap, d.hessian});
+                near.emplace_back();
+                touch_at(x, cluster.link, k, static_cast<int>(o), near.back());
               }
           }
       }

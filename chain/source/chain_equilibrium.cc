@@ -67,8 +67,11 @@ namespace softchain::chain
       }
     std::stable_sort(loads_.begin(), loads_.end(),
                      [](const AttachedLoad &a, const AttachedLoad &b) { return a.link < b.link; });
-    contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness);
     contact_margin_ = 0.05 * (chain_.link_tip() - chain_.link_joint(0)).norm();
+    const double skin_compliance =
+      settings_.skin_compliance ? *settings_.skin_compliance : model_.skin_compliance(load.pressure);
+    const std::vector<double> skin(skin_compliance > 0.0 ? chain_.n_joints() : 0, skin_compliance);
+    contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness, skin);
   }
 
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
@@ -269,6 +272,12 @@ namespace softchain::chain
           free_residual -= k * gaps[c] * near_row(c).transpose();
       }
     contact_.curvature_rows(pose_, chain_.n_angles(), curvature_rows_, curvature_weights_);
+    contact_.skins(pose_, chain_.n_angles(), skins_);
+    alignment_.setZero(m);
+    for (const ChainContact::Skin &skin : skins_)
+      for (Eigen::Index c = 0; c < m; ++c)
+        if (near_[c].link == skin.link)
+          alignment_[c] = near_[c].normal.dot(skin.direction);
     has_dense_tangent_  = false;
     const bool factored = tangent_.factor(0.0);
     if (factored) // H^-1 r_f once; H^-1 of a row when it first enters A
@@ -328,7 +337,11 @@ namespace softchain::chain
       {
         const ChainContact::Touch &point = near_[c];
         const auto &[wb, vb]              = link_velocities_[point.link];
-        const bool inside = gaps[c] + point.normal.dot(vb + wb.cross(point.position)) < 0.0;
+        double      skin                  = 0.0; // a_c times the predicted change of s_b
+        for (const SkinPrediction &s : skin_predictions_)
+          if (s.link == point.link)
+            skin = -alignment_[c] * (s.gamma + s.u.dot(direction_)) / s.D;
+        const bool inside = gaps[c] + point.normal.dot(vb + wb.cross(point.position)) + skin < 0.0;
         if (inside != bool(active[c]))
           {
             active[c] = inside;
@@ -388,7 +401,7 @@ namespace softchain::chain
       for (Eigen::Index i = 0; i < curvature_rows_.rows(); ++i)
         rows.push_back(m + i);
     const auto r        = static_cast<Eigen::Index>(rows.size());
-    const bool woodbury = factored && woodbury_pays(r);
+    const bool woodbury = factored && woodbury_pays(r + static_cast<Eigen::Index>(skins_.size()));
     contact_rows_.resize(r, chain_.n_angles());
     contact_weights_.resize(r);
     Eigen::MatrixXd Y(chain_.n_angles(), woodbury ? r : 0);
@@ -417,17 +430,70 @@ namespace softchain::chain
         if (i < m)
           x += k * gaps[i] * solved_rows_.col(i);
       }
+    add_skin_rows(active, gaps, woodbury, Y, b, x);
     if (!woodbury)
       {
         dense_solve(b);
         return;
       }
     direction_ = -x;
-    if (r == 0)
+    if (contact_rows_.rows() == 0)
       return;
     const Eigen::MatrixXd WV = contact_weights_.asDiagonal() * contact_rows_;
-    const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(r, r) + WV * Y;
+    const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(WV.rows(), WV.rows()) + WV * Y;
     direction_ += Y * S.partialPivLu().solve(WV * x);
+  }
+
+  // The skins in the step's model: with s_b an unknown beside d, link b's
+  // points in A add to the quadratic model
+  //   1/2 k_s (s_b + ds)^2 + sum_c 1/2 k_c (g_c + v_c d + a_c ds)^2 + ds t_b d + 1/2 e_b ds^2
+  // (t_b, e_b: ChainContact::Skin), whose minimum over ds is one row
+  //   u_b = sum_{c in A} k_c a_c v_c + t_b  with weight -1 / D_b and "gap" gamma_b / ... :
+  //   -(gamma_b + u_b d)^2 / (2 D_b),  gamma_b = k_s s_b + sum_{c in A} k_c a_c g_c,
+  //   D_b = k_s + sum_{c in A} k_c a_c^2 + e_b
+  // (equal to the exact tangent's where A holds the touching points). The
+  // row joins V (weight -1 / D_b), its force -gamma_b u_b / D_b the right side.
+  void ChainEquilibrium::add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps,
+                                       const bool woodbury, Eigen::MatrixXd &Y, Eigen::VectorXd &b,
+                                       Eigen::VectorXd &x)
+  {
+    skin_predictions_.clear();
+    const double k = contact_.stiffness();
+    for (const ChainContact::Skin &skin : skins_)
+      {
+        SkinPrediction s{skin.link, skin.stiffness * skin.shift, skin.stiffness + skin.penetration_curvature,
+                         skin.penetration_row};
+        Eigen::VectorXd y = Eigen::VectorXd::Zero(woodbury ? chain_.n_angles() : 0);
+        bool            any = !skin.penetration_row.isZero();
+        if (woodbury && any)
+          tangent_.solve(skin.penetration_row.transpose(), y);
+        for (std::size_t c = 0; c < active.size(); ++c)
+          if (active[c] && near_[c].link == skin.link)
+            {
+              const double a = alignment_[c];
+              s.u += k * a * near_row(c);
+              s.gamma += k * a * gaps[c];
+              s.D += k * a * a;
+              if (woodbury)
+                y += k * a * solved_rows_.col(c);
+              any = true;
+            }
+        if (!any)
+          continue;
+        const Eigen::Index j = contact_rows_.rows();
+        contact_rows_.conservativeResize(j + 1, Eigen::NoChange);
+        contact_weights_.conservativeResize(j + 1);
+        contact_rows_.row(j) = s.u;
+        contact_weights_[j]  = -1.0 / s.D;
+        b -= s.gamma / s.D * s.u.transpose();
+        if (woodbury)
+          {
+            Y.conservativeResize(Eigen::NoChange, j + 1);
+            Y.col(j) = y;
+            x -= s.gamma / s.D * y;
+          }
+        skin_predictions_.push_back(std::move(s));
+      }
   }
 
   // Woodbury's r solves with H's O(n) factor and its r x r system, against

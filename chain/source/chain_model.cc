@@ -1,5 +1,7 @@
 #include <softchain/chain/chain_model.h>
 
+#include <algorithm>
+
 #include <stdexcept>
 
 namespace softchain::chain
@@ -28,6 +30,7 @@ namespace softchain::chain
     ChainModel rigid = *this;
     rigid.link_geometry_.reset();
     rigid.link_compliance_.reset();
+    rigid.skin_compliance_.reset();
     rigid.collision_surface_.reset(); // shaped for the links it leaves
     return rigid;
   }
@@ -35,6 +38,23 @@ namespace softchain::chain
   void ChainModel::set_link_compliance(LinkCompliance compliance)
   {
     link_compliance_ = std::move(compliance);
+  }
+
+  void ChainModel::set_skin_compliance(PiecewiseLinear compliance)
+  {
+    skin_compliance_ = std::move(compliance);
+  }
+
+  double ChainModel::skin_compliance(const double pressure) const
+  {
+    return skin_compliance_ ? std::max((*skin_compliance_)(pressure), 0.0) : 0.0;
+  }
+
+  ChainModel ChainModel::without_skin_compliance() const
+  {
+    ChainModel rigid = *this;
+    rigid.skin_compliance_.reset();
+    return rigid;
   }
 
   void ChainModel::set_collision_surface(CollisionSurface surface)

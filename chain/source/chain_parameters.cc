@@ -38,6 +38,11 @@ namespace softchain::chain
       section.declare("Contact stiffness", "1e5",
                       "N/m, the penalty per point of the collision surface: a point that "
                       "carries f penetrates by f / stiffness");
+      section.declare("Skin compliance", "measured",
+                      "how far each link's section gives along its palm normal per newton of "
+                      "contact force: measured (c_s(p) the reduction fitted to the skin samples, "
+                      "<label>_skin_compliance.csv; rigid sections without it), none (rigid "
+                      "sections), or a value in m/N");
       section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");
       section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
       section.declare("Maximum Newton iterations", "50", "per equilibrium");
@@ -80,6 +85,15 @@ namespace softchain::chain
     section.require(p.newton.tolerance > 0, "Newton tolerance", "must be positive");
     p.newton.contact_stiffness = section.get_double("Contact stiffness");
     section.require(p.newton.contact_stiffness > 0, "Contact stiffness", "must be positive");
+    const std::string skin = section.get("Skin compliance");
+    if (skin == "none")
+      p.newton.skin_compliance = 0.0;
+    else if (skin != "measured")
+      {
+        p.newton.skin_compliance = section.get_double("Skin compliance");
+        section.require(*p.newton.skin_compliance >= 0, "Skin compliance",
+                        "must be measured, none or a compliance >= 0 in m/N");
+      }
     p.newton.max_iterations = section.get_integer("Maximum Newton iterations");
     section.require(p.newton.max_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
     return p;

@@ -424,9 +424,10 @@ namespace softchain::chain
                            in_pressure(tip_frame[2], path, "rz of the tip")});
     }
 
-    // The links' compliance c(p) (LinkCompliance): one row per pressure, c
-    // finite and not negative; none if the file is missing or has no rows.
-    std::optional<PiecewiseLinear> read_link_compliance(const std::string &path)
+    // A compliance in pressure (the links' c(p), LinkCompliance; the
+    // sections' c_s(p), ChainContact's skin): one row per pressure, finite
+    // and not negative; none if the file is missing or has no rows.
+    std::optional<PiecewiseLinear> read_compliance(const std::string &path)
     {
       if (!std::filesystem::exists(path))
         return std::nullopt;
@@ -460,6 +461,7 @@ namespace softchain::chain
     pressure_torque_path_     = files.pressure_torque;
     link_geometry_path_       = files.link_geometry;
     link_compliance_path_     = files.link_compliance;
+    skin_compliance_path_     = files.skin_compliance;
     joint_law_path_           = files.joint_law;
   }
 
@@ -503,7 +505,10 @@ namespace softchain::chain
     if (in_pressure && std::filesystem::exists(link_geometry_path_))
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
     if (in_pressure)
-      joints.link_compliance = read_link_compliance(link_compliance_path_);
+      {
+        joints.link_compliance = read_compliance(link_compliance_path_);
+        joints.skin_compliance = read_compliance(skin_compliance_path_);
+      }
     if (in_pressure && std::filesystem::exists(joint_law_path_) && CsvTable::read(joint_law_path_).n_rows() > 0)
       joints.force_law = read_force_law(joint_law_path_, n);
     if (twist_axes)

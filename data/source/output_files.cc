@@ -23,6 +23,7 @@ namespace softchain::data
     pressure_torque    = stem + "_pressure_torque.csv";
     link_geometry      = stem + "_link_geometry.csv";
     link_compliance    = stem + "_link_compliance.csv";
+    skin_compliance    = stem + "_skin_compliance.csv";
   }
 
   std::string contact_forces_file(const std::string &output_directory)

@@ -41,6 +41,7 @@ namespace softchain::reduction
     , rest_(rest_sample(mesh), mesh, geometry_, method)
     , samples_(reduce_all(converged_samples, mesh, geometry_, method))
     , stiffness_(samples_, parameters, geometry_.n_joints())
+    , skin_compliance_(converged_samples, samples_, rest_, geometry_, mesh, parameters)
   {}
 
   std::string MethodReduction::label() const

@@ -33,6 +33,9 @@ namespace softchain::reduction
       section.declare("Chord roles", "chord",
                       "sample roles (tip forces along the base-tip chord) feeding the links' "
                       "compliance c(p)");
+      section.declare("Skin roles", "skin",
+                      "sample roles (forces pressing the palm along its normal) feeding the "
+                      "sections' compliance c_s(p)");
       section.declare("Force samples per fit", "1",
                       "k_psi(p), k_theta(p) and the bending samples' k_phi(p) are fitted to the "
                       "lightest this many force samples per pressure that turn the joint "
@@ -103,6 +106,7 @@ namespace softchain::reduction
     p.torsion_roles  = section.get_list("Torsion roles");
     p.bending_roles  = section.get_list("Bending roles");
     p.chord_roles    = section.get_list("Chord roles");
+    p.skin_roles     = section.get_list("Skin roles");
     p.force_samples_per_fit = section.get_integer("Force samples per fit");
     section.require(p.force_samples_per_fit >= 0, "Force samples per fit", "must be >= 0");
     p.plots          = section.get_bool("Plots");

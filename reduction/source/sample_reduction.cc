@@ -69,6 +69,8 @@ namespace softchain::reduction
           parent = frames[i].rotation;
         link_rotations.push_back(parent);
       }
+    link_rotations_ = link_rotations;
+    joint_centres_  = centres;
     if (!mesh.tip_nodes.empty())
       {
         const data::TipPose tip =
@@ -87,10 +89,24 @@ namespace softchain::reduction
   //   U_1 = J_1,   U_i+1 = U_i + R_i^T (J_i+1 - J_i)   (J_n+1 = T),
   // and the tip face's frame R_T (TipPoseFit) in the last link's frame,
   // Q_T = R_n^T R_T, kept as its rotation vector.
+  Eigen::Vector3d SampleReduction::carried_from(const SampleReduction &pressure_state, const std::size_t link,
+                                                const Eigen::Vector3d &y_p) const
+  {
+    const auto &U_p = pressure_state.link_geometry_;
+    if (U_p.size() != link_geometry_.size() || link + 1 >= U_p.size())
+      throw std::invalid_argument("SampleReduction: samples " + id_ + " and " + pressure_state.id_ +
+                                  " have no link geometry of the same joints");
+    Eigen::Vector3d x = U_p.front();
+    for (std::size_t i = 0; i < link; ++i)
+      x += link_rotations_[i] * (U_p[i + 1] - U_p[i]);
+    const Eigen::Vector3d offset =
+      pressure_state.link_rotations_[link].transpose() * (y_p - pressure_state.joint_centres_[link]);
+    return x + link_rotations_[link] * offset;
+  }
+
   void SampleReduction::set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
                                           const std::vector<Eigen::Matrix3d> &link_rotations)
   {
-    link_rotations_ = link_rotations;
     link_geometry_  = {deformed.front()};
     for (std::size_t i = 0; i + 1 < deformed.size(); ++i)
       link_geometry_.push_back(link_geometry_.back() +

@@ -157,6 +157,10 @@ namespace softchain::reduction
     joint_law_.table().write(files.joint_law);
     const LinkComplianceFit compliance(reduction_, parameters_);
     compliance.table().write(files.link_compliance);
-    return compliance.warnings();
+    reduction_.skin_compliance().table().write(files.skin_compliance);
+    std::vector<std::string> warnings = compliance.warnings();
+    for (const std::string &w : reduction_.skin_compliance().warnings())
+      warnings.push_back(w);
+    return warnings;
   }
 } // namespace softchain::reduction

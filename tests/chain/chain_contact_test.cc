@@ -119,21 +119,68 @@ TEST_CASE("a joint bent onto a table: the penalty model's closed form and the ex
   CHECK(std::abs(force - exact) / exact > 0.1 * ratio); // the penalty is felt, and measured
 }
 
+TEST_CASE("a joint bent onto a table through a compliant skin: the closed form of the penalty in "
+          "series with the skin")
+{
+  // The point x = R(phi) (l e_x + s e_y) touches the plane y = -h with gap
+  // g = l sin(phi) + s cos(phi) + h. The skin's equilibrium s / c = -k_c g
+  // cos(phi) gives s and g in closed form; the joint's, k phi - tau + k_c g
+  // x_x = 0 with x_x = l cos(phi) - s sin(phi), is solved by bisection.
+  const double a = 0.1, l = a / 2, k = 0.1, tau = -0.08, h = 0.02, k_c = 1e5, c = 2e-3;
+  ChainModel   model = uniform_finger(1, a, {1.0, 1.0, k}, {0.0, 0.0, tau});
+  model.set_collision_surface(CollisionSurface({0}, {{0.0, {Eigen::Vector3d(l, 0, 0)}}}, 1));
+  EquilibriumSettings settings;
+  settings.contact_stiffness = k_c;
+  settings.skin_compliance   = c;
+  ChainEquilibrium  solver(model, settings);
+  const Equilibrium e = solver.solve(ChainLoad{1.0, {}, {plane(-h)}});
+  REQUIRE(e.converged);
+
+  const auto gap = [&](double phi) {
+    return (l * std::sin(phi) + h) / (1.0 + k_c * c * std::pow(std::cos(phi), 2));
+  };
+  const auto shift = [&](double phi) { return -k_c * c * std::cos(phi) * gap(phi); };
+  const auto f     = [&](double phi) {
+    return k * phi - tau + k_c * gap(phi) * (l * std::cos(phi) - shift(phi) * std::sin(phi));
+  };
+  double low = tau / k, high = 0.0;
+  for (int i = 0; i < 200; ++i)
+    (f(0.5 * (low + high)) < 0 ? low : high) = 0.5 * (low + high);
+  const double phi = 0.5 * (low + high);
+  CHECK(e.angles[2] == Approx(phi).epsilon(1e-9));
+  const auto wrench = solver.contact().obstacle_wrenches();
+  REQUIRE(wrench.size() == 1);
+  CHECK(wrench[0].force[1] == Approx(k_c * gap(phi)).epsilon(1e-8));
+  // The skin gives inwards (s > 0, along +y of the link) by c times the
+  // force along d, 1.4 mm here, far more than the penetration (~1 um): the
+  // skin, not the penalty, sets the contact's compliance.
+  std::vector<ChainContact::Skin> skins;
+  solver.contact().skins(solver.pose(), 3, skins);
+  REQUIRE(skins.size() == 1);
+  CHECK(skins[0].shift == Approx(shift(phi)).epsilon(1e-8));
+  CHECK(skins[0].shift > 100.0 * -gap(phi));
+}
+
 TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangent = central differences")
 {
   const int n = 4;
   const double a = 0.02;
   ChainModel model = uniform_finger(n, a, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
   model.set_collision_surface(palm_points(n, a, 3, 0.004, 0.006));
+  // Rigid sections, and compliant ones whose give (k_s = 100 N/m per link)
+  // is of the penetrations' size.
+  for (const double skin : {0.0, 0.01})
   for (const auto &obstacles : {std::vector{plane(-0.012)},
                                 std::vector{cylinder({0.05, -0.016, 0.0}, 0.008)}})
     {
+      INFO("skin compliance " << skin << " m/N, " << obstacles.front().shape);
       // Near the equilibrium, where the contact forces are those of the
       // problem (far from it the penalty's are huge), turned out of plane;
       // a soft penalty, so that the penetrations (~1 mm) dwarf the
       // perturbation and the differences' steps.
       EquilibriumSettings soft;
       soft.contact_stiffness = 100.0;
+      soft.skin_compliance   = skin;
       soft.woodbury_rows_per_angle = 1.0; // the Woodbury step, checked below
       ChainEquilibrium  solver(model, soft);
       const Equilibrium e = solver.solve(ChainLoad{1e4, {}, obstacles});
@@ -154,6 +201,18 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       const Eigen::MatrixXd H = solver.tangent(q);
       const Eigen::MatrixXd D = testing::central_differences(solver, q, 1e-7);
       CHECK((H - D).lpNorm<Eigen::Infinity>() < 1e-6 * H.lpNorm<Eigen::Infinity>());
+      // Each skin balances its touches' force along d: s_b = c f_b . d_b.
+      std::vector<ChainContact::Skin> skins;
+      solver.contact().skins(solver.pose(), 3 * n, skins);
+      CHECK(skins.size() == (skin > 0.0 ? std::size_t(n) : 0));
+      for (const auto &s : skins)
+        {
+          double along = 0.0;
+          for (const auto &t : touches)
+            if (t.link == s.link)
+              along += t.force.dot(s.direction);
+          CHECK(s.shift == Approx(skin * along).margin(1e-12));
+        }
       // Without the curvature rows the cylinder's tangent would be off by
       // about f / R per touching point: checked to be seen.
       if (obstacles.front().shape == "cylinder")

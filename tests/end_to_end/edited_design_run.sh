@@ -22,6 +22,7 @@ sed -e "s/^\( *set Name *=\).*/\1 my_finger/" \
     -e "s/^\( *set Bending tip forces *=\).*/\1 0.1/" \
     -e "s/^\( *set Force sample pressures *=\).*/\1 0/" \
     -e "s/^\( *set Chord samples *=\).*/\1 0 : tip : 0.5,0,0/" \
+    -e "s/^\( *set Skin samples *=\).*/\1 0 : 0.055,0,0 : palm 0.1/" \
     -e "s/^\( *set Validation samples *=\).*/\1 7.5e3/" \
     -e "s/^\( *set Contact samples *=\).*/\1 table : 10e3 ; cylinder : 10e3/" \
     -e "s/^\( *set Tip angle *=\).*/\1 0/" \

@@ -146,26 +146,27 @@ TEST_CASE("'chord F' leaves the chord sample to the sweep, which needs the press
                                                       "0 : tip : chord 0.25 ; 2e4 : tip : 0.3,0,0\n");
   // The listed force is a sample now; the two 'chord F' wait for their chord.
   REQUIRE(set.samples.size() == 2);
-  REQUIRE(set.chord_requests.size() == 2);
-  const auto &request = set.chord_requests[0];
+  REQUIRE(set.measured_requests.size() == 2);
+  const auto &request = set.measured_requests[0];
   CHECK(request.pressure == 2e4);
-  CHECK(request.force == 0.5);
-  CHECK(request.point == data::Point3{{0.08, 0, 0}});
+  CHECK(request.forces == std::vector<double>{0.5});
+  CHECK(request.points == std::vector<data::Point3>{{{0.08, 0, 0}}});
   CHECK(request.label == "chord 1");
-  CHECK(set.chord_requests[1].pressure == 0); // the finger at rest: no pressure sample needed
+  CHECK(request.role() == "chord");
+  CHECK(set.measured_requests[1].pressure == 0); // the finger at rest: no pressure sample needed
   REQUIRE(set.inflation_at(2e4));
   CHECK(set.samples[*set.inflation_at(2e4)].actuation.role == "pressure");
   CHECK_FALSE(set.inflation_at(3e4));
 
   // The sample made from a chord: F along it, its id from the force.
-  const Sample sample = SampleSet::chord_sample(request, {{0.6, -0.8, 0}}, "h");
+  const Sample sample = SampleSet::measured_sample(request, {{{0.6, -0.8, 0}}}, "h");
   CHECK(sample.actuation.role == "chord");
   CHECK(sample.label == "chord 1");
   REQUIRE(sample.actuation.point_forces.size() == 1);
   CHECK(sample.actuation.point_forces[0].force[0] == Approx(0.3));
   CHECK(sample.actuation.point_forces[0].force[1] == Approx(-0.4));
   CHECK(sample.id == data::sample_id("h", sample.actuation));
-  CHECK(sample.id != SampleSet::chord_sample(request, {{0.8, -0.6, 0}}, "h").id);
+  CHECK(sample.id != SampleSet::measured_sample(request, {{{0.8, -0.6, 0}}}, "h").id);
 
   CHECK_THROWS_WITH(read_samples("chord_without_inflation", "  set Pressure sweep = 1e4\n"
                                                             "  set Chord samples = 2e4 : tip : chord 0.5\n"),
@@ -177,6 +178,35 @@ TEST_CASE("'chord F' leaves the chord sample to the sweep, which needs the press
   CHECK_THROWS_WITH(read_samples("chord_in_validation", "  set Pressure sweep = 2e4\n"
                                                         "  set Validation samples = 2e4 : tip : chord 0.5\n"),
                     Catch::Contains("Chord samples only"));
+}
+
+TEST_CASE("'palm F' leaves a skin sample to the sweep: one force per point along the palm's normal")
+{
+  const SampleSet set =
+    read_samples("palm_keyword", "  set Pressure sweep = 2e4\n"
+                                 "  set Skin samples = 2e4 : 0.05,0,-0.004 : palm 0.1 : 0.05,0,0.004 : palm 0.2\n");
+  REQUIRE(set.samples.size() == 1); // the pressure sample; the skin sample waits for its normals
+  REQUIRE(set.measured_requests.size() == 1);
+  const auto &request = set.measured_requests[0];
+  CHECK(request.role() == "skin");
+  CHECK(request.label == "skin 1");
+  CHECK(request.pressure == 2e4);
+  CHECK(request.points == std::vector<data::Point3>{{{0.05, 0, -0.004}}, {{0.05, 0, 0.004}}});
+  CHECK(request.forces == std::vector<double>{0.1, 0.2});
+  // Each force along its own measured normal.
+  const Sample sample = SampleSet::measured_sample(request, {{{0, 1, 0}}, {{0.6, 0.8, 0}}}, "h");
+  CHECK(sample.actuation.role == "skin");
+  REQUIRE(sample.actuation.point_forces.size() == 2);
+  CHECK(sample.actuation.point_forces[0].force == data::Point3{{0, 0.1, 0}});
+  CHECK(sample.actuation.point_forces[1].force[0] == Approx(0.12));
+  CHECK(sample.actuation.point_forces[1].force[1] == Approx(0.16));
+
+  CHECK_THROWS_WITH(read_samples("palm_not_a_force", "  set Pressure sweep = 2e4\n"
+                                                     "  set Skin samples = 2e4 : 0.05,0,0 : 0,0.1,0\n"),
+                    Catch::Contains("sample 'skin 1'") && Catch::Contains("is not 'palm F'"));
+  CHECK_THROWS_WITH(read_samples("palm_without_inflation", "  set Pressure sweep = 1e4\n"
+                                                           "  set Skin samples = 2e4 : 0.05,0,0 : palm 0.1\n"),
+                    Catch::Contains("'palm' at 20000 Pa") && Catch::Contains("'Pressure sweep'"));
 }
 
 TEST_CASE("contact samples carry their obstacle: frictionless ones form one chain and with friction one each")

@@ -87,29 +87,40 @@ namespace softchain::fem
     static SampleSet read(const data::PrmFile &prm, const TipFace &tip,
                           const std::string &design_hash, const geometry::ContactScene &contact);
 
-    // A chord sample whose force is 'chord F': F newtons along the base-tip
-    // chord of the pressure-only state at its pressure, known once that
-    // state is (SampleSweep adds the sample then).
-    struct ChordRequest
+    // A sample whose forces' directions are measured on the pressure-only
+    // state at its pressure, known once that state is (SampleSweep adds the
+    // sample then): a chord sample's 'chord F' (F newtons along the base-tip
+    // chord, role chord), or a skin sample's 'palm F' at each of its points
+    // (F newtons along the palm's inward normal there, role skin).
+    struct MeasuredForceRequest
     {
-      double       pressure = 0;
-      data::Point3 point{};
-      double       force = 0;
-      std::string  label; // "chord 2"
-      std::string  where; // file, parameter and sample, for messages
+      enum class Direction
+      {
+        chord,
+        palm_normal
+      };
+      double                    pressure = 0;
+      std::vector<data::Point3> points;
+      std::vector<double>       forces; // N, one per point
+      Direction                 direction = Direction::chord;
+      std::string               label; // "chord 2", "skin 1"
+      std::string               where; // file, parameter and sample, for messages
+      std::string role() const { return direction == Direction::chord ? "chord" : "skin"; }
     };
 
     // The pressure-controlled sample at `pressure` without forces, if listed.
     std::optional<std::size_t> inflation_at(double pressure) const;
-    // The sample of `request` with its force along `chord` (a unit vector);
-    // its id derives from the design hash and that force, so that it is
-    // cached as long as the state it was measured on is.
-    static Sample chord_sample(const ChordRequest &request, const data::Point3 &chord,
-                               const std::string &design_hash);
+    // The sample of `request` with its forces along `directions` (unit
+    // vectors, one per point); its id derives from the design hash and those
+    // forces, so that it is cached as long as the state they were measured
+    // on is.
+    static Sample measured_sample(const MeasuredForceRequest &request,
+                                  const std::vector<data::Point3> &directions,
+                                  const std::string &design_hash);
 
     std::vector<Sample>                   samples; // chain after chain
     std::vector<std::vector<std::size_t>> chains;  // indices into samples
-    std::vector<ChordRequest>             chord_requests; // in the order listed
+    std::vector<MeasuredForceRequest>     measured_requests; // in the order listed
     unsigned int                          sample_groups = 1;
     bool                                  continuation  = true;
   };

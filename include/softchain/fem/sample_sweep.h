@@ -74,15 +74,17 @@ namespace softchain::fem
     std::optional<std::size_t> inflated_start(const std::vector<std::size_t> &chain,
                                               const std::vector<std::size_t> &indices,
                                               const Records                  &known) const;
-    // The chains of the chord samples, by pressure and point.
-    using ChordChains = std::map<std::string, std::size_t>;
-    void                        solve_chord_samples(Records &known, Summary &summary);
-    std::optional<data::Point3> measured_chord(const std::optional<std::size_t> &inflation,
-                                               const Records                    &known);
-    void                        chain_chord_sample(std::size_t index, const SampleSet::ChordRequest &request,
-                                                   const std::optional<std::size_t> &inflation, Records &known,
-                                                   ChordChains &chains);
-    data::Point3                chord_direction(const data::SampleRecord *record);
+    // The chains of the chord and skin samples, by role, pressure and points.
+    using MeasuredChains = std::map<std::string, std::size_t>;
+    void solve_measured_samples(Records &known, Summary &summary);
+    std::optional<std::vector<data::Point3>>
+         measured_directions(const SampleSet::MeasuredForceRequest &request,
+                             const std::optional<std::size_t> &inflation, const Records &known);
+    void chain_measured_sample(std::size_t index, const SampleSet::MeasuredForceRequest &request,
+                               const std::optional<std::size_t> &inflation, Records &known,
+                               MeasuredChains &chains);
+    data::Point3 chord_direction(const data::SampleRecord *record);
+    data::Point3 palm_normal(const data::SampleRecord *record, const data::Point3 &X);
     std::string                         run_protocol(Records &known, Summary &summary);
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
     // The database's mesh (and the tip's fit to it), read once; rank 0.

@@ -38,6 +38,11 @@ namespace softchain::fem
                       "base-tip chord of the pressure-only state at p, given as x,y,z or as "
                       "'chord F' (F newtons along that chord, found by the sweep); the reduction "
                       "fits the links' compliance to them (reduction/README.md)");
+      section.declare("Skin samples", "",
+                      "p : point : palm F [: point : palm F ...] ; ... (role skin): forces of F "
+                      "newtons pressing each point (x,y,z on the palm) along the palm's inward "
+                      "normal of the pressure-only state at p, found by the sweep; the reduction "
+                      "fits the sections' compliance to them (reduction/README.md)");
       section.declare("Validation samples", "",
                       "p : point : force [: point : force] ; ...; a point is x,y,z, tip (the "
                       "force point) or tip+arm, tip-arm (the torsion couple's points)");
@@ -199,38 +204,53 @@ namespace softchain::fem
       return samples;
     }
 
-    // "chord F" (a chord entry's force): F, else nothing.
-    std::optional<double> chord_force(const std::string &text, const std::string &where)
+    // "chord F" or "palm F" (`keyword` F): F, else nothing.
+    std::optional<double> measured_force(const std::string &text, const std::string &keyword,
+                                         const std::string &where)
     {
       std::istringstream in(text);
       std::string        word, rest;
       double             force = 0;
-      if (!(in >> word) || word != "chord")
+      if (!(in >> word) || word != keyword)
         return std::nullopt;
       if (!(in >> force) || (in >> rest) || !(force > 0))
-        throw data::InputError(where + ": '" + text + "' is not 'chord F' with a force F > 0 in N");
+        throw data::InputError(where + ": '" + text + "' is not '" + keyword +
+                               " F' with a force F > 0 in N");
       return force;
     }
 
-    // One chord entry "p : point : chord F": its request, checked.
-    SampleSet::ChordRequest chord_request(const std::vector<std::string> &fields, const double force,
-                                          const data::Point3 &tip, const double arm,
-                                          const std::string &name, const std::string &where)
+    // One entry "p : point : chord F" of Chord samples or "p : point : palm F
+    // [: point : palm F ...]" of Skin samples: its request, checked.
+    SampleSet::MeasuredForceRequest measured_request(const std::vector<std::string> &fields,
+                                                     const SampleSet::MeasuredForceRequest::Direction direction,
+                                                     const data::Point3 &tip, const double arm,
+                                                     const std::string &name, const std::string &where)
     {
-      if (fields.size() != 3)
+      const bool        chord   = direction == SampleSet::MeasuredForceRequest::Direction::chord;
+      const std::string keyword = chord ? "chord" : "palm";
+      if (chord && fields.size() != 3)
         throw data::InputError(where + ": a force 'chord F' takes one point: 'p : point : chord F'");
-      SampleSet::ChordRequest r;
-      r.pressure = number(fields[0], where);
-      r.point    = listed_point(fields[1], tip, arm, where);
-      r.force    = force;
-      r.label    = name;
-      r.where    = where;
+      if (fields.size() < 3 || fields.size() % 2 == 0)
+        throw data::InputError(where + ": needs 'p' followed by 'point : " + keyword + " F' pairs");
+      SampleSet::MeasuredForceRequest r;
+      r.pressure  = number(fields[0], where);
+      r.direction = direction;
+      r.label     = name;
+      r.where     = where;
+      for (std::size_t k = 1; k < fields.size(); k += 2)
+        {
+          const auto force = measured_force(fields[k + 1], keyword, where);
+          if (!force)
+            throw data::InputError(where + ": '" + fields[k + 1] + "' is not '" + keyword + " F'");
+          r.points.push_back(listed_point(fields[k], tip, arm, where));
+          r.forces.push_back(*force);
+        }
       return r;
     }
 
     std::vector<Sample> listed_samples(const data::PrmSection &s, const SampleSet::TipFace &tip,
                                        const geometry::ContactScene        &contact,
-                                       std::vector<SampleSet::ChordRequest> &chord_requests)
+                                       std::vector<SampleSet::MeasuredForceRequest> &measured_requests)
     {
       const data::Point3 at =
         s.get("Force point").empty() ? tip.centre : triple(s.get("Force point"), s.describe("Force point"));
@@ -263,10 +283,13 @@ namespace softchain::fem
             samples.push_back(
               sample_of("bending", p, {{at, {{0, -f, 0}}}}, label("bending", f, "N", p)));
         }
-      // Chord samples (the reduction's, for the links' compliance), then the
-      // validation samples (held out): the same syntax, each of its role.
+      // Chord samples (the reduction's, for the links' compliance), skin
+      // samples (for the sections' compliance), then the validation samples
+      // (held out): the same syntax, each of its role.
       const std::pair<std::string, std::string> listed[] = {{"chord", "Chord samples"},
+                                                            {"skin", "Skin samples"},
                                                             {"validation", "Validation samples"}};
+      using Direction = SampleSet::MeasuredForceRequest::Direction;
       for (const auto &[role, parameter] : listed)
         {
           const auto entries = split(s.get(parameter), ';');
@@ -276,11 +299,14 @@ namespace softchain::fem
                 const std::string name = role + ' ' + std::to_string(k + 1);
                 const std::string where = s.describe(parameter) + ", sample '" + name + "'";
                 const auto        fields = split(entries[k], ':');
-                const auto        chord  = fields.size() > 2 ? chord_force(fields[2], where) : std::nullopt;
+                const auto chord = fields.size() > 2 ? measured_force(fields[2], "chord", where) : std::nullopt;
                 if (chord && role != "chord")
                   throw data::InputError(where + ": 'chord F' is a force of Chord samples only");
-                if (chord)
-                  chord_requests.push_back(chord_request(fields, *chord, at, arm, name, where));
+                if (role == "skin")
+                  measured_requests.push_back(
+                    measured_request(fields, Direction::palm_normal, at, arm, name, where));
+                else if (chord)
+                  measured_requests.push_back(measured_request(fields, Direction::chord, at, arm, name, where));
                 else
                   samples.push_back({listed_actuation(role, entries[k], at, arm, where), name, ""});
               }
@@ -323,7 +349,7 @@ namespace softchain::fem
     std::map<std::string, std::size_t>    chain_of;
     std::vector<std::vector<Sample>>      chains;
     std::map<std::string, std::string>    label_of_id;
-    for (auto &sample : listed_samples(section, tip, contact, set.chord_requests))
+    for (auto &sample : listed_samples(section, tip, contact, set.measured_requests))
       {
         sample.id = data::sample_id(design_hash, sample.actuation);
         if (!label_of_id.emplace(sample.id, sample.label).second)
@@ -349,9 +375,11 @@ namespace softchain::fem
       }
     if (set.samples.empty())
       throw data::InputError(prm.path() + ": subsection 'Samples' lists no sample");
-    for (const auto &request : set.chord_requests)
+    for (const auto &request : set.measured_requests)
       if (request.pressure != 0 && !set.inflation_at(request.pressure))
-        throw data::InputError(request.where + ": 'chord' at " + data::canonical(request.pressure) +
+        throw data::InputError(request.where + ": '" +
+                               (request.role() == "chord" ? std::string("chord") : std::string("palm")) +
+                               "' at " + data::canonical(request.pressure) +
                                " Pa needs the finger inflated to that pressure alone: add it to "
                                "'Pressure sweep'");
     return set;
@@ -368,13 +396,16 @@ namespace softchain::fem
     return std::nullopt;
   }
 
-  Sample SampleSet::chord_sample(const ChordRequest &request, const data::Point3 &chord,
-                                 const std::string &design_hash)
+  Sample SampleSet::measured_sample(const MeasuredForceRequest &request,
+                                    const std::vector<data::Point3> &directions,
+                                    const std::string &design_hash)
   {
-    Sample sample = sample_of("chord", request.pressure,
-                              {{request.point, {{request.force * chord[0], request.force * chord[1],
-                                                 request.force * chord[2]}}}},
-                              request.label);
+    std::vector<data::PointForce> forces;
+    for (std::size_t k = 0; k < request.points.size(); ++k)
+      forces.push_back({request.points[k],
+                        {{request.forces[k] * directions[k][0], request.forces[k] * directions[k][1],
+                          request.forces[k] * directions[k][2]}}});
+    Sample sample = sample_of(request.role(), request.pressure, std::move(forces), request.label);
     sample.id     = data::sample_id(design_hash, sample.actuation);
     return sample;
   }

@@ -137,8 +137,8 @@ namespace softchain::fem
     std::vector<std::size_t> listed(set.samples.size());
     std::iota(listed.begin(), listed.end(), 0);
     solve_missing(listed, known, summary, set.continuation);
-    if (!set.chord_requests.empty())
-      solve_chord_samples(known, summary);
+    if (!set.measured_requests.empty())
+      solve_measured_samples(known, summary);
     if (world_rank() == 0) // a listing of an earlier protocol must not outlive it
       fs::remove(protocol_listing());
     if (protocol.enabled())
@@ -249,65 +249,88 @@ namespace softchain::fem
     return best;
   }
 
-  // The chord samples given as 'chord F' (SampleSet::ChordRequest): each
-  // force along the chord from the base face's centroid to the tip's
-  // position (chord_direction) in the converged pressure sample at its
-  // pressure, or in the finger at rest at p = 0. The samples at one pressure
-  // and point form a chain by increasing force, from the pressure sample
-  // (whose state they share: only the force ramps). A chord whose pressure
-  // sample failed is reported failed, not solved.
-  void SampleSweep::solve_chord_samples(Records &known, Summary &summary)
+  // The samples whose forces' directions the pressure-only state gives
+  // (SampleSet::MeasuredForceRequest): 'chord F' along the chord from the
+  // base face's centroid to the tip's position (chord_direction), 'palm F'
+  // along the palm's inward normal at the force's point (palm_normal), in the
+  // converged pressure sample at its pressure, or in the finger at rest at
+  // p = 0. The samples at one pressure and points form a chain by increasing
+  // force, from the pressure sample (whose state they share: only the forces
+  // ramp). A sample whose pressure sample failed is reported failed, not
+  // solved.
+  void SampleSweep::solve_measured_samples(Records &known, Summary &summary)
   {
-    ChordChains              chains;
+    MeasuredChains           chains;
     std::vector<std::size_t> added;
-    for (const auto &request : set.chord_requests)
+    for (const auto &request : set.measured_requests)
       {
-        const auto inflation = set.inflation_at(request.pressure);
-        const auto chord     = measured_chord(inflation, known);
-        if (!chord)
+        const auto inflation  = set.inflation_at(request.pressure);
+        const auto directions = measured_directions(request, inflation, known);
+        if (!directions)
           {
             summary.failed.push_back(request.label + ": not solved: the pressure sample at " +
                                      data::canonical(request.pressure) +
-                                     " Pa, whose chord gives the force's direction, did not converge");
+                                     " Pa, which gives the forces' directions, did not converge");
             continue;
           }
         if (world_rank() == 0)
-          std::cout << request.label << ": " << request.force << " N along the base-tip chord ("
-                    << (*chord)[0] << ", " << (*chord)[1] << ", " << (*chord)[2] << ") at "
-                    << request.pressure << " Pa" << std::endl;
+          {
+            std::cout << request.label << ": along the "
+                      << (request.role() == "chord" ? "base-tip chord" : "palm's inward normal") << " at "
+                      << request.pressure << " Pa:";
+            for (std::size_t k = 0; k < directions->size(); ++k)
+              std::cout << (k > 0 ? "," : "") << ' ' << request.forces[k] << " N (" << (*directions)[k][0]
+                        << ", " << (*directions)[k][1] << ", " << (*directions)[k][2] << ')';
+            std::cout << std::endl;
+          }
         added.push_back(set.samples.size());
-        set.samples.push_back(SampleSet::chord_sample(request, *chord, hash));
-        chain_chord_sample(added.back(), request, inflation, known, chains);
+        set.samples.push_back(SampleSet::measured_sample(request, *directions, hash));
+        chain_measured_sample(added.back(), request, inflation, known, chains);
       }
     solve_missing(added, known, summary);
   }
 
-  // Rank 0 measures the chord of the pressure sample `inflation` (none: the
-  // finger at rest) if it converged, and tells every rank.
-  std::optional<data::Point3> SampleSweep::measured_chord(const std::optional<std::size_t> &inflation,
-                                                          const Records &known)
+  // Rank 0 measures the directions of `request` on the pressure sample
+  // `inflation` (none: the finger at rest) if it converged, and tells every
+  // rank.
+  std::optional<std::vector<data::Point3>>
+  SampleSweep::measured_directions(const SampleSet::MeasuredForceRequest &request,
+                                   const std::optional<std::size_t> &inflation, const Records &known)
   {
-    std::vector<double> chord(4, 0.0); // measured (1 or 0), then the chord
+    std::vector<double> values(1 + 3 * request.points.size(), 0.0); // measured (1 or 0), then the directions
     if (world_rank() == 0 &&
         (!inflation || (known.count(*inflation) > 0 && known.at(*inflation).converged())))
       {
-        const auto c = chord_direction(inflation ? &known.at(*inflation) : nullptr);
-        chord        = {1.0, c[0], c[1], c[2]};
+        const data::SampleRecord *record = inflation ? &known.at(*inflation) : nullptr;
+        values[0]                        = 1.0;
+        for (std::size_t k = 0; k < request.points.size(); ++k)
+          {
+            const data::Point3 d = request.direction == SampleSet::MeasuredForceRequest::Direction::chord
+                                     ? chord_direction(record)
+                                     : palm_normal(record, request.points[k]);
+            std::copy(d.begin(), d.end(), values.begin() + 1 + 3 * k);
+          }
       }
-    chord = Utilities::MPI::broadcast(MPI_COMM_WORLD, chord, 0);
-    if (chord[0] == 0.0)
+    values = Utilities::MPI::broadcast(MPI_COMM_WORLD, values, 0);
+    if (values[0] == 0.0)
       return std::nullopt;
-    return data::Point3{{chord[1], chord[2], chord[3]}};
+    std::vector<data::Point3> directions(request.points.size());
+    for (std::size_t k = 0; k < directions.size(); ++k)
+      directions[k] = {{values[1 + 3 * k], values[2 + 3 * k], values[3 + 3 * k]}};
+    return directions;
   }
 
-  // Puts the chord sample `index` into the chain of its pressure and point
+  // Puts the sample `index` into the chain of its role, pressure and points
   // (a new one starts at the pressure sample `inflation`), by increasing force.
-  void SampleSweep::chain_chord_sample(const std::size_t index, const SampleSet::ChordRequest &request,
-                                       const std::optional<std::size_t> &inflation, Records &known,
-                                       ChordChains &chains)
+  void SampleSweep::chain_measured_sample(const std::size_t index,
+                                          const SampleSet::MeasuredForceRequest &request,
+                                          const std::optional<std::size_t> &inflation, Records &known,
+                                          MeasuredChains &chains)
   {
     std::ostringstream key;
-    key << request.pressure << ' ' << request.point[0] << ' ' << request.point[1] << ' ' << request.point[2];
+    key << request.role() << ' ' << request.pressure;
+    for (const auto &point : request.points)
+      key << ' ' << point[0] << ' ' << point[1] << ' ' << point[2];
     if (!chains.count(key.str()))
       {
         chains[key.str()] = set.chains.size();
@@ -337,6 +360,41 @@ namespace softchain::fem
                                           : tip_fit->fit(data::select_nodes(mesh.X, mesh.tip_nodes)).position;
     const Eigen::Vector3d chord = (tip - data::base_face_centroid(mesh)).normalized();
     return {{chord[0], chord[1], chord[2]}};
+  }
+
+  // The palm's inward normal (+y at rest, docs/conventions.md) at reference
+  // point X deformed as in `record` (none: the finger at rest): the normal
+  // F^-T e_y of the affine map F that fits the deformation of the mesh nodes
+  // nearest to X (least squares over 20 of them, enough to span 3D on a
+  // surface of hexahedra or tetrahedra).
+  data::Point3 SampleSweep::palm_normal(const data::SampleRecord *record, const data::Point3 &X)
+  {
+    if (!record)
+      return {{0.0, 1.0, 0.0}};
+    const data::MeshRecord        &mesh = database_mesh();
+    const Eigen::Vector3d          point(X[0], X[1], X[2]);
+    std::vector<std::pair<double, std::size_t>> nearest;
+    for (std::size_t i = 0; i < mesh.X.size(); ++i)
+      nearest.emplace_back((Eigen::Vector3d(mesh.X[i][0], mesh.X[i][1], mesh.X[i][2]) - point).squaredNorm(), i);
+    const std::size_t n = std::min<std::size_t>(20, nearest.size());
+    std::partial_sort(nearest.begin(), nearest.begin() + n, nearest.end());
+    Eigen::Vector3d mean_X = Eigen::Vector3d::Zero(), mean_x = Eigen::Vector3d::Zero();
+    const auto      at = [](const data::Point3 &p) { return Eigen::Vector3d(p[0], p[1], p[2]); };
+    for (std::size_t k = 0; k < n; ++k)
+      {
+        mean_X += at(mesh.X[nearest[k].second]) / double(n);
+        mean_x += at(record->x[nearest[k].second]) / double(n);
+      }
+    Eigen::Matrix3d XX = Eigen::Matrix3d::Zero(), xX = Eigen::Matrix3d::Zero();
+    for (std::size_t k = 0; k < n; ++k)
+      {
+        const Eigen::Vector3d dX = at(mesh.X[nearest[k].second]) - mean_X;
+        XX += dX * dX.transpose();
+        xX += (at(record->x[nearest[k].second]) - mean_x) * dX.transpose();
+      }
+    const Eigen::Matrix3d F      = xX * XX.inverse();
+    const Eigen::Vector3d normal = F.inverse().transpose().col(1).normalized();
+    return {{normal[0], normal[1], normal[2]}};
   }
 
   // The paper's validation protocol (TipMotionProtocol): the inflation to the

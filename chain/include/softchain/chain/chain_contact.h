@@ -24,6 +24,22 @@
 // friction is refused (std::invalid_argument naming it): the chain's contact
 // has none, and a frictionless answer would be silently wrong. A moving
 // obstacle stands at the end of its motion (a static problem).
+//
+// The section's compliance (optional, per link): a soft finger pressed on
+// its palm gives locally -- the palm plate bends into the cavity -- before
+// its joints turn. Link b's surface then carries a skin displacement s_b
+// along d_b = R_b e_y (the palm's inward normal, +y in the link frame,
+// docs/conventions.md), x_k = c_b + R_b (L_k + s_b e_y), held by a spring
+// of stiffness k_s = 1 / c_b:
+//     U_c(q) = min_s sum_b [1/2 k_s s_b^2 + sum_{k in b} 1/2 k_c <-g(x_k)>^2].
+// Each s_b is found exactly (a convex problem in one unknown) at every
+// update, so U_c stays a function of the angles, its gradient is that of
+// the touching points' forces at the displaced points (envelope theorem),
+// and its tangent is the rigid skin's minus one rank-one term per touching
+// link (the Schur complement of s_b):
+//     - u_b^T u_b / D_b,   u_b = sum_k k_c (a_k n_k^T J_k + g_k d^T H_g J_k + g_k (d x n_k)^T W_k),
+//     D_b = k_s + sum_k k_c (a_k^2 + g_k d^T H_g d),   a_k = n_k . d,
+// W_k the rows a_{i,alpha} of the joints up to link b (d turns with the link).
 #include <softchain/chain/collision_surface.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/geometry/contact_scene.h>
@@ -52,8 +68,10 @@ namespace softchain::chain
     // must outlive the contact; none: no contact). Throws
     // std::invalid_argument if there are obstacles but no surface, an
     // obstacle has friction, or the stiffness is not positive.
+    // `skin_compliance` [m/N] per link (empty or 0: a rigid section).
     void set(const CollisionSurface *surface, double pressure,
-             const std::vector<data::ObstacleRecord> &obstacles, double stiffness);
+             const std::vector<data::ObstacleRecord> &obstacles, double stiffness,
+             const std::vector<double> &skin_compliance = {});
     bool empty() const { return obstacles_.empty(); }
 
     // Finds the touching points at `pose` (sorted by link) and returns U_c.
@@ -79,6 +97,23 @@ namespace softchain::chain
     void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
                       Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
 
+    // A touching link's skin at the last update: its displacement s_b, the
+    // direction d_b (world), k_s, and the parts of u_b and D_b (header) that
+    // the touching points' penetrations g_k carry (t_b, e_b), which a Newton
+    // step's model adds to the rows a_k n_k^T J_k of the points it takes.
+    struct Skin
+    {
+      int                link      = 0;
+      Eigen::Vector3d    direction = Eigen::Vector3d::Zero();
+      double             shift = 0.0, stiffness = 0.0;
+      Eigen::RowVectorXd penetration_row; // t_b
+      double             penetration_curvature = 0.0; // e_b
+    };
+    void skins(const ChainPose &pose, int n_angles, std::vector<Skin> &skins) const;
+    bool has_skin() const { return !skin_compliance_.empty(); }
+    // d_b = R_b e_y of `link` at `pose`.
+    Eigen::Vector3d skin_direction(const ChainPose &pose, int link) const;
+
     // What each obstacle receives at the last update: the force [N] and its
     // moment about the origin [N m], world axes, in the obstacles' order.
     std::vector<data::ObstacleWrench> obstacle_wrenches() const;
@@ -86,6 +121,12 @@ namespace softchain::chain
     double max_penetration() const;
 
   private:
+    // s_b of one link from its points near the obstacles (at s = 0):
+    // E'(s) = k_s s + sum k_c <g_k(s)>- a_k(s) = 0, safeguarded Newton.
+    double skin_shift(const ChainPose &pose, int link, const std::vector<Touch> &near) const;
+    // The touch of surface point k of `link` against obstacle o at x, or
+    // false if x is outside.
+    bool touch_at(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
     // The rows of every touch, with or without the normal rows.
     void rows_of_touches(const ChainPose &pose, bool normals, int n_angles, Eigen::MatrixXd &rows,
                          Eigen::VectorXd &weights) const;
@@ -100,5 +141,7 @@ namespace softchain::chain
     std::vector<Eigen::Vector3d>    offsets_; // L_k(p)
     double                          stiffness_ = 0.0;
     std::vector<Touch>              touches_;
+    std::vector<double>             skin_compliance_; // c_b, m/N (empty: no skin)
+    std::vector<double>             skin_shift_;      // s_b at the last update
   };
 } // namespace softchain::chain

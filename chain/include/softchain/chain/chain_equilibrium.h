@@ -75,6 +75,10 @@ namespace softchain::chain
     int    max_iterations = 50;
     double max_step_angle = 1.5;   // rad per angle and Newton step
     double contact_stiffness = 1e5; // k_c of ChainContact, N/m per surface point
+    // The sections' compliance along each link's palm normal, m/N
+    // (ChainContact's skin; 0: rigid sections); none: the model's
+    // (ChainModel::skin_compliance).
+    std::optional<double> skin_compliance;
     // A contact step adds its r rows by Woodbury around H's O(n) factor while
     // r <= this fraction of the n angles, else to H's dense form
     // (ChainEquilibrium::woodbury_pays has the measurement).
@@ -141,6 +145,8 @@ namespace softchain::chain
                         const Eigen::VectorXd &free_residual, bool factored, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
     bool   woodbury_pays(Eigen::Index rows) const;
+    void   add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps, bool woodbury,
+                         Eigen::MatrixXd &Y, Eigen::VectorXd &b, Eigen::VectorXd &x);
     void   update_link_velocities();
     bool   update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active);
     void   limit_surface_motion();
@@ -174,6 +180,18 @@ namespace softchain::chain
     Eigen::MatrixXd           solved_rows_;     // H^-1 of the near and curvature rows
     std::vector<char>         solved_;          // which of them are solved
     Eigen::VectorXd           solved_residual_; // H^-1 r_f
+    // The skins of the step's model (ChainContact::Skin), the alignment
+    // a_c = n_c . d_b of each candidate, and per skin row the prediction of
+    // its displacement's change, -(gamma_b + u_b d) / D_b.
+    std::vector<ChainContact::Skin> skins_;
+    Eigen::VectorXd           alignment_;
+    struct SkinPrediction
+    {
+      int                link;
+      double             gamma, D;
+      Eigen::RowVectorXd u;
+    };
+    std::vector<SkinPrediction> skin_predictions_;
     Eigen::MatrixXd           dense_tangent_;   // H, dense, for the step's dense solves
     bool                      has_dense_tangent_ = false;
 

@@ -11,6 +11,7 @@
 #include <softchain/chain/joint_stiffness.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/chain/link_compliance.h>
+#include <softchain/chain/piecewise_linear.h>
 #include <softchain/chain/link_geometry.h>
 #include <softchain/chain/pressure_actuation.h>
 
@@ -50,6 +51,12 @@ namespace softchain::chain
     // without link compliance), m, world.
     Eigen::Vector3d          link_deflection(const ChainLoad &load) const;
     bool                     has_link_geometry() const { return link_geometry_.has_value(); }
+    // c_s(p), how far a link's section gives along its palm normal per newton
+    // of contact force (ChainContact's skin), m/N; 0 without a table.
+    void                     set_skin_compliance(PiecewiseLinear compliance);
+    double                   skin_compliance(double pressure) const;
+    // The same model with rigid sections (no skin compliance).
+    ChainModel               without_skin_compliance() const;
     void                     set_collision_surface(CollisionSurface surface);
     // The collision surface, or nullptr (the model cannot touch).
     const CollisionSurface  *collision_surface() const;
@@ -73,6 +80,7 @@ namespace softchain::chain
     PressureActuation actuation_;
     std::optional<LinkGeometry> link_geometry_;
     std::optional<LinkCompliance> link_compliance_;
+    std::optional<PiecewiseLinear> skin_compliance_;
     std::optional<JointForceLaw>  force_law_;
     std::optional<CollisionSurface> collision_surface_;
   };

@@ -31,6 +31,7 @@ namespace softchain::chain
     std::vector<PiecewiseLinear>                pressure_torque; // J_p(p), 3 per joint
     std::optional<LinkGeometry>                 link_geometry;   // none: rigid reference links
     std::optional<PiecewiseLinear>              link_compliance; // c(p), m/N; none: links rigid under forces
+    std::optional<PiecewiseLinear>              skin_compliance; // c_s(p), m/N; none: rigid sections
     std::optional<JointForceLaw>                force_law;       // none: linear springs about the pressure state
 
     // The chain to the tip point `tip`; J_p(p), the link geometry and the

@@ -19,6 +19,9 @@
 //   <label>_link_compliance.csv   pressure,compliance,samples (LinkCompliance, c in m/N;
 //                                 optional, without it or without rows the links
 //                                 are rigid under forces)
+//   <label>_skin_compliance.csv   pressure,compliance,samples (ChainContact's skin,
+//                                 c_s in m/N; optional, without it or without
+//                                 rows the sections are rigid under contact)
 // Joints are numbered 1..n (docs/conventions.md, "Joints") and listed in that order in the
 // stiffness file. Bad content (missing column, missing or misnumbered joint,
 // NaN, zero or negative stiffness, NaN J_p) is an InputError naming the file
@@ -81,6 +84,7 @@ namespace softchain::chain
     std::string pressure_torque_path_;
     std::string link_geometry_path_;
     std::string link_compliance_path_;
+    std::string skin_compliance_path_;
     std::string joint_law_path_;
   };
 } // namespace softchain::chain

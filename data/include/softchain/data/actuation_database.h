@@ -116,7 +116,8 @@ namespace softchain::data
     std::vector<PointForce> point_forces;
     // What the sample is for: "pressure" (k_phi), "lateral" (k_theta),
     // "torsion" (k_psi), "bending" (k_phi of the joints the pressure does not
-    // load), "chord" (the links' compliance), "validation" (never used for
+    // load), "chord" (the links' compliance), "skin" (the sections'
+    // compliance under a force on the palm), "validation" (never used for
     // extraction),
     // "protocol inflation" and "protocol" (the prescribed-motion protocol:
     // its inflated state and its tip motions), "contact" (a finger pressed

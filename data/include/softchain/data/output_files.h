@@ -44,6 +44,7 @@ namespace softchain::data
     std::string pressure_torque;    // <label>_pressure_torque.csv: J_p per pressure
     std::string link_geometry;      // <label>_link_geometry.csv
     std::string link_compliance;    // <label>_link_compliance.csv
+    std::string skin_compliance;    // <label>_skin_compliance.csv
   };
 
   // <output>/contact/contact_forces.csv

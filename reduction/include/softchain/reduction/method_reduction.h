@@ -7,6 +7,7 @@
 #include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
+#include <softchain/reduction/skin_compliance_fit.h>
 #include <softchain/reduction/stiffness_extraction.h>
 
 #include <string>
@@ -27,6 +28,7 @@ namespace softchain::reduction
     const SampleReduction              &rest() const { return rest_; }
     const std::vector<SampleReduction> &samples() const { return samples_; }
     const StiffnessExtraction          &stiffness() const { return stiffness_; }
+    const SkinComplianceFit            &skin_compliance() const { return skin_compliance_; }
 
   private:
     RotationMethod               method_;
@@ -35,5 +37,6 @@ namespace softchain::reduction
     SampleReduction              rest_;
     std::vector<SampleReduction> samples_;
     StiffnessExtraction          stiffness_;
+    SkinComplianceFit            skin_compliance_;
   };
 } // namespace softchain::reduction

@@ -35,6 +35,7 @@ namespace softchain::reduction
     std::vector<std::string>    torsion_roles;            // feed k_psi
     std::vector<std::string>    bending_roles;            // feed k_phi where no pressure does
     std::vector<std::string>    chord_roles;              // feed the links' compliance
+    std::vector<std::string>    skin_roles;               // feed the sections' compliance
     int                         force_samples_per_fit = 1; // lightest per pressure; 0: all
     bool                        plots = true;
 

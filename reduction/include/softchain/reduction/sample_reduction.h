@@ -56,6 +56,15 @@ namespace softchain::reduction
     //   r = U_1 - U_1(p) + sum_i R_i [(U_i+1 - U_i) - (U_i+1(p) - U_i(p))],
     // 0 if the links are rigid between the two states (LinkComplianceFit).
     Eigen::Vector3d link_deflection_from(const SampleReduction &pressure_state) const;
+    // Where the chain of `pressure_state`'s links, turned by this sample's
+    // link rotations R_i, carries the point of link b that lies at y_p in
+    // `pressure_state` (its offset L = R_b(p)^T (y_p - J_b(p))):
+    //   U_1(p) + sum_{i<b} R_i (U_i+1(p) - U_i(p)) + R_b L.
+    // This sample's deformed position of that point minus this is what the
+    // joints' rotations do not carry (SkinComplianceFit).
+    Eigen::Vector3d carried_from(const SampleReduction &pressure_state, std::size_t link,
+                                 const Eigen::Vector3d &y_p) const;
+    const Eigen::Matrix3d &link_rotation(std::size_t link) const { return link_rotations_.at(link); }
     // The deformed chord from joint 1's centre to the tip, sum_i R_i (U_i+1 - U_i).
     Eigen::Vector3d chord() const;
 
@@ -70,6 +79,7 @@ namespace softchain::reduction
     std::vector<JointResult> joints_;
     std::vector<Eigen::Vector3d> link_geometry_;
     std::vector<Eigen::Matrix3d> link_rotations_; // R_i of link i (the last torque-carrying frame)
+    std::vector<Eigen::Vector3d> joint_centres_;  // J_i, deformed
     Eigen::Vector3d              tip_frame_ = Eigen::Vector3d::Zero();
     std::vector<data::PointForce> point_forces_;
   };

@@ -1,0 +1,63 @@
+#pragma once
+// SkinComplianceFit: the compliance c_s(p) of the finger's sections under a
+// force on the palm (the chain tier's skin, ChainContact): how far the palm
+// gives towards the cavity, relative to the link that carries it, per newton
+// pressing along its normal. A pneumatic finger's palm is a plate spanning
+// the cavity, which the gas does not stiffen under pressure control: pressed
+// by an obstacle it gives before the joints turn, and a chain of rigid
+// sections presses too hard where the contact is concentrated (a grasp).
+//
+// Per skin sample s (forces f_k at palm points X_k along the palm's inward
+// normal, SampleSet's 'palm F') at pressure p, with the pressure state P at p:
+// each point lies on link b (the last joint at or before X_k along x). The
+// chain of P's links turned by s's own link rotations carries it to x_k
+// (SampleReduction::carried_from; its deformed position in P and in s taken
+// through the body's cells, BodySamples); what the joints do not carry
+// along the palm's inward normal d_b = R_b e_y is the skin's give
+//   delta_k = d_b . (y_k(s) - x_k).
+// The chain moves a link's whole skin by s_b = c_s F_b, F_b = sum_k f_k . d_b, so
+// per sample delta = mean_k delta_k and F = sum_k f_k . d_k, and per pressure
+// the least-squares value
+//   c_s(p) = max(0, sum_s delta_s F_s / sum_s F_s^2)
+// (a palm does not give against the force; a negative value becomes 0 with a
+// warning). Samples of `Skin roles`, pressure states of `Pressure roles`
+// (the rest configuration at p = 0), as LinkComplianceFit.
+#include <softchain/data/actuation_database.h>
+#include <softchain/data/csv_table.h>
+#include <softchain/reduction/joint_geometry.h>
+#include <softchain/reduction/reduction_parameters.h>
+#include <softchain/reduction/sample_reduction.h>
+
+#include <string>
+#include <vector>
+
+namespace softchain::reduction
+{
+  struct SkinComplianceAtPressure
+  {
+    double pressure;   // Pa
+    double compliance; // c_s, m/N
+    int    samples;    // skin samples fitted
+  };
+
+  class SkinComplianceFit
+  {
+  public:
+    SkinComplianceFit() = default;
+    // `reduced[i]` is `records[i]` reduced; `rest` the rest configuration.
+    SkinComplianceFit(const std::vector<data::SampleRecord> &records,
+                      const std::vector<SampleReduction> &reduced, const SampleReduction &rest,
+                      const JointGeometry &geometry, const data::MeshRecord &mesh,
+                      const ReductionParameters &parameters);
+
+    const std::vector<SkinComplianceAtPressure> &values() const { return values_; }
+    // pressure,compliance,samples, by increasing pressure.
+    data::CsvTable table() const;
+    // Warnings about skipped samples and pressures (empty if none).
+    const std::vector<std::string> &warnings() const { return warnings_; }
+
+  private:
+    std::vector<SkinComplianceAtPressure> values_;
+    std::vector<std::string>              warnings_;
+  };
+} // namespace softchain::reduction

@@ -1,0 +1,108 @@
+// SkinComplianceFit against a closed form: a finger whose sections are
+// squeezed through their height (the palm pushed up towards the top, which
+// stays) and then turned rigidly about joint 1 gives c_s = (the palm's give)
+// / (the force along the palm's normal): the squeeze turns no slab, so the
+// chain's links carry the palm points rigidly and all the squeeze is skin.
+// A palm that moves against its force gives c_s = 0, a skin sample without
+// its pressure state is skipped; both with a warning.
+#include <softchain/reduction/method_reduction.h>
+#include <softchain/reduction/skin_compliance_fit.h>
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include "layer_finger_mesh.h"
+
+using namespace softchain;
+using namespace softchain::reduction;
+
+namespace
+{
+  constexpr double mm = 1e-3;
+  constexpr double a  = 10 * mm; // joint spacing
+
+  ReductionParameters parameters()
+  {
+    ReductionParameters p;
+    p.joint_spacing  = a;
+    p.pressure_roles = {"pressure"};
+    p.skin_roles     = {"skin"};
+    return p;
+  }
+
+  // The box finger (palm y = -2 mm, top y = 10 mm) squeezed by y' = y +
+  // strain (10 mm - y), then turned by `turn` about joint 1's centre (5, 0,
+  // 0) mm, pressed by `force` along the turned palm normal at three palm
+  // points across x = 50 mm (link 5, joints at 45 and 55 mm).
+  data::SampleRecord squeezed(const data::MeshRecord &mesh, double strain, double turn, double force,
+                              double pressure)
+  {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Vector3d J(5 * mm, 0, 0);
+    data::SampleRecord    s;
+    s.id                 = "skin" + std::to_string(strain);
+    s.actuation.role     = "skin";
+    s.actuation.pressure = pressure;
+    const auto deformed = [&](const data::Point3 &X) -> data::Point3 {
+      const Eigen::Vector3d y = J + R * (Eigen::Vector3d(X[0], X[1] + strain * (10 * mm - X[1]), X[2]) - J);
+      return {{y.x(), y.y(), y.z()}};
+    };
+    for (const auto &X : mesh.X)
+      s.x.push_back(deformed(X));
+    const Eigen::Vector3d f = force * R.col(1);
+    for (const double z : {-3 * mm, 0.0, 3 * mm})
+      {
+        s.actuation.point_forces.push_back({{50 * mm, -2 * mm, z}, {f.x(), f.y(), f.z()}});
+        s.force_points_deformed.push_back(deformed({{50 * mm, -2 * mm, z}}));
+      }
+    return s;
+  }
+
+  SkinComplianceFit fit(const data::MeshRecord &mesh, const std::vector<data::SampleRecord> &samples)
+  {
+    const JointLayout     layout(mesh.X, a, 0, "box");
+    const auto            body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+    const MethodReduction r(RotationMethod::affine_fit, 0.5, parameters(),
+                            JointGeometry(layout, body, 0.0, a / 2), mesh, samples);
+    return r.skin_compliance();
+  }
+} // namespace
+
+TEST_CASE("a squeezed and turned section: c_s is the palm's give over the force along its normal")
+{
+  const data::MeshRecord mesh   = testing::layer_finger_mesh(false);
+  const double           strain = 0.02, force = 0.1;
+  // The palm (y = -2 mm) rises by strain * 12 mm relative to its link; the
+  // three forces press it with 3 * force. Exact up to round-off.
+  for (const double turn : {0.0, 0.4})
+    {
+      const SkinComplianceFit c = fit(mesh, {squeezed(mesh, strain, turn, force, 0)});
+      CHECK(c.warnings().empty());
+      REQUIRE(c.values().size() == 1);
+      CHECK(c.values()[0].pressure == 0.0);
+      CHECK(c.values()[0].samples == 1);
+      CHECK(c.values()[0].compliance == Approx(strain * 12 * mm / (3 * force)).epsilon(1e-9));
+      CHECK(c.table().n_rows() == 1);
+    }
+}
+
+TEST_CASE("a palm that moves against its force gives c_s = 0, no pressure state no row; both warn")
+{
+  const data::MeshRecord mesh = testing::layer_finger_mesh(false);
+  SECTION("pushed out against the force")
+  {
+    const SkinComplianceFit c = fit(mesh, {squeezed(mesh, -0.02, 0.0, 0.1, 0)});
+    REQUIRE(c.values().size() == 1);
+    CHECK(c.values()[0].compliance == 0.0);
+    REQUIRE(c.warnings().size() == 1);
+    CHECK_THAT(c.warnings()[0], Catch::Contains("skin compliance at 0 Pa set to 0"));
+  }
+  SECTION("at a pressure without a pressure sample")
+  {
+    const SkinComplianceFit c = fit(mesh, {squeezed(mesh, 0.02, 0.0, 0.1, 2e4)});
+    CHECK(c.values().empty());
+    REQUIRE(c.warnings().size() == 1);
+    CHECK_THAT(c.warnings()[0], Catch::Contains("skin sample 'skin0.020000' at 20000 Pa skipped"));
+  }
+}
