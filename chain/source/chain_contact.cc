@@ -65,7 +65,7 @@ namespace softchain::chain
         double reach = 0.0;
         for (const Touch &t : near)
           {
-            const double a = t.normal.dot(skin_direction(pose, t.link));
+            const double a = gives(t) ? t.normal.dot(skin_direction(pose, t.link)) : 0.0;
             if (a > 0.0)
               reach = std::max(reach, -t.gap / a);
           }
@@ -84,7 +84,8 @@ namespace softchain::chain
             for (const Touch &point : group)
               {
                 Touch touch;
-                if (touch_at(point.position + shift, link, point.point, point.obstacle, touch))
+                if (touch_at(point.position + (gives(point) ? shift : Eigen::Vector3d::Zero()), link,
+                             point.point, point.obstacle, touch))
                   touches_.push_back(touch);
               }
             first = last;
@@ -98,6 +99,11 @@ namespace softchain::chain
   Eigen::Vector3d ChainContact::skin_direction(const ChainPose &pose, const int link) const
   {
     return pose.link_rotations[link].col(1);
+  }
+
+  bool ChainContact::gives(const Touch &touch) const
+  {
+    return has_skin() && skin_compliance_[touch.link] > 0.0 && surface_->gives(touch.point);
   }
 
   bool ChainContact::touch_at(const Eigen::Vector3d &x, const int link, const int k, const int o,
@@ -125,7 +131,7 @@ namespace softchain::chain
       for (const Touch &point : near)
         {
           Touch t;
-          if (!touch_at(point.position + s * d, link, point.point, point.obstacle, t))
+          if (!gives(point) || !touch_at(point.position + s * d, link, point.point, point.obstacle, t))
             continue;
           const double a = t.normal.dot(d);
           value += stiffness_ * t.gap * a;
@@ -176,7 +182,7 @@ namespace softchain::chain
       {
         while (skin != skins.end() && skin->link < touch.link)
           ++skin;
-        if (skin == skins.end() || skin->link != touch.link)
+        if (skin == skins.end() || skin->link != touch.link || !gives(touch))
           continue;
         const Eigen::Vector3d &d = skin->direction;
         const double           f = stiffness_ * touch.gap;
@@ -251,7 +257,7 @@ namespace softchain::chain
         double             D = skin.stiffness + skin.penetration_curvature;
         bool               touching = false;
         for (const Touch &touch : touches_)
-          if (touch.link == skin.link)
+          if (touch.link == skin.link && gives(touch))
             {
               const double a = touch.normal.dot(skin.direction);
               jacobian_row(pose, touch, touch.normal, row);
@@ -301,6 +307,7 @@ namespace softchain::chain
         const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
         const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
         const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
+        const Eigen::Vector3d  skin(0.0, s, 0.0);
         const Eigen::Vector3d  centre = c + R * cluster.centre;
         for (std::size_t o = 0; o < obstacles_.size(); ++o)
           {
@@ -309,7 +316,7 @@ namespace softchain::chain
               continue;
             for (int k = cluster.begin; k < cluster.end; ++k)
               {
-                const Eigen::Vector3d x = c + R * (offsets_[k] + Eigen::Vector3d(0.0, s, 0.0));
+                const Eigen::Vector3d x = c + R * (surface_->gives(k) ? offsets_[k] + skin : offsets_[k]);
                 if (!(obstacle.body->gap(x, poses_[o]) < margin))
                   continue;
                 near.emplace_back();

@@ -276,7 +276,7 @@ namespace softchain::chain
     alignment_.setZero(m);
     for (const ChainContact::Skin &skin : skins_)
       for (Eigen::Index c = 0; c < m; ++c)
-        if (near_[c].link == skin.link)
+        if (near_[c].link == skin.link && contact_.gives(near_[c]))
           alignment_[c] = near_[c].normal.dot(skin.direction);
     has_dense_tangent_  = false;
     const bool factored = tangent_.factor(0.0);

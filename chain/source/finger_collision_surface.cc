@@ -2,6 +2,7 @@
 #include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <map>
 #include <set>
@@ -40,12 +41,28 @@ namespace softchain::chain
       return counts;
     }
 
-    // Points of the outer surface on links, sorted by link.
+    // Points of the outer surface on links, sorted by link, and whether each
+    // lies on a section that gives under contact: strictly between the
+    // cavity's ends along x, where the palm is a plate spanning the cavity
+    // (the solid base fill and tip cap do not give; ChainContact's skin).
     struct SurfacePoints
     {
       std::vector<std::int64_t> nodes;
       std::vector<int>          links;
+      std::vector<char>         gives;
     };
+
+    std::pair<double, double> cavity_span(const data::MeshRecord &mesh)
+    {
+      double low = std::numeric_limits<double>::infinity(), high = -low;
+      for (const auto &triangle : mesh.cavity_triangles)
+        for (const std::int64_t v : triangle)
+          {
+            low  = std::min(low, mesh.X[v][0]);
+            high = std::max(high, mesh.X[v][0]);
+          }
+      return {low, high};
+    }
 
     SurfacePoints surface_points(const KinematicChain &chain, const data::MeshRecord &mesh)
     {
@@ -57,11 +74,13 @@ namespace softchain::chain
             by_link.emplace_back(link, node);
         }
       std::sort(by_link.begin(), by_link.end());
+      const auto [low, high] = cavity_span(mesh);
       SurfacePoints points;
       for (const auto &[link, node] : by_link)
         {
           points.links.push_back(link);
           points.nodes.push_back(node);
+          points.gives.push_back(mesh.X[node][0] > low && mesh.X[node][0] < high);
         }
       return points;
     }
@@ -114,7 +133,7 @@ namespace softchain::chain
   {
     const SurfacePoints points = surface_points(model.chain(), mesh);
     CollisionSurface::Row rest{0.0, offsets_in_links(points, model.chain().rest_pose(), mesh.X)};
-    return CollisionSurface(points.links, {rest}, model.chain().n_joints());
+    return CollisionSurface(points.links, {rest}, model.chain().n_joints(), points.gives);
   }
 
   SurfaceSamples SurfaceSamples::read(const data::ActuationDatabase &database)
@@ -141,6 +160,6 @@ namespace softchain::chain
     for (const auto &[pressure, y] : inflated)
       if (equilibrium.solve(ChainLoad{pressure, {}}).converged)
         rows.push_back({pressure, offsets_in_links(points, equilibrium.pose(), y)});
-    return CollisionSurface(points.links, std::move(rows), model.chain().n_joints());
+    return CollisionSurface(points.links, std::move(rows), model.chain().n_joints(), points.gives);
   }
 } // namespace softchain::chain

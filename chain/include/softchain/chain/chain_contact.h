@@ -32,7 +32,9 @@
 // docs/conventions.md), x_k = c_b + R_b (L_k + s_b e_y), held by a spring
 // of stiffness k_s = 1 / c_b:
 //     U_c(q) = min_s sum_b [1/2 k_s s_b^2 + sum_{k in b} 1/2 k_c <-g(x_k)>^2].
-// Each s_b is found exactly (a convex problem in one unknown) at every
+// Only the points on sections that give move with the skin
+// (CollisionSurface::gives: over the cavity, not the solid base and tip);
+// for the others a_k = 0. Each s_b is found exactly (a convex problem in one unknown) at every
 // update, so U_c stays a function of the angles, its gradient is that of
 // the touching points' forces at the displaced points (envelope theorem),
 // and its tangent is the rigid skin's minus one rank-one term per touching
@@ -111,6 +113,9 @@ namespace softchain::chain
     };
     void skins(const ChainPose &pose, int n_angles, std::vector<Skin> &skins) const;
     bool has_skin() const { return !skin_compliance_.empty(); }
+    // Whether the point of `touch` moves with its link's skin (a link with
+    // skin compliance, a point of CollisionSurface::gives).
+    bool gives(const Touch &touch) const;
     // d_b = R_b e_y of `link` at `pose`.
     Eigen::Vector3d skin_direction(const ChainPose &pose, int link) const;
 

@@ -51,11 +51,14 @@ namespace softchain::chain
     // Points sorted by link (`links[k]` the link of point k, 0-based, none on
     // the base); rows by increasing pressure, the first at 0. Throws
     // std::invalid_argument otherwise. The points are reordered within their
-    // link into clusters.
-    CollisionSurface(std::vector<int> links, std::vector<Row> rows, int n_links);
+    // link into clusters. `gives[k]`: point k lies on a section that gives
+    // under contact (ChainContact's skin; empty: every point).
+    CollisionSurface(std::vector<int> links, std::vector<Row> rows, int n_links,
+                     std::vector<char> gives = {});
 
     int                     n_points() const { return static_cast<int>(links_.size()); }
     const std::vector<int> &links() const { return links_; }
+    bool                    gives(int k) const { return gives_[k] != 0; }
     // The first point of each link and one past its last (size n_links + 1).
     const std::vector<int> &link_begin() const { return link_begin_; }
     // The clusters, by link.
@@ -71,6 +74,7 @@ namespace softchain::chain
 
     std::vector<int>             links_;
     std::vector<Row>             rows_;
+    std::vector<char>            gives_;
     std::vector<int>             link_begin_;
     std::vector<Cluster>         clusters_;
   };
