@@ -45,20 +45,23 @@ namespace
 
   // Points under each link of a straight chain of n links of length a (joint
   // i at (i + 1/2) a): `per_link` along it, `depth` below the joint line,
-  // at z = +-w.
+  // at z = +-w; with `rigid_side`, those at z = -w do not give (a skin
+  // moves only those at +w).
   CollisionSurface palm_points(const int n, const double a, const int per_link, const double depth,
-                               const double w)
+                               const double w, const bool rigid_side = false)
   {
     std::vector<int>             links;
     std::vector<Eigen::Vector3d> offsets;
+    std::vector<char>            gives;
     for (int b = 0; b < n; ++b)
       for (int s = 0; s < per_link; ++s)
         for (const double z : {-w, w})
           {
             links.push_back(b);
             offsets.emplace_back(a * (s + 0.5) / per_link, -depth, z);
+            gives.push_back(!rigid_side || z > 0);
           }
-    return CollisionSurface(links, {{0.0, offsets}}, n);
+    return CollisionSurface(links, {{0.0, offsets}}, n, gives);
   }
 
   // Six links of 15 mm, k_phi 0.05 N m/rad, J_p p bending them down by
@@ -165,15 +168,16 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
 {
   const int n = 4;
   const double a = 0.02;
-  ChainModel model = uniform_finger(n, a, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
-  model.set_collision_surface(palm_points(n, a, 3, 0.004, 0.006));
   // Rigid sections, and compliant ones whose give (k_s = 100 N/m per link)
-  // is of the penetrations' size.
+  // is of the penetrations' size, on a surface whose points at z < 0 do not
+  // give.
   for (const double skin : {0.0, 0.01})
   for (const auto &obstacles : {std::vector{plane(-0.012)},
                                 std::vector{cylinder({0.05, -0.016, 0.0}, 0.008)}})
     {
       INFO("skin compliance " << skin << " m/N, " << obstacles.front().shape);
+      ChainModel model = uniform_finger(n, a, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
+      model.set_collision_surface(palm_points(n, a, 3, 0.004, 0.006, skin > 0.0));
       // Near the equilibrium, where the contact forces are those of the
       // problem (far from it the penalty's are huge), turned out of plane;
       // a soft penalty, so that the penetrations (~1 mm) dwarf the
@@ -205,13 +209,24 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       std::vector<ChainContact::Skin> skins;
       solver.contact().skins(solver.pose(), 3 * n, skins);
       CHECK(skins.size() == (skin > 0.0 ? std::size_t(n) : 0));
+      std::vector<Eigen::Vector3d> offsets;
+      model.collision_surface()->offsets_at(1e4, offsets);
       for (const auto &s : skins)
         {
           double along = 0.0;
           for (const auto &t : touches)
-            if (t.link == s.link)
+            if (t.link == s.link && solver.contact().gives(t))
               along += t.force.dot(s.direction);
           CHECK(s.shift == Approx(skin * along).margin(1e-12));
+          CHECK((along > 0.0) == (s.shift > 0.0));
+        }
+      // A point moves with its link's skin only where the surface gives.
+      for (const auto &t : touches)
+        {
+          const Eigen::Vector3d carried = solver.pose().joint_positions[t.link] +
+                                          solver.pose().link_rotations[t.link] * offsets[t.point];
+          const double shift = skin > 0.0 && offsets[t.point].z() > 0 ? skins[t.link].shift : 0.0;
+          CHECK((t.position - carried - shift * solver.pose().link_rotations[t.link].col(1)).norm() < 1e-15);
         }
       // Without the curvature rows the cylinder's tangent would be off by
       // about f / R per touching point: checked to be seen.
