@@ -106,6 +106,8 @@ namespace softchain::chain
     merge_abscissae(actuation_.table_pressures(), pressures);
     if (link_geometry_)
       merge_abscissae(link_geometry_->table_pressures(), pressures);
+    if (skin_compliance_)
+      merge_abscissae(skin_compliance_->abscissae(), pressures);
     return pressures;
   }
 

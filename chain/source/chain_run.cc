@@ -120,6 +120,16 @@ namespace softchain::chain
       options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
       options.max_pressure = max_pressure(database);
       options.pressure     = options.max_pressure;
+      // A link gives where its middle lies over the cavity (the collision
+      // surface's points that give, per link).
+      const auto           span  = cavity_span(database.mesh());
+      const KinematicChain links = model.chain();
+      for (int i = 0; i < links.n_joints(); ++i)
+        {
+          const double middle =
+            0.5 * (links.link_joint(i).x() + (i + 1 < links.n_joints() ? links.link_joint(i + 1) : links.link_tip()).x());
+          options.skin_links.push_back(middle > span.first && middle < span.second);
+        }
       MjcfExport(model.with_name(database.design().name + "_" + model.name()), options).write(path);
       std::cout << "chain: MuJoCo model " << path << "\n";
       compare_with_mujoco(model, path, options.pressure, box.second.x() - box.first.x(), settings);

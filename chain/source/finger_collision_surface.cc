@@ -52,18 +52,6 @@ namespace softchain::chain
       std::vector<char>         gives;
     };
 
-    std::pair<double, double> cavity_span(const data::MeshRecord &mesh)
-    {
-      double low = std::numeric_limits<double>::infinity(), high = -low;
-      for (const auto &triangle : mesh.cavity_triangles)
-        for (const std::int64_t v : triangle)
-          {
-            low  = std::min(low, mesh.X[v][0]);
-            high = std::max(high, mesh.X[v][0]);
-          }
-      return {low, high};
-    }
-
     SurfacePoints surface_points(const KinematicChain &chain, const data::MeshRecord &mesh)
     {
       std::vector<std::pair<int, std::int64_t>> by_link;
@@ -106,6 +94,18 @@ namespace softchain::chain
              !a.tip_motion && a.obstacles.empty() && !a.cavity_volume_ratio;
     }
   } // namespace
+
+  std::pair<double, double> cavity_span(const data::MeshRecord &mesh)
+  {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const auto &triangle : mesh.cavity_triangles)
+      for (const std::int64_t v : triangle)
+        {
+          low  = std::min(low, mesh.X[v][0]);
+          high = std::max(high, mesh.X[v][0]);
+        }
+    return {low, high};
+  }
 
   std::vector<std::int64_t> outer_surface_nodes(const data::MeshRecord &mesh)
   {

@@ -80,14 +80,41 @@ namespace softchain::chain
           s << " pos=\"" << triple(pivot) << "\"";
         s << " stiffness=\"" << number(k) << "\" damping=\"" << number(k * options_.damping_time) << "\"/>\n";
       }
-    s << indent << "  <geom name=\"link" << i + 1 << "\" fromto=\"0 0 0 " << triple(to_next)
-      << "\"/>\n";
+    const std::string capsule =
+      "<geom name=\"link" + std::to_string(i + 1) + "\" fromto=\"0 0 0 " + triple(to_next) + "\"/>\n";
+    if (gives(i))
+      {
+        const double k = 1.0 / tables_.skin_compliance(options_.pressure);
+        s << indent << "  <body name=\"skin" << i + 1 << "\">\n"
+          << indent << "    <joint name=\"skin" << i + 1 << "\" type=\"slide\" axis=\"0 1 0\" stiffness=\""
+          << number(k) << "\" damping=\"" << number(k * options_.damping_time) << "\"/>\n"
+          << indent << "    " << capsule << indent << "  </body>\n";
+      }
+    else
+      s << indent << "  " << capsule;
     if (last)
       s << indent << "  <site name=\"tip\" pos=\"" << triple(to_next) << "\"/>\n";
     else
       s << body(i + 1);
     s << indent << "</body>\n";
     return s.str();
+  }
+
+  // A link with a skin leaves its capsule's mass to the skin body: MuJoCo's
+  // lower bound on every body's mass and inertia keeps the link body's
+  // hinges defined (1 mg, negligible beside a capsule's grams).
+  bool MjcfExport::any_skin() const
+  {
+    for (std::size_t i = 0; i < options_.skin_links.size(); ++i)
+      if (gives(static_cast<int>(i)))
+        return true;
+    return false;
+  }
+
+  bool MjcfExport::gives(const int i) const
+  {
+    return tables_.has_skin() && static_cast<std::size_t>(i) < options_.skin_links.size() &&
+           options_.skin_links[i];
   }
 
   // A fixed tendon over every hinge that the pressure turns at some tabulated
@@ -120,7 +147,8 @@ namespace softchain::chain
       << "       J_p(p) and link points U(p) (joints 1..n, tip) at the pressures of\n"
       << "       softchain_pressure, linear between them; set them at every pressure for a\n"
       << "       finger exact at all pressures (SoftChain docs/chain_fidelity.md, MuJoCo). -->\n"
-      << "  <compiler angle=\"radian\"/>\n"
+      << "  <compiler angle=\"radian\"" << (any_skin() ? " boundmass=\"1e-6\" boundinertia=\"1e-12\"" : "")
+      << "/>\n"
       << "  <option timestep=\"" << number(0.1 * options_.damping_time)
       << "\" integrator=\"Euler\"/>\n"
       << "  <default>\n"

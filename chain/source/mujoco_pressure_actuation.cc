@@ -47,9 +47,12 @@ namespace softchain::chain
       const Eigen::Index  m         = static_cast<Eigen::Index>(pressures.size());
       try
         {
+          std::vector<double> skin;
+          if (mj_name2id(model, mjOBJ_NUMERIC, PressureTables::skin_compliance_name) >= 0)
+            skin = numeric(model, PressureTables::skin_compliance_name);
           return PressureTables(std::move(pressures), rows_of(model, PressureTables::stiffness_name, m),
                                 rows_of(model, PressureTables::torque_per_pascal_name, m),
-                                rows_of(model, PressureTables::link_points_name, m));
+                                rows_of(model, PressureTables::link_points_name, m), std::move(skin));
         }
       catch (const std::invalid_argument &e)
         {
@@ -93,6 +96,15 @@ namespace softchain::chain
                                      ", which the tendon and motor 'pressure' do not drive");
             hinges_.push_back({joint, dof, wrap, model->dof_damping[dof] / model->jnt_stiffness[joint]});
           }
+        const int skin = mj_name2id(model, mjOBJ_JOINT, ("skin" + std::to_string(i + 1)).c_str());
+        if (skin < 0)
+          continue;
+        if (!tables_.has_skin() || !(model->jnt_stiffness[skin] > 0.0))
+          throw data::InputError("MuJoCo model: skin joint skin" + std::to_string(i + 1) +
+                                 " without the custom field '" + PressureTables::skin_compliance_name +
+                                 "' or without a spring");
+        const int dof = model->jnt_dofadr[skin];
+        skins_.push_back({skin, dof, -1, model->dof_damping[dof] / model->jnt_stiffness[skin]});
       }
   }
 
@@ -107,6 +119,11 @@ namespace softchain::chain
         model->dof_damping[h.dof]     = h.damping_time * k[j];
         if (h.tendon_wrap >= 0)
           model->wrap_prm[h.tendon_wrap] = jp[j];
+      }
+    for (const Hinge &s : skins_)
+      {
+        model->jnt_stiffness[s.joint] = 1.0 / tables_.skin_compliance(pressure);
+        model->dof_damping[s.dof]     = s.damping_time * model->jnt_stiffness[s.joint];
       }
     if (pressure_motor_ >= 0)
       data->ctrl[pressure_motor_] = pressure;

@@ -36,12 +36,19 @@ namespace softchain::chain
   } // namespace
 
   PressureTables::PressureTables(std::vector<double> pressures, Rows stiffness, Rows torque_per_pascal,
-                                 Rows link_points)
+                                 Rows link_points, std::vector<double> skin_compliance)
     : pressures_(std::move(pressures))
     , stiffness_(std::move(stiffness))
     , torque_per_pascal_(std::move(torque_per_pascal))
     , link_points_(std::move(link_points))
+    , skin_compliance_(std::move(skin_compliance))
   {
+    if (!skin_compliance_.empty() &&
+        (skin_compliance_.size() != pressures_.size() ||
+         std::any_of(skin_compliance_.begin(), skin_compliance_.end(),
+                     [](double c) { return !(c > 0.0) || !std::isfinite(c); })))
+      throw std::invalid_argument("PressureTables: the skin compliance needs one positive, finite value "
+                                  "per pressure");
     if (pressures_.empty() || pressures_.front() != 0.0)
       throw std::invalid_argument("PressureTables: the pressures must start at 0");
     for (std::size_t r = 1; r < pressures_.size(); ++r)
@@ -70,7 +77,15 @@ namespace softchain::chain
           points.row(r).segment<3>(3 * i) = links.link_joint(i).transpose();
         points.row(r).tail<3>() = links.link_tip().transpose();
       }
-    return PressureTables(pressures, k, jp, points);
+    // A skin only where it gives at every pressure (MuJoCo's slide joint
+    // needs a finite stiffness 1 / c_s).
+    std::vector<double> skin;
+    for (const double p : pressures)
+      if (model.has_skin_compliance() && model.skin_compliance(p) > 0.0)
+        skin.push_back(model.skin_compliance(p));
+    if (skin.size() != pressures.size())
+      skin.clear();
+    return PressureTables(pressures, k, jp, points, skin);
   }
 
   Eigen::VectorXd PressureTables::stiffness(const double pressure) const { return row_at(stiffness_, pressure); }
@@ -85,8 +100,16 @@ namespace softchain::chain
     return row_at(link_points_, pressure);
   }
 
+  double PressureTables::skin_compliance(const double pressure) const
+  {
+    if (skin_compliance_.empty())
+      return 0.0;
+    const Eigen::Map<const Rows> rows(skin_compliance_.data(), static_cast<Eigen::Index>(skin_compliance_.size()), 1);
+    return row_at(rows, pressure)[0];
+  }
+
   // Linear between the two grid pressures around `pressure`.
-  Eigen::VectorXd PressureTables::row_at(const Rows &rows, const double pressure) const
+  Eigen::VectorXd PressureTables::row_at(const Eigen::Ref<const Rows> &rows, const double pressure) const
   {
     if (!(pressure >= 0.0 && pressure <= pressures_.back()))
       {
@@ -110,6 +133,11 @@ namespace softchain::chain
            numeric(indent, pressure_name, pressures_.data(), static_cast<Eigen::Index>(pressures_.size())) +
            numeric(indent, stiffness_name, stiffness_.data(), stiffness_.size()) +
            numeric(indent, torque_per_pascal_name, torque_per_pascal_.data(), torque_per_pascal_.size()) +
-           numeric(indent, link_points_name, link_points_.data(), link_points_.size()) + indent + "</custom>\n";
+           numeric(indent, link_points_name, link_points_.data(), link_points_.size()) +
+           (skin_compliance_.empty()
+              ? std::string()
+              : numeric(indent, skin_compliance_name, skin_compliance_.data(),
+                        static_cast<Eigen::Index>(skin_compliance_.size()))) +
+           indent + "</custom>\n";
   }
 } // namespace softchain::chain

@@ -145,3 +145,24 @@ TEST_CASE("Tables whose rows do not match the hinges are an input error naming t
   CHECK_THROWS_WITH(MujocoPressureActuation(m), Catch::Contains("softchain_stiffness"));
   mj_deleteModel(m);
 }
+
+TEST_CASE("A skin joint without its compliance table is an input error naming the joint and the field")
+{
+  softchain::testing::ScratchDirectory dir("mujoco_pressure_skin_without_table");
+  ChainModel model = tapered_finger_in_pressure(p_max);
+  model.set_skin_compliance(PiecewiseLinear({0.0, p_max}, {2e-3, 1e-3}));
+  MjcfOptions options{0.005, 1070, 0.01, p_max, p_max};
+  options.skin_links.assign(model.chain().n_joints(), 1);
+  std::string xml = MjcfExport(model, options).text();
+  REQUIRE(xml.find("<joint name=\"skin3\" type=\"slide\"") != std::string::npos);
+  // The skin's table removed, its joints left.
+  const auto line = xml.find("<numeric name=\"" + std::string(PressureTables::skin_compliance_name));
+  REQUIRE(line != std::string::npos);
+  xml.erase(line, xml.find('\n', line) - line);
+  std::ofstream(dir.file("bad.xml")) << xml;
+  mjModel *m = mj_loadXML(dir.file("bad.xml").c_str(), nullptr, nullptr, 0);
+  REQUIRE(m != nullptr);
+  CHECK_THROWS_WITH(MujocoPressureActuation(m),
+                    Catch::Contains("skin joint skin1") && Catch::Contains("softchain_skin_compliance"));
+  mj_deleteModel(m);
+}

@@ -91,6 +91,44 @@ TEST_CASE("MuJoCo's steady contact force on a table is the force the chain's equ
   CHECK((free.angles - mujoco).cwiseAbs().maxCoeff() > 1e-3);
 }
 
+TEST_CASE("MuJoCo's skins give as the chain's: each slide joint at rest holds c_s(p) times the force along it")
+{
+  softchain::testing::ScratchDirectory dir("mujoco_scene_skin");
+  ChainModel model = finger_bending_down();
+  // c_s from 2 mm/N at rest to 1 mm/N at p*: set from the tables at p.
+  model.set_skin_compliance(PiecewiseLinear({0.0, p_max}, {2e-3, 1e-3}));
+  MjcfOptions options{0.005, 1070, 0.01, p_max, p_max};
+  options.skin_links.assign(model.chain().n_joints(), 1);
+  options.skin_links[0] = 0; // the first link stays rigid
+  MjcfExport(model, options).write(dir.file("finger.xml"));
+  MujocoScene scene(dir.file("finger.xml"), table(), 0.002, dir.file("scene.xml"));
+  const mjModel *m = scene.model();
+  CHECK(mj_name2id(m, mjOBJ_JOINT, "skin1") < 0);
+  const double           p = 0.2 * p_max;
+  PressureRampSimulation ramp(scene, {20e3, 3.0, 0.25, 0});
+  const SteadyContact    steady = ramp.run({p}).front();
+  REQUIRE(steady.force.y() < -0.01);
+  const int    skin9 = mj_name2id(m, mjOBJ_JOINT, "skin9"), body9 = mj_name2id(m, mjOBJ_BODY, "skin9");
+  const double c_s   = 2e-3 + (1e-3 - 2e-3) * p / p_max;
+  REQUIRE(skin9 >= 0);
+  CHECK(m->jnt_stiffness[skin9] == Approx(1.0 / c_s).epsilon(1e-14));
+  // The tip's capsule alone touches; its skin body carries the contact. The
+  // slide joint's spring holds the force along the link's +y (the joint's
+  // axis in world): s = c_s F . d, at rest but for MuJoCo's last drift:
+  // measured 3e-5 relative (the soft contact's force is that of the last
+  // step's start, on a capsule held by a spring and damper).
+  Eigen::Vector3d on_finger = Eigen::Vector3d::Zero();
+  for (const ObstacleContact &c : scene.obstacle_contacts())
+    {
+      REQUIRE(c.body == body9);
+      on_finger -= c.force;
+    }
+  const Eigen::Map<const Eigen::Vector3d> axis(scene.data()->xaxis + 3 * skin9);
+  const double                            s = scene.data()->qpos[m->jnt_qposadr[skin9]];
+  CHECK(s > 1e-5); // the palm gives into the finger
+  CHECK(s == Approx(c_s * on_finger.dot(axis)).epsilon(1e-4));
+}
+
 TEST_CASE("An obstacle MuJoCo cannot build is an error naming the obstacle and its parameter")
 {
   softchain::testing::ScratchDirectory dir("mujoco_scene_bad_shape");

@@ -55,6 +55,7 @@ namespace softchain::chain
     // of contact force (ChainContact's skin), m/N; 0 without a table.
     void                     set_skin_compliance(PiecewiseLinear compliance);
     double                   skin_compliance(double pressure) const;
+    bool                     has_skin_compliance() const { return skin_compliance_.has_value(); }
     // The same model with rigid sections (no skin compliance).
     ChainModel               without_skin_compliance() const;
     void                     set_collision_surface(CollisionSurface surface);

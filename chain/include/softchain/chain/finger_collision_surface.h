@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace softchain::chain
@@ -18,6 +19,11 @@ namespace softchain::chain
   // one cell only, without the faces whose vertices are all cavity vertices,
   // and without the clamped base's vertices. Sorted node indices.
   std::vector<std::int64_t> outer_surface_nodes(const data::MeshRecord &mesh);
+
+  // The cavity's extent along x in the reference mesh (its triangles' nodes):
+  // between these the palm is a plate over the cavity, which gives under
+  // contact; the solid base fill and tip cap lie outside.
+  std::pair<double, double> cavity_span(const data::MeshRecord &mesh);
 
   // The outer surface carried rigidly by the links of `model`'s reference
   // chain: one row, at p = 0 (the paper's rigid links, the baseline).

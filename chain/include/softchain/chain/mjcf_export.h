@@ -25,10 +25,15 @@
 // tables (PressureTables) on [0, max(pressure, max_pressure)], from which
 // MujocoPressureActuation sets the model of any pressure in that range; the
 // pressure tendon lists every hinge whose J_p is non-zero at some pressure.
+// Where the sections give (MjcfOptions::skin_links and the chain's c_s(p)),
+// a link's capsule sits in a child body "skin<i>" on a slide joint along
+// the link's +y, of stiffness 1 / c_s(p*) and damping time damping_time:
+// the chain's skin s_b as one more degree of freedom per link.
 #include <softchain/chain/chain_model.h>
 #include <softchain/chain/pressure_tables.h>
 
 #include <string>
+#include <vector>
 
 namespace softchain::chain
 {
@@ -39,6 +44,11 @@ namespace softchain::chain
     double damping_time = 0.01;  // s, hinge damping / stiffness
     double max_pressure = 0.0;   // Pa, control range of the pressure (0: unlimited)
     double pressure     = 0.0;   // Pa, p* whose K and J_p are exported (0: CSV K, rest J_p)
+    // Per link, whether its section gives under contact: its capsule then
+    // hangs on a slide joint "skin<i>" along the link's +y (the palm's
+    // inward normal) of stiffness 1 / c_s(p) (ChainContact's skin), where the
+    // chain has a skin compliance. Empty: no link gives.
+    std::vector<char> skin_links;
   };
 
   class MjcfExport
@@ -55,6 +65,8 @@ namespace softchain::chain
 
   private:
     std::string body(int i) const;
+    bool        gives(int i) const; // link i has a skin joint
+    bool        any_skin() const;
     std::string pressure_actuator() const;
 
     MjcfOptions    options_;

@@ -15,7 +15,9 @@
 // MjcfExport). Each hinge keeps its exported damping time c / k, the
 // capsules and the tip site follow the links; masses and inertias stay
 // those of the exported model (the chain is quasi-static, they do not enter
-// its equilibrium). MuJoCo allows model fields to change between steps.
+// its equilibrium). A link exported with a skin (slide joint "skin<i>")
+// gets the stiffness 1 / c_s(p), keeping its damping time. MuJoCo allows
+// model fields to change between steps.
 #include <softchain/chain/pressure_tables.h>
 
 #include <mujoco/mujoco.h>
@@ -51,6 +53,7 @@ namespace softchain::chain
 
     PressureTables     tables_;
     std::vector<Hinge> hinges_;
+    std::vector<Hinge> skins_; // the slide joints skin<i>, where exported
     std::vector<int>   bodies_, capsules_;
     int                tip_site_, pressure_motor_;
   };

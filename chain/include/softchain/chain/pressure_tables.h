@@ -19,11 +19,14 @@
 //   softchain_stiffness          m x 3n, N m / rad (hinge stiffness k)
 //   softchain_torque_per_pascal  m x 3n, N m / Pa (J_p; torque J_p p)
 //   softchain_link_points        m x 3(n + 1), m (U_1 .. U_n, U_T)
+//   softchain_skin_compliance    m values, m/N (c_s, the sections' give in
+//                                contact; only for a chain that has it)
 //
 // A MuJoCo front end reproduces the chain at p by interpolating each row
 // linearly in p and setting hinge stiffness k, the pressure tendon's
 // coefficients J_p (control = p), and the body positions U_1, U_{i+1} - U_i
-// and tip site U_T - U_n (MujocoPressureActuation does it in C++).
+// and tip site U_T - U_n, and the skin joints' stiffness 1 / c_s
+// (MujocoPressureActuation does it in C++).
 #include <softchain/chain/chain_model.h>
 
 #include <Eigen/Core>
@@ -40,14 +43,16 @@ namespace softchain::chain
     static constexpr const char *stiffness_name         = "softchain_stiffness";
     static constexpr const char *torque_per_pascal_name = "softchain_torque_per_pascal";
     static constexpr const char *link_points_name       = "softchain_link_points";
+    static constexpr const char *skin_compliance_name   = "softchain_skin_compliance";
 
     using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
     // Rows per pressure: pressures strictly increasing from 0, finite,
     // stiffness and torque_per_pascal 3n columns, link_points 3(n + 1);
+    // skin_compliance one value per pressure, each positive, or none;
     // std::invalid_argument saying which is wrong otherwise.
     PressureTables(std::vector<double> pressures, Rows stiffness, Rows torque_per_pascal,
-                   Rows link_points);
+                   Rows link_points, std::vector<double> skin_compliance = {});
     // `model` sampled at its table pressures on [0, top_pressure] (top_pressure >= 0).
     static PressureTables of_model(const ChainModel &model, double top_pressure);
 
@@ -57,6 +62,8 @@ namespace softchain::chain
     Eigen::VectorXd stiffness(double pressure) const;
     Eigen::VectorXd torque_per_pascal(double pressure) const;
     Eigen::VectorXd link_points(double pressure) const; // U_1 .. U_n, U_T (x y z each)
+    bool            has_skin() const { return !skin_compliance_.empty(); }
+    double          skin_compliance(double pressure) const; // c_s, m/N (0 without a skin)
     // Whether the pressure turns hinge j (J_p non-zero at some grid pressure).
     bool turns_hinge(int j) const { return (torque_per_pascal_.col(j).array() != 0.0).any(); }
 
@@ -64,11 +71,12 @@ namespace softchain::chain
     std::string mjcf(const std::string &indent) const;
 
   private:
-    Eigen::VectorXd row_at(const Rows &rows, double pressure) const;
+    Eigen::VectorXd row_at(const Eigen::Ref<const Rows> &rows, double pressure) const;
 
     std::vector<double> pressures_;
     Rows                stiffness_;
     Rows                torque_per_pascal_;
     Rows                link_points_;
+    std::vector<double> skin_compliance_;
   };
 } // namespace softchain::chain
