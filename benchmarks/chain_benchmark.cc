@@ -75,10 +75,10 @@ namespace
   // A contact-like force at the fingertip, in world axes.
   ChainLoad load(double pressure) { return {pressure, {{{n_joints * a, 0.0, 0.0}, {0.0, 0.3, 0.05}}}}; }
 
-  // The skin of a 90 x 12 x 16 mm box finger (palm 2 mm below the joints),
+  // The outer surface of a 90 x 12 x 16 mm box finger (palm 2 mm below the joints),
   // a point every 7.5 mm along and 4 mm across, carried rigidly by the links:
   // 174 points, near the 217 surface vertices of P10's default mesh.
-  CollisionSurface box_skin(const ChainModel &model)
+  CollisionSurface box_surface(const ChainModel &model)
   {
     std::vector<std::pair<int, Eigen::Vector3d>> points;
     const auto add = [&](const Eigen::Vector3d &X) {
@@ -102,10 +102,10 @@ namespace
     return CollisionSurface(links, {{0.0, offsets}}, model.chain().n_joints());
   }
 
-  ChainModel finger_with_skin()
+  ChainModel finger_with_surface()
   {
     ChainModel model = finger_as_reduced();
-    model.set_collision_surface(box_skin(model));
+    model.set_collision_surface(box_surface(model));
     return model;
   }
 
@@ -165,10 +165,10 @@ BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_twist_axes, finger_w
 // And with links shaped by the pressure: the reduction's default chain.
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_as_reduced, finger_as_reduced(), ChainLoad{0.5 * p_max, {}});
 BENCHMARK_CAPTURE(equilibrium_from_rest, pressure_and_force_as_reduced, finger_as_reduced(), load(0.5 * p_max));
-// Contact (ChainContact): the reduced finger's skin pressed on a table and
+// Contact (ChainContact): the reduced finger's surface pressed on a table and
 // wrapped round a cylinder at p_max / 2.
-BENCHMARK_CAPTURE(equilibrium_from_rest, blocked_on_table, finger_with_skin(), on_table(0.5 * p_max));
-BENCHMARK_CAPTURE(equilibrium_from_rest, grasp_of_cylinder, finger_with_skin(), on_cylinder(0.5 * p_max));
+BENCHMARK_CAPTURE(equilibrium_from_rest, blocked_on_table, finger_with_surface(), on_table(0.5 * p_max));
+BENCHMARK_CAPTURE(equilibrium_from_rest, grasp_of_cylinder, finger_with_surface(), on_cylinder(0.5 * p_max));
 
 // 100 pressures 0..p_max with the tip force, each from the previous pose.
 static void pressure_sweep_100_warm_start(benchmark::State &state)

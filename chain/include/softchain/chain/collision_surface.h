@@ -1,6 +1,6 @@
 #pragma once
 // CollisionSurface: where the chain's links touch the world. The FEM finger
-// touches an obstacle with its skin -- the palm, the tip face's lower edge --
+// touches an obstacle with its outer surface -- the palm, the tip face's lower edge --
 // not with the line of joints, so the chain carries the FEM's own outer
 // surface: the vertices of the database mesh's boundary faces that are
 // neither cavity nor clamped base, each a material point of the link that
