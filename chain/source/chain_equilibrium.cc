@@ -68,8 +68,7 @@ namespace softchain::chain
     std::stable_sort(loads_.begin(), loads_.end(),
                      [](const AttachedLoad &a, const AttachedLoad &b) { return a.link < b.link; });
     contact_margin_ = 0.05 * (chain_.link_tip() - chain_.link_joint(0)).norm();
-    const double skin_compliance =
-      settings_.skin_compliance ? *settings_.skin_compliance : model_.skin_compliance(load.pressure);
+    const double              skin_compliance = model_.skin_compliance(load.pressure);
     const std::vector<double> skin(skin_compliance > 0.0 ? chain_.n_joints() : 0, skin_compliance);
     contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness, skin);
   }

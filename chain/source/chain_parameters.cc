@@ -87,11 +87,11 @@ namespace softchain::chain
     section.require(p.newton.contact_stiffness > 0, "Contact stiffness", "must be positive");
     const std::string skin = section.get("Skin compliance");
     if (skin == "none")
-      p.newton.skin_compliance = 0.0;
+      p.skin_compliance = 0.0;
     else if (skin != "measured")
       {
-        p.newton.skin_compliance = section.get_double("Skin compliance");
-        section.require(*p.newton.skin_compliance >= 0, "Skin compliance",
+        p.skin_compliance = section.get_double("Skin compliance");
+        section.require(*p.skin_compliance >= 0, "Skin compliance",
                         "must be measured, none or a compliance >= 0 in m/N");
       }
     p.newton.max_iterations = section.get_integer("Maximum Newton iterations");

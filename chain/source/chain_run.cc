@@ -45,6 +45,12 @@ namespace softchain::chain
           files.read_model(name, tip, p.stiffness_column, p.in_pressure, p.rigid_where_missing);
         if (!p.measured_joint_law)
           model = model.with_linear_joints();
+        if (p.skin_compliance)
+          {
+            model = model.without_skin_compliance();
+            if (*p.skin_compliance > 0.0)
+              model.set_skin_compliance(PiecewiseLinear({0.0}, {*p.skin_compliance}));
+          }
         if (!p.pressure_link_geometry)
           return model.with_rigid_links();
         return p.link_compliance ? model : model.without_link_compliance();

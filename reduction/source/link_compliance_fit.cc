@@ -1,4 +1,5 @@
 #include <softchain/data/vector_of_point.h>
+#include <softchain/reduction/compliance_sums.h>
 #include <softchain/reduction/link_compliance_fit.h>
 
 #include <algorithm>
@@ -49,12 +50,8 @@ namespace softchain::reduction
     if (reduction.rest().link_geometry().empty())
       return; // no tip face, no links to measure
     const auto states = pressure_states(reduction, parameters.pressure_roles);
-    struct Sums
-    {
-      double rF = 0, FF = 0, angle = 0;
-      int    n  = 0;
-    };
-    std::map<double, Sums> sums;
+    std::map<double, ComplianceSums> sums;
+    std::map<double, double>         angles; // the largest angle to the chord per pressure
     for (const SampleReduction &s : reduction.samples())
       {
         if (!has_role(s, parameters.chord_roles))
@@ -67,26 +64,18 @@ namespace softchain::reduction
             continue;
           }
         const Eigen::Vector3d F = effective_force(s, reduction.rest());
-        Sums                 &sum = sums[s.pressure()];
-        sum.rF += s.link_deflection_from(*state->second).dot(F);
-        sum.FF += F.squaredNorm();
-        sum.angle = std::max(sum.angle, angle_deg(F, state->second->chord()));
-        ++sum.n;
+        sums[s.pressure()].add(s.link_deflection_from(*state->second).dot(F), F.squaredNorm());
+        angles[s.pressure()] = std::max(angles[s.pressure()], angle_deg(F, state->second->chord()));
       }
     for (const auto &[pressure, sum] : sums)
       {
-        if (!(sum.FF > 0))
-          {
-            warnings_.push_back("no link compliance at " + data::CsvTable::cell(pressure) +
-                                " Pa: its chord samples carry no force");
-            continue;
-          }
-        const double c = sum.rF / sum.FF;
-        if (c < 0)
-          warnings_.push_back("link compliance at " + data::CsvTable::cell(pressure) +
-                              " Pa set to 0: the links' deflection opposes the chord samples' "
-                              "force (least squares c = " + data::CsvTable::cell(c) + " m/N)");
-        values_.push_back({pressure, std::max(c, 0.0), sum.n, sum.angle});
+        const std::string at = data::CsvTable::cell(pressure) + " Pa";
+        const auto        c  = sum.compliance("link compliance at " + at + " set to 0: the links' "
+                                              "deflection opposes the chord samples' force", warnings_);
+        if (c)
+          values_.push_back({pressure, *c, sum.samples, angles[pressure]});
+        else
+          warnings_.push_back("no link compliance at " + at + ": its chord samples carry no force");
       }
   }
 

@@ -1,5 +1,5 @@
 #include <softchain/data/vector_of_point.h>
-#include <softchain/reduction/body_samples.h>
+#include <softchain/reduction/compliance_sums.h>
 #include <softchain/reduction/skin_compliance_fit.h>
 
 #include <algorithm>
@@ -24,8 +24,6 @@ namespace softchain::reduction
           link = static_cast<int>(i);
       return link;
     }
-
-    Eigen::Vector3d vector(const data::Point3 &p) { return {p[0], p[1], p[2]}; }
   } // namespace
 
   SkinComplianceFit::SkinComplianceFit(const std::vector<data::SampleRecord> &records,
@@ -35,20 +33,13 @@ namespace softchain::reduction
   {
     // The pressure states: the first pressure sample at each pressure, the
     // rest configuration at 0.
-    std::map<double, std::pair<const std::vector<data::Point3> *, const SampleReduction *>> states{
-      {0.0, {&mesh.X, &rest}}};
+    std::map<double, State> states{{0.0, {&mesh.X, &rest}}};
     for (std::size_t i = 0; i < records.size(); ++i)
       if (has_role(records[i].actuation.role, parameters.pressure_roles) &&
           records[i].actuation.point_forces.empty())
-        states.emplace(records[i].actuation.pressure, std::make_pair(&records[i].x, &reduced[i]));
-    // The cells locate the palm points; the lattice is not used (one point).
-    std::optional<BodySamples> body;
-    struct Sums
-    {
-      double dF = 0, FF = 0;
-      int    n  = 0;
-    };
-    std::map<double, Sums> sums;
+        states.emplace(records[i].actuation.pressure, State{&records[i].x, &reduced[i]});
+    std::map<double, ComplianceSums> sums;
+    std::optional<BodySamples>       body; // locates the palm points; its lattice is not used
     for (std::size_t i = 0; i < records.size(); ++i)
       {
         const data::SampleRecord &s = records[i];
@@ -56,50 +47,52 @@ namespace softchain::reduction
           continue;
         const auto state = states.find(s.actuation.pressure);
         if (state == states.end())
+          warnings_.push_back("skin sample '" + s.id + "' at " + data::CsvTable::cell(s.actuation.pressure) +
+                              " Pa skipped: no pressure sample at that pressure");
+        else
           {
-            warnings_.push_back("skin sample '" + s.id + "' at " + data::CsvTable::cell(s.actuation.pressure) +
-                                " Pa skipped: no pressure sample at that pressure");
-            continue;
+            if (!body)
+              body.emplace(mesh, 1.0, "the database's mesh");
+            if (const auto give = measured_give(s, reduced[i], state->second, geometry, *body))
+              sums[s.actuation.pressure].add(give->first * give->second, give->second * give->second);
           }
-        if (!body)
-          body.emplace(mesh, 1.0, "the database's mesh");
-        double delta = 0, F = 0;
-        int    n     = 0;
-        for (const data::PointForce &f : s.actuation.point_forces)
-          {
-            const auto located = body->locate(vector(f.point));
-            const int  link    = link_of(geometry, f.point[0]);
-            if (!located || link < 0)
-              {
-                warnings_.push_back("skin sample '" + s.id + "': a force point lies outside the body "
-                                    "or before the first joint; skipped");
-                continue;
-              }
-            const Eigen::Vector3d d       = reduced[i].link_rotation(link).col(1);
-            const Eigen::Vector3d carried = reduced[i].carried_from(
-              *state->second.second, link, body->deformed(*located, *state->second.first));
-            delta += d.dot(body->deformed(*located, s.x) - carried);
-            F += data::vector_of(f.force).dot(d);
-            ++n;
-          }
-        if (n == 0)
-          continue;
-        Sums &sum = sums[s.actuation.pressure];
-        sum.dF += delta / n * F;
-        sum.FF += F * F;
-        ++sum.n;
       }
     for (const auto &[pressure, sum] : sums)
+      if (const auto c = sum.compliance("skin compliance at " + data::CsvTable::cell(pressure) +
+                                          " Pa set to 0: the palm moved against the skin samples' force",
+                                        warnings_))
+        values_.push_back({pressure, *c, sum.samples});
+  }
+
+  // (delta, F) of skin sample `s`: the mean give of its points along their
+  // link's palm normal, and the sum of its forces along it (header).
+  std::optional<std::pair<double, double>>
+  SkinComplianceFit::measured_give(const data::SampleRecord &s, const SampleReduction &reduced,
+                                   const State &state, const JointGeometry &geometry,
+                                   const BodySamples &body)
+  {
+    double delta = 0, F = 0;
+    int    n     = 0;
+    for (const data::PointForce &f : s.actuation.point_forces)
       {
-        if (!(sum.FF > 0))
-          continue;
-        const double c = sum.dF / sum.FF;
-        if (c < 0)
-          warnings_.push_back("skin compliance at " + data::CsvTable::cell(pressure) +
-                              " Pa set to 0: the palm moved against the skin samples' force "
-                              "(least squares c_s = " + data::CsvTable::cell(c) + " m/N)");
-        values_.push_back({pressure, std::max(c, 0.0), sum.n});
+        const auto located = body.locate(data::vector_of(f.point));
+        const int  link    = link_of(geometry, f.point[0]);
+        if (!located || link < 0)
+          {
+            warnings_.push_back("skin sample '" + s.id + "': a force point lies outside the body or "
+                                "before the first joint; skipped");
+            continue;
+          }
+        const Eigen::Vector3d d       = reduced.link_rotation(link).col(1);
+        const Eigen::Vector3d carried =
+          reduced.carried_from(*state.reduced, link, body.deformed(*located, *state.x));
+        delta += d.dot(body.deformed(*located, s.x) - carried);
+        F += data::vector_of(f.force).dot(d);
+        ++n;
       }
+    if (n == 0)
+      return std::nullopt;
+    return std::make_pair(delta / n, F);
   }
 
   data::CsvTable SkinComplianceFit::table() const

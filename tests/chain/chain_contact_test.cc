@@ -132,9 +132,9 @@ TEST_CASE("a joint bent onto a table through a compliant skin: the closed form o
   const double a = 0.1, l = a / 2, k = 0.1, tau = -0.08, h = 0.02, k_c = 1e5, c = 2e-3;
   ChainModel   model = uniform_finger(1, a, {1.0, 1.0, k}, {0.0, 0.0, tau});
   model.set_collision_surface(CollisionSurface({0}, {{0.0, {Eigen::Vector3d(l, 0, 0)}}}, 1));
+  model.set_skin_compliance(PiecewiseLinear({0.0}, {c}));
   EquilibriumSettings settings;
   settings.contact_stiffness = k_c;
-  settings.skin_compliance   = c;
   ChainEquilibrium  solver(model, settings);
   const Equilibrium e = solver.solve(ChainLoad{1.0, {}, {plane(-h)}});
   REQUIRE(e.converged);
@@ -178,13 +178,14 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       INFO("skin compliance " << skin << " m/N, " << obstacles.front().shape);
       ChainModel model = uniform_finger(n, a, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
       model.set_collision_surface(palm_points(n, a, 3, 0.004, 0.006, skin > 0.0));
+      if (skin > 0.0)
+        model.set_skin_compliance(PiecewiseLinear({0.0}, {skin}));
       // Near the equilibrium, where the contact forces are those of the
       // problem (far from it the penalty's are huge), turned out of plane;
       // a soft penalty, so that the penetrations (~1 mm) dwarf the
       // perturbation and the differences' steps.
       EquilibriumSettings soft;
       soft.contact_stiffness = 100.0;
-      soft.skin_compliance   = skin;
       soft.woodbury_rows_per_angle = 1.0; // the Woodbury step, checked below
       ChainEquilibrium  solver(model, soft);
       const Equilibrium e = solver.solve(ChainLoad{1e4, {}, obstacles});

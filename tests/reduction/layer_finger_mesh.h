@@ -3,6 +3,8 @@
 // 16 mm, y from -2 mm (the layer y = 0 is 2 mm above the bottom), hollow
 // with 2 mm walls, 5 mm long cells: 9 joints at 5, 15, ..., 85 mm, each on
 // a node plane.
+#include <softchain/reduction/reduction_parameters.h>
+
 #include "../chain/box_mesh.h"
 
 namespace softchain::reduction::testing
@@ -13,5 +15,17 @@ namespace softchain::reduction::testing
     spec.wall_cells = 1;
     spec.tetrahedra = tetrahedra;
     return chain::testing::box_mesh(spec);
+  }
+
+  // The reduction of the box finger (joints 10 mm apart) with one role per
+  // kind of sample: "pressure", "chord", "skin".
+  inline ReductionParameters layer_finger_parameters()
+  {
+    ReductionParameters p;
+    p.joint_spacing  = 0.01;
+    p.pressure_roles = {"pressure"};
+    p.chord_roles    = {"chord"};
+    p.skin_roles     = {"skin"};
+    return p;
   }
 } // namespace softchain::reduction::testing

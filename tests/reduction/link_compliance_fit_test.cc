@@ -20,14 +20,7 @@ namespace
   constexpr double mm = 1e-3;
   constexpr double a  = 10 * mm; // joint spacing
 
-  ReductionParameters parameters()
-  {
-    ReductionParameters p;
-    p.joint_spacing  = a;
-    p.pressure_roles = {"pressure"};
-    p.chord_roles    = {"chord"};
-    return p;
-  }
+  ReductionParameters parameters() { return testing::layer_finger_parameters(); }
 
   // The finger stretched along x by the factor 1 + strain about the clamp
   // (x = 0), pulled at its tip centroid by `force` (role chord).

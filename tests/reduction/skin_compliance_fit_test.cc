@@ -20,16 +20,6 @@ using namespace softchain::reduction;
 namespace
 {
   constexpr double mm = 1e-3;
-  constexpr double a  = 10 * mm; // joint spacing
-
-  ReductionParameters parameters()
-  {
-    ReductionParameters p;
-    p.joint_spacing  = a;
-    p.pressure_roles = {"pressure"};
-    p.skin_roles     = {"skin"};
-    return p;
-  }
 
   // The box finger (palm y = -2 mm, top y = 10 mm) squeezed by y' = y +
   // strain (10 mm - y), then turned by `turn` about joint 1's centre (5, 0,
@@ -61,10 +51,12 @@ namespace
 
   SkinComplianceFit fit(const data::MeshRecord &mesh, const std::vector<data::SampleRecord> &samples)
   {
-    const JointLayout     layout(mesh.X, a, 0, "box");
-    const auto            body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
-    const MethodReduction r(RotationMethod::affine_fit, 0.5, parameters(),
-                            JointGeometry(layout, body, 0.0, a / 2), mesh, samples);
+    const ReductionParameters p = testing::layer_finger_parameters();
+    const double              a = p.joint_spacing;
+    const JointLayout         layout(mesh.X, a, 0, "box");
+    const auto                body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+    const MethodReduction     r(RotationMethod::affine_fit, 0.5, p, JointGeometry(layout, body, 0.0, a / 2), mesh,
+                                samples);
     return r.skin_compliance();
   }
 } // namespace

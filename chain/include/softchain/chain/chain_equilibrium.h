@@ -75,10 +75,6 @@ namespace softchain::chain
     int    max_iterations = 50;
     double max_step_angle = 1.5;   // rad per angle and Newton step
     double contact_stiffness = 1e5; // k_c of ChainContact, N/m per surface point
-    // The sections' compliance along each link's palm normal, m/N
-    // (ChainContact's skin; 0: rigid sections); none: the model's
-    // (ChainModel::skin_compliance).
-    std::optional<double> skin_compliance;
     // A contact step adds its r rows by Woodbury around H's O(n) factor while
     // r <= this fraction of the n angles, else to H's dense form
     // (ChainEquilibrium::woodbury_pays has the measurement).

@@ -19,6 +19,7 @@
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/prm_file.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ namespace softchain::chain
     bool                     in_pressure         = true;
     bool                     pressure_link_geometry = true; // links as the pressure shapes them (LinkGeometry)
     bool                     link_compliance     = true; // links in series with the joints (LinkCompliance)
+    // The sections' give under contact (ChainModel::skin_compliance): none:
+    // the reduction's table; a value: that compliance at every pressure, m/N
+    // (0: rigid sections).
+    std::optional<double>    skin_compliance;
     bool                     measured_joint_law  = true; // joints follow the measured curves (JointForceLaw)
     bool                     rigid_where_missing = true; // NaN or k <= 0: rigid joint (or an error)
     std::vector<std::string> validation_roles    = {"validation", "pressure"};

@@ -24,11 +24,14 @@
 // (the rest configuration at p = 0), as LinkComplianceFit.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
+#include <softchain/reduction/body_samples.h>
 #include <softchain/reduction/joint_geometry.h>
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace softchain::reduction
@@ -57,6 +60,17 @@ namespace softchain::reduction
     const std::vector<std::string> &warnings() const { return warnings_; }
 
   private:
+    // A pressure state: its deformed nodes and its reduction.
+    struct State
+    {
+      const std::vector<data::Point3> *x;
+      const SampleReduction           *reduced;
+    };
+    std::optional<std::pair<double, double>> measured_give(const data::SampleRecord &s,
+                                                           const SampleReduction &reduced, const State &state,
+                                                           const JointGeometry &geometry,
+                                                           const BodySamples &body);
+
     std::vector<SkinComplianceAtPressure> values_;
     std::vector<std::string>              warnings_;
   };
