@@ -16,8 +16,8 @@ namespace softchain::chain
     poses_.clear();
     touches_.clear();
     skin_compliance_.clear();
-    surface_       = surface;
-    stiffness_     = stiffness;
+    surface_   = surface;
+    stiffness_ = stiffness;
     if (obstacles.empty())
       return;
     if (surface == nullptr)

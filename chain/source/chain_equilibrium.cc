@@ -400,7 +400,7 @@ namespace softchain::chain
       for (Eigen::Index i = 0; i < curvature_rows_.rows(); ++i)
         rows.push_back(m + i);
     const auto r        = static_cast<Eigen::Index>(rows.size());
-    const bool woodbury = factored && woodbury_pays(r + static_cast<Eigen::Index>(skins_.size()));
+    const bool woodbury = factored && woodbury_pays(r + skin_rows(active));
     contact_rows_.resize(r, chain_.n_angles());
     contact_weights_.resize(r);
     Eigen::MatrixXd Y(chain_.n_angles(), woodbury ? r : 0);
@@ -443,15 +443,33 @@ namespace softchain::chain
     direction_ += Y * S.partialPivLu().solve(WV * x);
   }
 
+  // Whether skin b adds a row to the step's model: a touching point or a
+  // point of A that gives (alignment a_c != 0).
+  bool ChainEquilibrium::skin_has_row(const ChainContact::Skin &skin, const std::vector<char> &active) const
+  {
+    if (!skin.penetration_row.isZero())
+      return true;
+    for (std::size_t c = 0; c < active.size(); ++c)
+      if (active[c] && near_[c].link == skin.link && alignment_[c] != 0.0)
+        return true;
+    return false;
+  }
+
+  Eigen::Index ChainEquilibrium::skin_rows(const std::vector<char> &active) const
+  {
+    return std::count_if(skins_.begin(), skins_.end(),
+                         [&](const ChainContact::Skin &skin) { return skin_has_row(skin, active); });
+  }
+
   // The skins in the step's model: with s_b an unknown beside d, link b's
   // points in A add to the quadratic model
   //   1/2 k_s (s_b + ds)^2 + sum_c 1/2 k_c (g_c + v_c d + a_c ds)^2 + ds t_b d + 1/2 e_b ds^2
-  // (t_b, e_b: ChainContact::Skin), whose minimum over ds is one row
-  //   u_b = sum_{c in A} k_c a_c v_c + t_b  with weight -1 / D_b and "gap" gamma_b / ... :
-  //   -(gamma_b + u_b d)^2 / (2 D_b),  gamma_b = k_s s_b + sum_{c in A} k_c a_c g_c,
-  //   D_b = k_s + sum_{c in A} k_c a_c^2 + e_b
-  // (equal to the exact tangent's where A holds the touching points). The
-  // row joins V (weight -1 / D_b), its force -gamma_b u_b / D_b the right side.
+  // (t_b, e_b: ChainContact::Skin). Its minimum over ds is
+  //   -(gamma_b + u_b d)^2 / (2 D_b),   u_b = sum_{c in A} k_c a_c v_c + t_b,
+  //   gamma_b = k_s s_b + sum_{c in A} k_c a_c g_c,   D_b = k_s + sum_{c in A} k_c a_c^2 + e_b,
+  // one row u_b of weight -1 / D_b whose force -gamma_b u_b / D_b joins the
+  // right side (equal to the exact tangent's where A holds the touching
+  // points).
   void ChainEquilibrium::add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps,
                                        const bool woodbury, Eigen::MatrixXd &Y, Eigen::VectorXd &b,
                                        Eigen::VectorXd &x)
@@ -460,14 +478,15 @@ namespace softchain::chain
     const double k = contact_.stiffness();
     for (const ChainContact::Skin &skin : skins_)
       {
+        if (!skin_has_row(skin, active))
+          continue;
         SkinPrediction s{skin.link, skin.stiffness * skin.shift, skin.stiffness + skin.penetration_curvature,
                          skin.penetration_row};
         Eigen::VectorXd y = Eigen::VectorXd::Zero(woodbury ? chain_.n_angles() : 0);
-        bool            any = !skin.penetration_row.isZero();
-        if (woodbury && any)
+        if (woodbury && !skin.penetration_row.isZero())
           tangent_.solve(skin.penetration_row.transpose(), y);
         for (std::size_t c = 0; c < active.size(); ++c)
-          if (active[c] && near_[c].link == skin.link)
+          if (active[c] && near_[c].link == skin.link && alignment_[c] != 0.0)
             {
               const double a = alignment_[c];
               s.u += k * a * near_row(c);
@@ -475,10 +494,7 @@ namespace softchain::chain
               s.D += k * a * a;
               if (woodbury)
                 y += k * a * solved_rows_.col(c);
-              any = true;
             }
-        if (!any)
-          continue;
         const Eigen::Index j = contact_rows_.rows();
         contact_rows_.conservativeResize(j + 1, Eigen::NoChange);
         contact_weights_.conservativeResize(j + 1);

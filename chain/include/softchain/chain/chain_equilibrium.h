@@ -141,6 +141,8 @@ namespace softchain::chain
                         const Eigen::VectorXd &free_residual, bool factored, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
     bool   woodbury_pays(Eigen::Index rows) const;
+    bool         skin_has_row(const ChainContact::Skin &skin, const std::vector<char> &active) const;
+    Eigen::Index skin_rows(const std::vector<char> &active) const;
     void   add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps, bool woodbury,
                          Eigen::MatrixXd &Y, Eigen::VectorXd &b, Eigen::VectorXd &x);
     void   update_link_velocities();
