@@ -126,6 +126,11 @@ namespace softchain::chain
       options.link_radius  = 0.5 * (box.second - box.first).tail<2>().minCoeff();
       options.max_pressure = max_pressure(database);
       options.pressure     = options.max_pressure;
+      // Two capsules per link a quarter of the finger's width to each side
+      // of its middle: inside the palm at the narrowest tip (P10: +-5 mm
+      // against a tip 16 mm wide), and a finger pressed hard on a table
+      // does not roll over on them (docs/chain_fidelity.md, "Contact in MuJoCo").
+      options.capsule_offset = 0.25 * (box.second - box.first).z();
       // A link gives where its middle lies over the cavity (the collision
       // surface's points that give, per link).
       const auto           span  = cavity_span(database.mesh());

@@ -80,8 +80,12 @@ namespace softchain::chain
           s << " pos=\"" << triple(pivot) << "\"";
         s << " stiffness=\"" << number(k) << "\" damping=\"" << number(k * options_.damping_time) << "\"/>\n";
       }
-    const std::string capsule =
-      "<geom name=\"link" + std::to_string(i + 1) + "\" fromto=\"0 0 0 " + triple(to_next) + "\"/>\n";
+    const Eigen::Vector3d side(0.0, 0.0, options_.capsule_offset);
+    std::string           capsule =
+      "<geom name=\"link" + std::to_string(i + 1) + "\" fromto=\"" + triple(-side) + " " + triple(to_next - side) + "\"/>\n";
+    if (options_.capsule_offset > 0.0)
+      capsule += indent + "  <geom name=\"link" + std::to_string(i + 1) + "_side\" fromto=\"" + triple(side) + " " +
+                 triple(to_next + side) + "\"/>\n";
     if (gives(i))
       {
         const double k = 1.0 / tables_.skin_compliance(options_.pressure);

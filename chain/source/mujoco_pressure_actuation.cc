@@ -81,6 +81,10 @@ namespace softchain::chain
         const std::string link = "link" + std::to_string(i + 1);
         bodies_.push_back(id_of(model, mjOBJ_BODY, link, "body"));
         capsules_.push_back(id_of(model, mjOBJ_GEOM, link, "geom"));
+        sides_.push_back(mj_name2id(model, mjOBJ_GEOM, (link + "_side").c_str()));
+        side_offset_.push_back(sides_.back() < 0 ? 0.0
+                                                 : 0.5 * (model->geom_pos[3 * sides_.back() + 2] -
+                                                          model->geom_pos[3 * capsules_.back() + 2]));
         for (int axis = 0; axis < 3; ++axis)
           {
             const int joint = id_of(model, mjOBJ_JOINT,
@@ -142,11 +146,16 @@ namespace softchain::chain
         const Eigen::Vector3d link  = points.segment<3>(3 * (i + 1)) - joint;
         Eigen::Map<Eigen::Vector3d>(model->body_pos + 3 * bodies_[i]) = joint - previous;
         previous                                                     = joint;
-        const int g = capsules_[i];
-        Eigen::Map<Eigen::Vector3d>(model->geom_pos + 3 * g) = 0.5 * link;
-        mju_quatZ2Vec(model->geom_quat + 4 * g, link.data());
-        model->geom_size[3 * g + 1] = 0.5 * link.norm();
-        model->geom_rbound[g]       = model->geom_size[3 * g] + model->geom_size[3 * g + 1];
+        for (const int g : {capsules_[i], sides_[i]})
+          {
+            if (g < 0)
+              continue;
+            const double side = g == sides_[i] ? side_offset_[i] : -side_offset_[i];
+            Eigen::Map<Eigen::Vector3d>(model->geom_pos + 3 * g) = 0.5 * link + Eigen::Vector3d(0.0, 0.0, side);
+            mju_quatZ2Vec(model->geom_quat + 4 * g, link.data());
+            model->geom_size[3 * g + 1] = 0.5 * link.norm();
+            model->geom_rbound[g]       = model->geom_size[3 * g] + model->geom_size[3 * g + 1];
+          }
       }
     Eigen::Map<Eigen::Vector3d>(model->site_pos + 3 * tip_site_) =
       points.segment<3>(3 * n) - points.segment<3>(3 * (n - 1));

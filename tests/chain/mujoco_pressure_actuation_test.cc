@@ -166,3 +166,36 @@ TEST_CASE("A skin joint without its compliance table is an input error naming th
                     Catch::Contains("skin joint skin1") && Catch::Contains("softchain_skin_compliance"));
   mj_deleteModel(m);
 }
+
+TEST_CASE("Two capsules per link sit side by side along the link at every pressure")
+{
+  softchain::testing::ScratchDirectory dir("mujoco_pressure_two_capsules");
+  const ChainModel model = tapered_finger_in_pressure(p_max);
+  MjcfOptions      options{0.002, 1070, 0.01, p_max, p_max};
+  options.capsule_offset = 0.004;
+  MjcfExport(model, options).write(dir.file("finger.xml"));
+  mjModel *m = mj_loadXML(dir.file("finger.xml").c_str(), nullptr, nullptr, 0);
+  REQUIRE(m != nullptr);
+  mjData                       *d = mj_makeData(m);
+  const MujocoPressureActuation actuation(m);
+  const double                  p = 0.6 * p_max;
+  actuation.apply(p, m, d);
+  const KinematicChain  links = model.chain_at(p);
+  const Eigen::Vector3d link  = links.link_joint(4) - links.link_joint(3); // link 4, to joint 5
+  const int             a = mj_name2id(m, mjOBJ_GEOM, "link4"), b = mj_name2id(m, mjOBJ_GEOM, "link4_side");
+  REQUIRE(b >= 0);
+  const Eigen::Vector3d side(0, 0, 0.004);
+  CHECK((Eigen::Map<const Eigen::Vector3d>(m->geom_pos + 3 * a) - (0.5 * link - side)).norm() < 1e-15);
+  CHECK((Eigen::Map<const Eigen::Vector3d>(m->geom_pos + 3 * b) - (0.5 * link + side)).norm() < 1e-15);
+  CHECK(m->geom_size[3 * b + 1] == Approx(0.5 * link.norm()).epsilon(1e-14));
+  // Both along the link: the capsule's axis (its z) is the link's direction.
+  mj_forward(m, d);
+  for (const int g : {a, b})
+    {
+      const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> R(d->geom_xmat + 9 * g);
+      const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> body(d->xmat + 9 * m->geom_bodyid[g]);
+      CHECK((body.transpose() * R.col(2) - link.normalized()).norm() < 1e-12);
+    }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+}

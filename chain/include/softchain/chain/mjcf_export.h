@@ -49,6 +49,11 @@ namespace softchain::chain
     // inward normal) of stiffness 1 / c_s(p) (ChainContact's skin), where the
     // chain has a skin compliance. Empty: no link gives.
     std::vector<char> skin_links;
+    // Half the distance [m] between two capsules per link, side by side along
+    // the link's z at +-this (0: one capsule on the joint line). Two lines of
+    // contact resist the rolling of a finger pressed on a plane, as the FEM's
+    // flat palm does.
+    double capsule_offset = 0.0;
   };
 
   class MjcfExport

@@ -16,7 +16,9 @@
 // capsules and the tip site follow the links; masses and inertias stay
 // those of the exported model (the chain is quasi-static, they do not enter
 // its equilibrium). A link exported with a skin (slide joint "skin<i>")
-// gets the stiffness 1 / c_s(p), keeping its damping time. MuJoCo allows
+// gets the stiffness 1 / c_s(p), keeping its damping time; a link with two
+// capsules (link<i>, link<i>_side) keeps them side by side along the body's
+// z, at their exported distance. MuJoCo allows
 // model fields to change between steps.
 #include <softchain/chain/pressure_tables.h>
 
@@ -55,6 +57,8 @@ namespace softchain::chain
     std::vector<Hinge> hinges_;
     std::vector<Hinge> skins_; // the slide joints skin<i>, where exported
     std::vector<int>   bodies_, capsules_;
+    std::vector<int>   sides_;      // capsule link<i>_side per link, -1 where none
+    std::vector<double> side_offset_; // its offset along the body's z (and -that for link<i>)
     int                tip_site_, pressure_motor_;
   };
 } // namespace softchain::chain
