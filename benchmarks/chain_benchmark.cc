@@ -193,6 +193,38 @@ static void pressure_sweep_100_warm_start(benchmark::State &state)
 }
 BENCHMARK(pressure_sweep_100_warm_start)->Unit(benchmark::kMicrosecond);
 
+// Closing on an obstacle as a simulation does: 20 pressures up to p_max / 2,
+// each equilibrium from the previous one (from rest for the first), the
+// table's and the cylinder's path. Time per equilibrium.
+static void contact_ramp_20_warm_start(benchmark::State &state, const ChainLoad &obstacle_load)
+{
+  const ChainModel model = finger_with_surface();
+  ChainEquilibrium solver(model);
+  int              iterations = 0, touching = 0;
+  for (auto _ : state)
+    {
+      ChainLoad load = obstacle_load;
+      iterations = touching = 0;
+      Eigen::VectorXd q;
+      for (int s = 1; s <= 20; ++s)
+        {
+          load.pressure       = 0.5 * p_max * s / 20.0;
+          const Equilibrium e = s == 1 ? solver.solve(load) : solver.solve(load, q);
+          require(e);
+          q = e.angles;
+          iterations += e.iterations;
+          touching += solver.contact().touches().empty() ? 0 : 1;
+        }
+      benchmark::DoNotOptimize(q.data());
+    }
+  report_iterations(state, iterations, 20);
+  state.counters["touching_equilibria"] = touching;
+  state.counters["us_per_solve"] =
+    benchmark::Counter(20.0, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK_CAPTURE(contact_ramp_20_warm_start, table, on_table(0.0))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(contact_ramp_20_warm_start, cylinder, on_cylinder(0.0))->Unit(benchmark::kMicrosecond);
+
 // Five fingers of different stiffness (45 joints), each under pressure and
 // its own tip force, solved from rest.
 static void hand_5_fingers_from_rest(benchmark::State &state)
