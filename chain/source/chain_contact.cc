@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace softchain::chain
@@ -324,6 +325,16 @@ namespace softchain::chain
               }
           }
       }
+  }
+
+  double ChainContact::clearance(const ChainPose &pose, const CollisionSurface::Cluster &cluster) const
+  {
+    const Eigen::Vector3d centre =
+      pose.joint_positions[cluster.link] + pose.link_rotations[cluster.link] * cluster.centre;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+      nearest = std::min(nearest, obstacles_[o].body->gap(centre, poses_[o]));
+    return nearest - cluster.radius - (has_skin() ? std::abs(skin_shift_[cluster.link]) : 0.0);
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

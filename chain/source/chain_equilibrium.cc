@@ -351,22 +351,26 @@ namespace softchain::chain
   }
 
   // With obstacles no surface point may move farther in one step than the
-  // active set's reach (contact_margin_): a longer step could carry a point
-  // through a thin obstacle without any candidate seeing it (tunnelling).
-  // Bounded per cluster by |v_b + w_b x centre| + |w_b| radius.
+  // active set's reach (contact_margin_) or its clearance from every
+  // obstacle, whichever is larger: a longer step could carry a point
+  // through a thin obstacle without any candidate seeing it (tunnelling),
+  // while a point that moves less than its clearance cannot reach one (the
+  // signed distance is 1-Lipschitz). Bounded per cluster: motion by
+  // |v_b + w_b x centre| + |w_b| radius, clearance by ChainContact::clearance.
   void ChainEquilibrium::limit_surface_motion()
   {
     update_link_velocities();
-    double farthest = 0.0;
+    double ratio = 0.0; // the largest motion over what the cluster may move
     for (const CollisionSurface::Cluster &cluster : model_.collision_surface()->clusters())
       {
         const auto &[w, v]         = link_velocities_[cluster.link];
         const Eigen::Vector3d centre = pose_.joint_positions[cluster.link] +
                                        pose_.link_rotations[cluster.link] * cluster.centre;
-        farthest = std::max(farthest, (v + w.cross(centre)).norm() + w.norm() * cluster.radius);
+        const double motion = (v + w.cross(centre)).norm() + w.norm() * cluster.radius;
+        ratio = std::max(ratio, motion / std::max(contact_margin_, contact_.clearance(pose_, cluster)));
       }
-    if (farthest > contact_margin_)
-      direction_ *= contact_margin_ / farthest;
+    if (ratio > 1.0)
+      direction_ /= ratio;
   }
 
   // n_c^T J_c of candidate c, computed when first needed.

@@ -93,6 +93,9 @@ namespace softchain::chain
     // point within `margin` of an obstacle (g < margin, the touching ones
     // among them).
     void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near) const;
+    // A lower bound of every point's distance to the obstacles in `cluster`
+    // at `pose`: min over obstacles of g(centre) - radius - |s_b|.
+    double clearance(const ChainPose &pose, const CollisionSurface::Cluster &cluster) const;
     // e^T dx_k/dq of the point of `touch`: (i, alpha) entry
     // a_{i,alpha} . ((x - p_{i,alpha}) x e) for the joints i up to the
     // point's link (pivot s_i for psi), zero beyond.
