@@ -385,3 +385,36 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer
   CHECK_THROWS_WITH(frictional.solve(ChainLoad{0.0, {}, {with_friction}}),
                     Catch::Contains("obstacle 'table' has friction") && Catch::Contains("frictionless"));
 }
+
+TEST_CASE("a finger closing on a thin plate stops on its near side: no step carries a point through it")
+{
+  // The palm finger bends down towards a plate 1 mm thick, 14 mm under the
+  // joint line; pressed by p its free pose lies far below it. A step that
+  // moved a point by more than its clearance or the active set's reach
+  // could cross the plate unseen and settle beyond it.
+  const ChainModel                model = finger_with_palm();
+  softchain::data::ObstacleRecord plate;
+  plate.name       = "plate";
+  plate.shape      = "box";
+  plate.position   = {0.05, -0.0145, 0.0};
+  plate.half_sizes = {0.1, 0.0005, 0.1};
+  for (const double p : {4e4, 1e5, 3e5})
+    {
+      INFO("pressure " << p << " Pa");
+      ChainEquilibrium  solver(model);
+      const Equilibrium free = solver.solve(ChainLoad{p, {}});
+      REQUIRE(free.converged);
+      CHECK(solver.pose().tip_position.y() < -0.015); // the free finger passes the plate
+      const Equilibrium e = solver.solve(ChainLoad{p, {}, {plate}});
+      REQUIRE(e.converged);
+      REQUIRE_FALSE(solver.contact().touches().empty());
+      std::vector<Eigen::Vector3d> offsets;
+      model.collision_surface()->offsets_at(p, offsets);
+      for (int k = 0; k < model.collision_surface()->n_points(); ++k)
+        {
+          const int             b = model.collision_surface()->links()[k];
+          const Eigen::Vector3d x = solver.pose().joint_positions[b] + solver.pose().link_rotations[b] * offsets[k];
+          CHECK(x.y() > -0.0145); // above the plate's middle: at most the penalty's penetration into its top
+        }
+    }
+}
