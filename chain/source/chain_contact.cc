@@ -61,7 +61,7 @@ namespace softchain::chain
     else
       {
         std::fill(skin_shift_.begin(), skin_shift_.end(), 0.0);
-        std::vector<Touch> near;
+        std::vector<Touch> &near = near_at_rest_;
         candidates(pose, 0.0, near);
         double reach = 0.0;
         for (const Touch &t : near)
@@ -77,7 +77,7 @@ namespace softchain::chain
           {
             const int  link = first->link;
             const auto last = std::find_if(first, near.end(), [&](const Touch &t) { return t.link != link; });
-            const std::vector<Touch> group(first, last);
+            const Points group{&*first, static_cast<std::size_t>(last - first)};
             const double s = skin_compliance_[link] > 0.0 ? skin_shift(pose, link, group) : 0.0;
             skin_shift_[link] = s;
             energy += skin_compliance_[link] > 0.0 ? 0.5 * s * s / skin_compliance_[link] : 0.0;
@@ -120,7 +120,7 @@ namespace softchain::chain
   // points' normals lie along d (a_k >= 0, plane and round obstacles alike
   // to first order), so the root is bracketed from s = 0 towards -E'(0) and
   // found by Newton's method, bisecting where a step leaves the bracket.
-  double ChainContact::skin_shift(const ChainPose &pose, const int link, const std::vector<Touch> &near) const
+  double ChainContact::skin_shift(const ChainPose &pose, const int link, const Points near) const
   {
     const Eigen::Vector3d d   = skin_direction(pose, link);
     const double          k_s = 1.0 / skin_compliance_[link];

@@ -1,7 +1,5 @@
 #include <softchain/chain/chain_model.h>
 
-#include <algorithm>
-
 #include <stdexcept>
 
 namespace softchain::chain
@@ -47,7 +45,7 @@ namespace softchain::chain
 
   double ChainModel::skin_compliance(const double pressure) const
   {
-    return skin_compliance_ ? std::max((*skin_compliance_)(pressure), 0.0) : 0.0;
+    return skin_compliance_ ? (*skin_compliance_)(pressure) : 0.0;
   }
 
   ChainModel ChainModel::without_skin_compliance() const

@@ -106,6 +106,8 @@ namespace softchain::fem
       std::string               label; // "chord 2", "skin 1"
       std::string               where; // file, parameter and sample, for messages
       std::string role() const { return direction == Direction::chord ? "chord" : "skin"; }
+      // The force's keyword in the .prm: "chord" or "palm".
+      std::string keyword() const { return direction == Direction::chord ? "chord" : "palm"; }
     };
 
     // The pressure-controlled sample at `pressure` without forces, if listed.

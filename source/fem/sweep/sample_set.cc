@@ -226,17 +226,16 @@ namespace softchain::fem
                                                      const data::Point3 &tip, const double arm,
                                                      const std::string &name, const std::string &where)
     {
-      const bool        chord   = direction == SampleSet::MeasuredForceRequest::Direction::chord;
-      const std::string keyword = chord ? "chord" : "palm";
-      if (chord && fields.size() != 3)
+      SampleSet::MeasuredForceRequest r;
+      r.direction               = direction;
+      const std::string keyword = r.keyword();
+      if (direction == SampleSet::MeasuredForceRequest::Direction::chord && fields.size() != 3)
         throw data::InputError(where + ": a force 'chord F' takes one point: 'p : point : chord F'");
       if (fields.size() < 3 || fields.size() % 2 == 0)
         throw data::InputError(where + ": needs 'p' followed by 'point : " + keyword + " F' pairs");
-      SampleSet::MeasuredForceRequest r;
-      r.pressure  = number(fields[0], where);
-      r.direction = direction;
-      r.label     = name;
-      r.where     = where;
+      r.pressure = number(fields[0], where);
+      r.label    = name;
+      r.where    = where;
       for (std::size_t k = 1; k < fields.size(); k += 2)
         {
           const auto force = measured_force(fields[k + 1], keyword, where);
@@ -377,9 +376,8 @@ namespace softchain::fem
       throw data::InputError(prm.path() + ": subsection 'Samples' lists no sample");
     for (const auto &request : set.measured_requests)
       if (request.pressure != 0 && !set.inflation_at(request.pressure))
-        throw data::InputError(request.where + ": '" +
-                               (request.role() == "chord" ? std::string("chord") : std::string("palm")) +
-                               "' at " + data::canonical(request.pressure) +
+        throw data::InputError(request.where + ": '" + request.keyword() + "' at " +
+                               data::canonical(request.pressure) +
                                " Pa needs the finger inflated to that pressure alone: add it to "
                                "'Pressure sweep'");
     return set;

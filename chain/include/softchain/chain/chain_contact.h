@@ -129,9 +129,17 @@ namespace softchain::chain
     double max_penetration() const;
 
   private:
+    // A run of one link's points near the obstacles, in near_at_rest_.
+    struct Points
+    {
+      const Touch *first;
+      std::size_t  size;
+      const Touch *begin() const { return first; }
+      const Touch *end() const { return first + size; }
+    };
     // s_b of one link from its points near the obstacles (at s = 0):
     // E'(s) = k_s s + sum k_c <g_k(s)>- a_k(s) = 0, safeguarded Newton.
-    double skin_shift(const ChainPose &pose, int link, const std::vector<Touch> &near) const;
+    double skin_shift(const ChainPose &pose, int link, Points near) const;
     // The touch of surface point k of `link` against obstacle o at x, or
     // false if x is outside.
     bool touch_at(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
@@ -151,5 +159,6 @@ namespace softchain::chain
     std::vector<Touch>              touches_;
     std::vector<double>             skin_compliance_; // c_b, m/N (empty: no skin)
     std::vector<double>             skin_shift_;      // s_b at the last update
+    std::vector<Touch>              near_at_rest_;    // update's points near the obstacles at s = 0
   };
 } // namespace softchain::chain
