@@ -11,7 +11,8 @@ namespace softchain::chain
 {
   void ChainContact::set(const CollisionSurface *surface, const double pressure,
                          const std::vector<data::ObstacleRecord> &obstacles, const double stiffness,
-                         const std::vector<double> &skin_compliance)
+                         const std::vector<double> &skin_compliance, const double path,
+                         std::vector<StickAnchor> anchors)
   {
     obstacles_.clear();
     poses_.clear();
@@ -19,6 +20,7 @@ namespace softchain::chain
     skin_compliance_.clear();
     surface_   = surface;
     stiffness_ = stiffness;
+    friction_.set({}, stiffness, {});
     if (obstacles.empty())
       return;
     if (surface == nullptr)
@@ -26,15 +28,14 @@ namespace softchain::chain
                                   obstacles.front().name + "'");
     if (!(stiffness > 0.0) || !std::isfinite(stiffness))
       throw std::invalid_argument("chain contact: the contact stiffness must be positive and finite");
+    std::vector<double> coefficients;
     for (const data::ObstacleRecord &record : obstacles)
       {
-        if (record.friction != 0.0)
-          throw std::invalid_argument("chain contact: obstacle '" + record.name + "' has friction " +
-                                      std::to_string(record.friction) +
-                                      "; the chain's contact is frictionless");
         obstacles_.emplace_back(record);
-        poses_.push_back(obstacles_.back().pose(1.0));
+        poses_.push_back(obstacles_.back().pose(path));
+        coefficients.push_back(record.friction);
       }
+    friction_.set(coefficients, stiffness, std::move(anchors));
     surface->offsets_at(pressure, offsets_);
     for (const double c : skin_compliance)
       if (!(c >= 0.0) || !std::isfinite(c))
@@ -94,6 +95,8 @@ namespace softchain::chain
       }
     for (const Touch &touch : touches_)
       energy += 0.5 * stiffness_ * touch.gap * touch.gap;
+    if (friction_.any())
+      energy += friction_.update(pose, offsets_);
     return energy;
   }
 
@@ -201,13 +204,78 @@ namespace softchain::chain
   void ChainContact::jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
                                   Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const
   {
+    jacobian_row(pose, touch.link, touch.position, e, row);
+  }
+
+  void ChainContact::jacobian_row(const ChainPose &pose, const int link, const Eigen::Vector3d &position,
+                                  const Eigen::Vector3d &e,
+                                  Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const
+  {
     row.setZero();
-    for (int i = 0; i <= touch.link; ++i)
+    for (int i = 0; i <= link; ++i)
       for (int alpha = 0; alpha < 3; ++alpha)
         {
           const Eigen::Vector3d &pivot = alpha == 0 ? pose.twist_pivots[i] : pose.joint_positions[i];
-          row[3 * i + alpha] = pose.joint_axes[i].col(alpha).dot((touch.position - pivot).cross(e));
+          row[3 * i + alpha] = pose.joint_axes[i].col(alpha).dot((position - pivot).cross(e));
         }
+  }
+
+  void ChainContact::friction_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
+                                   Eigen::VectorXd &weights) const
+  {
+    std::vector<std::pair<const CoulombFriction::Grip *, int>> nonzero; // (grip, row)
+    for (const CoulombFriction::Grip &grip : friction_.grips())
+      for (int r = 0; r < 2; ++r)
+        if (grip.rows[r].second > 0.0)
+          nonzero.emplace_back(&grip, r);
+    rows.resize(static_cast<Eigen::Index>(nonzero.size()), n_angles);
+    weights.resize(static_cast<Eigen::Index>(nonzero.size()));
+    for (std::size_t j = 0; j < nonzero.size(); ++j)
+      {
+        const auto &[grip, r] = nonzero[j];
+        jacobian_row(pose, grip->link, grip->position, grip->rows[r].first, rows.row(j));
+        weights[j] = grip->rows[r].second;
+      }
+  }
+
+  // A point new in contact sticks where it entered the obstacle, on the
+  // line from its start x_s (gap g_s > 0) to its point x (gap g < 0) at
+  // the zero of the linearly interpolated gap, x_s + g_s / (g_s - g) (x - x_s).
+  std::vector<StickAnchor> ChainContact::touching_anchors(const ChainPose &pose, const std::vector<StickAnchor> &held,
+                                                          const std::vector<Eigen::Vector3d> &start) const
+  {
+    std::vector<StickAnchor> anchors;
+    for (const Touch &touch : touches_)
+      {
+        if (!(friction_.coefficient(touch.obstacle) > 0.0))
+          continue;
+        const auto same = std::find_if(held.begin(), held.end(), [&](const StickAnchor &a) {
+          return a.point == touch.point && a.obstacle == touch.obstacle;
+        });
+        Eigen::Vector3d anchor = start[touch.point];
+        if (same != held.end())
+          anchor = same->position;
+        else
+          {
+            const geometry::Obstacle &obstacle = obstacles_[touch.obstacle];
+            const Eigen::Vector3d     x =
+              pose.joint_positions[touch.link] + pose.link_rotations[touch.link] * offsets_[touch.point];
+            const double before = obstacle.body->gap(anchor, poses_[touch.obstacle]);
+            const double now    = obstacle.body->gap(x, poses_[touch.obstacle]);
+            if (before > 0.0 && now < 0.0)
+              anchor += before / (before - now) * (x - anchor);
+          }
+        anchors.push_back({touch.link, touch.point, touch.obstacle, anchor, touch.normal, touch.force.norm()});
+      }
+    return anchors;
+  }
+
+  void ChainContact::surface_positions(const ChainPose &pose, std::vector<Eigen::Vector3d> &positions) const
+  {
+    const std::vector<int> &links = surface_->links();
+    positions.resize(links.size());
+    for (std::size_t k = 0; k < links.size(); ++k)
+      positions[k] = pose.joint_positions[links[k]] + pose.link_rotations[links[k]] * offsets_[k];
   }
 
   // The normal row (weight k_c) if `normal`, and each eigenvector e of H_g
@@ -247,6 +315,13 @@ namespace softchain::chain
                                   Eigen::VectorXd &weights) const
   {
     rows_of_touches(pose, true, n_angles, rows, weights);
+    Eigen::MatrixXd friction;
+    Eigen::VectorXd friction_weights;
+    friction_rows(pose, n_angles, friction, friction_weights);
+    rows.conservativeResize(rows.rows() + friction.rows(), n_angles);
+    weights.conservativeResize(weights.size() + friction_weights.size());
+    rows.bottomRows(friction.rows()) = friction;
+    weights.tail(friction_weights.size()) = friction_weights;
     if (!has_skin())
       return;
     std::vector<Skin> links;
@@ -345,6 +420,11 @@ namespace softchain::chain
       {
         force[touch.obstacle] -= touch.force;
         moment[touch.obstacle] -= touch.position.cross(touch.force);
+      }
+    for (const CoulombFriction::Grip &grip : friction_.grips())
+      {
+        force[grip.obstacle] -= grip.force;
+        moment[grip.obstacle] -= grip.position.cross(grip.force);
       }
     std::vector<data::ObstacleWrench> wrenches(obstacles_.size());
     for (std::size_t o = 0; o < obstacles_.size(); ++o)

@@ -70,7 +70,8 @@ namespace softchain::chain
     contact_margin_ = 0.05 * (chain_.link_tip() - chain_.link_joint(0)).norm();
     const double              skin_compliance = model_.skin_compliance(load.pressure);
     const std::vector<double> skin(skin_compliance > 0.0 ? chain_.n_joints() : 0, skin_compliance);
-    contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness, skin);
+    contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness, skin,
+                 load.path, load.anchors);
   }
 
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
@@ -140,21 +141,23 @@ namespace softchain::chain
     energy_magnitude_      = 0.0;
     auto load              = loads_.rbegin();
     auto touch             = contact_.touches().rbegin();
+    auto grip              = contact_.friction().grips().rbegin();
+    const auto add_point_force = [&](const Eigen::Vector3d &x, const Eigen::Vector3d &f) {
+      force += f;
+      moment += x.cross(f);
+      dyad += x * f.transpose();
+    };
     for (int m = chain_.n_joints() - 1; m >= 0; --m)
       {
         for (; touch != contact_.touches().rend() && touch->link == m; ++touch)
-          {
-            force += touch->force;
-            moment += touch->position.cross(touch->force);
-            dyad += touch->position * touch->force.transpose();
-          }
+          add_point_force(touch->position, touch->force);
+        for (; grip != contact_.friction().grips().rend() && grip->link == m; ++grip)
+          add_point_force(grip->position, grip->force);
         for (; load != loads_.rend() && load->link == m; ++load)
           {
             const Eigen::Vector3d x =
               chain_.point_position(pose_, m, load->reference_point);
-            force += load->force;
-            moment += x.cross(load->force);
-            dyad += x * load->force.transpose();
+            add_point_force(x, load->force);
             energy_ -= load->force.dot(x);
             energy_magnitude_ += std::abs(load->force.dot(x));
           }
@@ -242,8 +245,9 @@ namespace softchain::chain
   // every surface point near an obstacle (closer than 5 % of the chain's
   // length; ChainContact::candidates) keeps its penalty, linearised:
   //   m(d) = r_f^T d + 1/2 d^T (H + C) d + sum_c 1/2 k_c <-(g_c + v_c d)>^2,
-  // r_f the residual without the contact forces, H the tangent without the
-  // contact's rows, C the touching points' curvature rows, v_c = n_c^T J_c.
+  // r_f the residual without the contact's normal forces, H the tangent
+  // without the contact's rows, C the touching points' curvature rows and
+  // the friction's (CoulombFriction, held at the iterate), v_c = n_c^T J_c.
   // Its minimiser is found by an active set (a semismooth Newton method on
   // the model): A = {c : g_c + v_c d < 0}, d from
   //   (H + C + k_c V_A^T V_A) d = -(r_f + k_c V_A^T g_A),
@@ -252,7 +256,7 @@ namespace softchain::chain
   // by the line search. The rows are added by Woodbury around H's O(n)
   // factor where H is positive definite and they are few (woodbury_pays),
   // else to the dense tangent (shifted if need be). If the curvature rows (negative weights) leave no descent
-  // direction, the step is taken without them.
+  // direction, the step is taken without them (the friction's, positive, stay).
   void ChainEquilibrium::contact_direction()
   {
     contact_.candidates(pose_, contact_margin_, near_);
@@ -271,6 +275,7 @@ namespace softchain::chain
           free_residual -= k * gaps[c] * near_row(c).transpose();
       }
     contact_.curvature_rows(pose_, chain_.n_angles(), curvature_rows_, curvature_weights_);
+    contact_.friction_rows(pose_, chain_.n_angles(), friction_rows_, friction_weights_);
     contact_.skins(pose_, chain_.n_angles(), skins_);
     alignment_.setZero(m);
     for (const ChainContact::Skin &skin : skins_)
@@ -281,7 +286,7 @@ namespace softchain::chain
     const bool factored = tangent_.factor(0.0);
     if (factored) // H^-1 r_f once; H^-1 of a row when it first enters A
       {
-        solved_rows_.resize(chain_.n_angles(), m + curvature_rows_.rows());
+        solved_rows_.resize(chain_.n_angles(), m + curvature_rows_.rows() + friction_rows_.rows());
         solved_.assign(solved_rows_.cols(), 0);
         solved_residual_.resize(chain_.n_angles());
         tangent_.solve(free_residual, solved_residual_);
@@ -400,9 +405,12 @@ namespace softchain::chain
     for (Eigen::Index c = 0; c < m; ++c)
       if (active[c])
         rows.push_back(c);
+    const Eigen::Index nc = curvature_rows_.rows();
     if (curvature)
-      for (Eigen::Index i = 0; i < curvature_rows_.rows(); ++i)
+      for (Eigen::Index i = 0; i < nc; ++i)
         rows.push_back(m + i);
+    for (Eigen::Index i = 0; i < friction_rows_.rows(); ++i)
+      rows.push_back(m + nc + i);
     const auto r        = static_cast<Eigen::Index>(rows.size());
     const bool woodbury = factored && woodbury_pays(r + skin_rows(active));
     contact_rows_.resize(r, chain_.n_angles());
@@ -415,9 +423,11 @@ namespace softchain::chain
         const Eigen::Index i = rows[j];
         if (i < m)
           contact_rows_.row(j) = near_row(i);
-        else
+        else if (i < m + nc)
           contact_rows_.row(j) = curvature_rows_.row(i - m);
-        contact_weights_[j] = i < m ? k : curvature_weights_[i - m];
+        else
+          contact_rows_.row(j) = friction_rows_.row(i - m - nc);
+        contact_weights_[j] = i < m ? k : i < m + nc ? curvature_weights_[i - m] : friction_weights_[i - m - nc];
         if (i < m) // the model's force k g_c of a point in A
           b += k * gaps[i] * near_rows_.row(i).transpose();
         if (!woodbury)
@@ -607,7 +617,7 @@ namespace softchain::chain
   {
     prepare_tangent();
     bool stable = false;
-    if (contact_.touches().empty())
+    if (!touching())
       stable = tangent_.factor(0.0);
     else
       {
@@ -723,11 +733,16 @@ namespace softchain::chain
   // + V^T diag(w) V of the contact (ChainContact).
   void ChainEquilibrium::add_contact_tangent(Eigen::MatrixXd &dense) const
   {
-    if (contact_.touches().empty())
+    if (!touching())
       return;
     Eigen::MatrixXd rows;
     Eigen::VectorXd weights;
     contact_.tangent_rows(pose_, chain_.n_angles(), rows, weights);
     dense += rows.transpose() * weights.asDiagonal() * rows;
+  }
+
+  bool ChainEquilibrium::touching() const
+  {
+    return !contact_.touches().empty() || !contact_.friction().grips().empty();
   }
 } // namespace softchain::chain

@@ -1,4 +1,5 @@
 #include <softchain/chain/chain_validation.h>
+#include <softchain/chain/frictional_load_path.h>
 #include <softchain/chain/angle_units.h>
 #include <softchain/data/statistics.h>
 #include <softchain/data/vector_of_point.h>
@@ -22,12 +23,15 @@ namespace softchain::chain
       return load;
     }
 
-    // The role a sample is reported under: a contact sample's by its obstacle.
+    // The role a sample is reported under: a contact sample's by its
+    // obstacle and whether it has friction.
     std::string reported_role(const data::Actuation &actuation)
     {
       if (actuation.role != "contact" || actuation.obstacles.empty())
         return actuation.role;
-      return actuation.obstacles.front().shape == "plane" ? "blocked force" : "grasp";
+      const data::ObstacleRecord &obstacle = actuation.obstacles.front();
+      return std::string(obstacle.shape == "plane" ? "blocked force" : "grasp") +
+             (obstacle.friction > 0.0 ? " with friction" : "");
     }
 
     // Sum of the forces the obstacles receive.
@@ -103,11 +107,12 @@ namespace softchain::chain
 
   void ChainValidation::compare(const ChainModel &model, const EquilibriumSettings &settings)
   {
-    ChainEquilibrium solver(model, settings);
+    ChainEquilibrium   solver(model, settings);
+    FrictionalLoadPath path(solver);
     for (const FemSample &s : samples_)
       {
         const auto        start = std::chrono::steady_clock::now();
-        const Equilibrium e     = solver.solve(s.load);
+        const Equilibrium e     = path.solve(s.load);
         const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
         ValidationRecord  r;
         r.sample     = s.id;
@@ -206,7 +211,8 @@ namespace softchain::chain
               ++n;
               failed += r.converged ? 0 : 1;
               times.push_back(1e6 * r.solve_time);
-              larger(r.role == "blocked force" ? blocked : grasp, std::abs(r.contact_force_error_percent()));
+              larger(r.role.rfind("blocked force", 0) == 0 ? blocked : grasp,
+                     std::abs(r.contact_force_error_percent()));
               larger(tip, 100.0 * r.position_error / finger_length_);
               larger(angle, degrees(r.orientation_error));
             }

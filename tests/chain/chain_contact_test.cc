@@ -11,6 +11,7 @@
 
 #include "box_mesh.h"
 #include "central_differences.h"
+#include "contact_fixtures.h"
 #include "uniform_finger.h"
 
 #include <catch2/catch.hpp>
@@ -18,62 +19,11 @@
 #include <cmath>
 
 using namespace softchain::chain;
-using softchain::chain::testing::uniform_finger;
+using namespace softchain::chain::testing;
 
 namespace
 {
-  softchain::data::ObstacleRecord plane(const double y)
-  {
-    softchain::data::ObstacleRecord o;
-    o.name      = "table";
-    o.shape     = "plane";
-    o.position  = {0.0, y, 0.0};
-    o.direction = {0.0, 1.0, 0.0};
-    return o;
-  }
-
-  softchain::data::ObstacleRecord cylinder(const Eigen::Vector3d &centre, const double radius)
-  {
-    softchain::data::ObstacleRecord o;
-    o.name      = "cylinder";
-    o.shape     = "cylinder";
-    o.position  = {centre.x(), centre.y(), centre.z()};
-    o.direction = {0.0, 0.0, 1.0};
-    o.radius    = radius;
-    return o;
-  }
-
-  // Points under each link of a straight chain of n links of length a (joint
-  // i at (i + 1/2) a): `per_link` along it, `depth` below the joint line,
-  // at z = +-w; with `rigid_side`, those at z = -w do not give (a skin
-  // moves only those at +w).
-  CollisionSurface palm_points(const int n, const double a, const int per_link, const double depth,
-                               const double w, const bool rigid_side = false)
-  {
-    std::vector<int>             links;
-    std::vector<Eigen::Vector3d> offsets;
-    std::vector<char>            gives;
-    for (int b = 0; b < n; ++b)
-      for (int s = 0; s < per_link; ++s)
-        for (const double z : {-w, w})
-          {
-            links.push_back(b);
-            offsets.emplace_back(a * (s + 0.5) / per_link, -depth, z);
-            gives.push_back(!rigid_side || z > 0);
-          }
-    return CollisionSurface(links, {{0.0, offsets}}, n, gives);
-  }
-
-  // Six links of 15 mm, k_phi 0.05 N m/rad, J_p p bending them down by
-  // 0.06 rad each at 30 kPa, with a palm 3 mm below the joints; pressed at
-  // 30 kPa on a table 12 mm below the joint line.
-  ChainModel finger_with_palm()
-  {
-    ChainModel model = uniform_finger(6, 0.015, {0.3, 0.2, 0.05}, {0.0, 0.0, -1e-7});
-    model.set_collision_surface(palm_points(6, 0.015, 4, 0.003, 0.005));
-    return model;
-  }
-
+  // The palm finger pressed at 30 kPa on a table 12 mm below the joint line.
   const ChainLoad on_table{3e4, {}, {plane(-0.012)}};
 
   // (sum of (x - c_1) x f over the touches)_z at `solver`'s last pose.
@@ -376,14 +326,14 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer
   const int    n     = 2;
   ChainModel   model = uniform_finger(n, 0.02, {0.3, 0.2, 0.1});
   auto with_friction = plane(-0.01);
-  with_friction.friction = 0.3;
+  with_friction.friction = -0.3;
   ChainEquilibrium solver(model);
   CHECK_THROWS_WITH(solver.solve(ChainLoad{0.0, {}, {plane(-0.01)}}),
                     Catch::Contains("no collision surface for obstacle 'table'"));
   model.set_collision_surface(palm_points(n, 0.02, 2, 0.003, 0.005));
   ChainEquilibrium frictional(model);
   CHECK_THROWS_WITH(frictional.solve(ChainLoad{0.0, {}, {with_friction}}),
-                    Catch::Contains("obstacle 'table' has friction") && Catch::Contains("frictionless"));
+                    Catch::Contains("friction coefficient must be >= 0"));
 }
 
 TEST_CASE("a finger closing on a thin plate stops on its near side: no step carries a point through it")

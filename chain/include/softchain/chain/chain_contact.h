@@ -20,10 +20,15 @@
 // The penalty k_c [N/m] per point makes the penetration k_c^-1 |f_k|: with
 // the default 1e5 N/m, 10 um under a force of 1 N on one point, and the
 // force's error relative to an exact constraint ~ k_joint / (k_c l^2), the
-// joints' stiffness against the penalty's at the lever l. An obstacle with
-// friction is refused (std::invalid_argument naming it): the chain's contact
-// has none, and a frictionless answer would be silently wrong. A moving
-// obstacle stands at the end of its motion (a static problem).
+// joints' stiffness against the penalty's at the lever l. A moving obstacle
+// stands where its motion has brought it at the load's path parameter.
+//
+// Friction (CoulombFriction): on obstacles with a coefficient, each stick
+// anchor of the load adds its regularised Coulomb potential D to U_c, its
+// force f_k at the point of the link's rigid section, and its two Hessian
+// rows J_k^T e (e along and across the slip) to the low-rank tangent. An
+// equilibrium with friction depends on the load's path; FrictionalLoadPath
+// follows it and hands each step's anchors to the next.
 //
 // The section's compliance (optional, per link): a soft finger pressed on
 // its palm gives locally -- the palm plate bends into the cavity -- before
@@ -43,6 +48,7 @@
 //     D_b = k_s + sum_k k_c (a_k^2 + g_k d^T H_g d),   a_k = n_k . d,
 // W_k the rows a_{i,alpha} of the joints up to link b (d turns with the link).
 #include <softchain/chain/collision_surface.h>
+#include <softchain/chain/coulomb_friction.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/geometry/contact_scene.h>
 
@@ -66,20 +72,37 @@ namespace softchain::chain
       Eigen::Matrix3d curvature = Eigen::Matrix3d::Zero(); // H_g, 1/m
     };
 
-    // The obstacles of one load and the surface at its pressure (`surface`
-    // must outlive the contact; none: no contact). Throws
-    // std::invalid_argument if there are obstacles but no surface, an
-    // obstacle has friction, or the stiffness is not positive.
-    // `skin_compliance` [m/N] per link (empty or 0: a rigid section).
+    // The obstacles of one load at path parameter `path` and the surface at
+    // its pressure (`surface` must outlive the contact; none: no contact),
+    // with the stick anchors of its friction. Throws std::invalid_argument
+    // if there are obstacles but no surface, a friction coefficient is
+    // negative, or the stiffness is not positive. `skin_compliance` [m/N]
+    // per link (empty or 0: a rigid section).
     void set(const CollisionSurface *surface, double pressure,
              const std::vector<data::ObstacleRecord> &obstacles, double stiffness,
-             const std::vector<double> &skin_compliance = {});
+             const std::vector<double> &skin_compliance = {}, double path = 1.0,
+             std::vector<StickAnchor> anchors = {});
     bool empty() const { return obstacles_.empty(); }
 
-    // Finds the touching points at `pose` (sorted by link) and returns U_c.
+    // Finds the touching points at `pose` (sorted by link) and the friction
+    // of the anchored points, and returns U_c (with sum D).
     double update(const ChainPose &pose);
     const std::vector<Touch> &touches() const { return touches_; }
     double                    stiffness() const { return stiffness_; }
+    const CoulombFriction    &friction() const { return friction_; }
+    // The Hessian rows of the friction at the last update (weights > 0).
+    void friction_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
+                       Eigen::VectorXd &weights) const;
+    // The anchors of a pass of a frictional load step at the last update
+    // (at `pose`): one per point touching an obstacle with friction, at its
+    // anchor in `held` (the step's start) or, new in contact, where it
+    // entered the obstacle on its way from where it stood at the step's
+    // start (`start`, surface_positions), with the touch's normal and
+    // normal force.
+    std::vector<StickAnchor> touching_anchors(const ChainPose &pose, const std::vector<StickAnchor> &held,
+                                              const std::vector<Eigen::Vector3d> &start) const;
+    // Every point of the rigid sections at `pose`, c_b + R_b L_k(p).
+    void surface_positions(const ChainPose &pose, std::vector<Eigen::Vector3d> &positions) const;
 
     // The tangent's low-rank part at the last update, J^T k_c (n n^T + g H_g) J
     // = V^T diag(w) V: rows V (one per row, n_angles columns) and weights w.
@@ -101,6 +124,8 @@ namespace softchain::chain
     // point's link (pivot s_i for psi), zero beyond.
     void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
                       Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
+    void jacobian_row(const ChainPose &pose, int link, const Eigen::Vector3d &position,
+                      const Eigen::Vector3d &e, Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
 
     // A touching link's skin at the last update: its displacement s_b, the
     // direction d_b (world), k_s, and the parts of u_b and D_b (header) that
@@ -122,8 +147,9 @@ namespace softchain::chain
     // d_b = R_b e_y of `link` at `pose`.
     Eigen::Vector3d skin_direction(const ChainPose &pose, int link) const;
 
-    // What each obstacle receives at the last update: the force [N] and its
-    // moment about the origin [N m], world axes, in the obstacles' order.
+    // What each obstacle receives at the last update (normal and friction
+    // forces): the force [N] and its moment about the origin [N m], world
+    // axes, in the obstacles' order.
     std::vector<data::ObstacleWrench> obstacle_wrenches() const;
     // The deepest penetration at the last update, m (0 without touches).
     double max_penetration() const;
@@ -160,5 +186,6 @@ namespace softchain::chain
     std::vector<double>             skin_compliance_; // c_b, m/N (empty: no skin)
     std::vector<double>             skin_shift_;      // s_b at the last update
     std::vector<Touch>              near_at_rest_;    // update's points near the obstacles at s = 0
+    CoulombFriction                 friction_;
   };
 } // namespace softchain::chain

@@ -131,6 +131,7 @@ namespace softchain::chain
     double evaluate_springs(const Eigen::VectorXd &q);
     void   accumulate_distal_loads();
     void   add_contact_tangent(Eigen::MatrixXd &dense) const;
+    bool   touching() const; // a touching point or a friction anchor at the last evaluation
     Eigen::Vector3d twist_moment(int m) const;
     void   prepare_tangent();
     bool   converged() const;
@@ -175,6 +176,8 @@ namespace softchain::chain
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> link_velocities_; // (w_b, v_b) under a step
     Eigen::MatrixXd           curvature_rows_;  // the touching points' curvature rows
     Eigen::VectorXd           curvature_weights_;
+    Eigen::MatrixXd           friction_rows_;   // the friction's rows (ChainContact::friction_rows)
+    Eigen::VectorXd           friction_weights_;
     Eigen::MatrixXd           solved_rows_;     // H^-1 of the near and curvature rows
     std::vector<char>         solved_;          // which of them are solved
     Eigen::VectorXd           solved_residual_; // H^-1 r_f

@@ -10,10 +10,12 @@
 //
 // Contact samples (role "contact": the finger pressed on obstacles, each
 // obstacle at the end of its motion) are solved with the model's collision
-// surface (ChainContact) and compared in the force the obstacles receive too,
-// 100 (|F_chain| - |F_FEM|) / |F_FEM|. Their records take the role "blocked
-// force" where the obstacle is a plane (the tip pressed on a table, the
-// actuator's classic characterisation) and "grasp" for any other shape.
+// surface (ChainContact), along their load path where an obstacle has
+// friction (FrictionalLoadPath), and compared in the force the obstacles
+// receive too, 100 (|F_chain| - |F_FEM|) / |F_FEM|. Their records take the
+// role "blocked force" where the obstacle is a plane (the tip pressed on a
+// table, the actuator's classic characterisation) and "grasp" for any other
+// shape, followed by " with friction" where it has some.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>

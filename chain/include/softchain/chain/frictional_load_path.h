@@ -1,0 +1,55 @@
+#pragma once
+// FrictionalLoadPath: an equilibrium with Coulomb friction, which depends on
+// the way the load came (CoulombFriction). Like the FEM's load path of a
+// contact sample (docs/contact.md), the load is applied in steps
+// t = 1/n, 2/n, ..., 1: pressure t p, point forces t f, the obstacles at
+// path parameter t of their motion. Each step starts from the last one's
+// angles and stick anchors, and is solved again with the normal forces and
+// normals it found until they settle (the same points touching, and the
+// largest change of a normal force and of N |dn| below `tolerance` times
+// the largest normal force): then the friction is
+// Coulomb's with the step's own normal forces, as in the FEM, where it is
+// part of one Newton system. A point that comes into contact during a step
+// sticks where it entered the obstacle on its way to the first solve that
+// finds it inside (ChainContact::touching_anchors), and keeps that anchor
+// for the step's other solves: re-anchoring it at each solve would be a
+// fixed point without contraction (a sticking point sits at its anchor). At
+// the step's end the anchors of sliding points follow them to the cone's
+// edge (the return mapping). Without friction the load is solved at once, its
+// equilibrium not depending on the path.
+#include <softchain/chain/chain_equilibrium.h>
+
+namespace softchain::chain
+{
+  struct FrictionalPathSettings
+  {
+    int    steps      = 20;   // n
+    int    max_passes = 30;   // solves per step until the normal forces settle
+    double tolerance  = 1e-6; // relative
+  };
+
+  class FrictionalLoadPath
+  {
+  public:
+    using Settings = FrictionalPathSettings;
+
+    // Keeps a reference to `solver`, which must outlive the path.
+    explicit FrictionalLoadPath(ChainEquilibrium &solver, Settings settings = {});
+
+    // The equilibrium at the end of the path; its iterations are every
+    // pass's Newton iterations. A failure names the step.
+    Equilibrium solve(const ChainLoad &load);
+    // The solves of the last path (passes over all steps).
+    int passes() const { return passes_; }
+
+    static bool has_friction(const ChainLoad &load);
+
+  private:
+    ChainLoad at(const ChainLoad &load, double t) const;
+    bool      settled(const std::vector<StickAnchor> &before, const std::vector<StickAnchor> &after) const;
+
+    ChainEquilibrium &solver_;
+    Settings          settings_;
+    int               passes_ = 0;
+  };
+} // namespace softchain::chain

@@ -1,0 +1,268 @@
+// Coulomb friction in the chain's contact (CoulombFriction, FrictionalLoadPath):
+// a joint that bends a point onto a table, sliding and sticking, against
+// the closed forms of the regularised law; the friction's energy gradient
+// and tangent against central differences, in stick and slip, on a plane and
+// a cylinder, with and without sections that give; the load path's
+// independence of its steps in pure sliding, and its frictionless shortcut.
+#include <softchain/chain/frictional_load_path.h>
+
+#include "central_differences.h"
+#include "contact_fixtures.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace softchain::chain;
+using namespace softchain::chain::testing;
+
+namespace
+{
+  // One joint at c = (a/2, 0, 0) with k_phi = k and J_p p = tau at p = 1,
+  // turning a point l ahead of it down onto a table h below the joint line
+  // (the frictionless closed form is in chain_contact_test.cc).
+  constexpr double a = 0.1, l = a / 2, k = 0.1, tau = -0.08, h = 0.02, k_c = 1e5;
+
+  ChainModel one_joint()
+  {
+    ChainModel model = uniform_finger(1, a, {1.0, 1.0, k}, {0.0, 0.0, tau});
+    model.set_collision_surface(CollisionSurface({0}, {{0.0, {Eigen::Vector3d(l, 0, 0)}}}, 1));
+    return model;
+  }
+
+  softchain::data::ObstacleRecord rough_table(const double mu)
+  {
+    softchain::data::ObstacleRecord table = plane(-h);
+    table.friction                        = mu;
+    return table;
+  }
+
+  // The root of f on [low, high] where f(low) and f(high) differ in sign.
+  template <typename F>
+  double bisect(const F &f, double low, double high)
+  {
+    const bool rising = f(high) > 0.0;
+    for (int i = 0; i < 200; ++i)
+      {
+        const double middle = 0.5 * (low + high);
+        ((f(middle) > 0.0) == rising ? high : low) = middle;
+      }
+    return 0.5 * (low + high);
+  }
+
+  // Joint residual k phi - t tau - M_z(phi) of a point at c + l (cos phi,
+  // sin phi) carrying the force (F_x, F_y): M_z = l cos(phi) F_y - l sin(phi) F_x.
+  double joint_residual(double phi, double t, double force_x, double force_y)
+  {
+    return k * phi - t * tau - (l * std::cos(phi) * force_y - l * std::sin(phi) * force_x);
+  }
+
+  // Anchors at the touching points of `solver`'s last evaluation, shifted
+  // along the tangent e1 = n x e_z by `slip` times each one's elastic range
+  // mu N / k_t, with N = the touch's normal force.
+  std::vector<StickAnchor> shifted_anchors(const ChainEquilibrium &solver, double mu, const std::vector<double> &slips)
+  {
+    std::vector<Eigen::Vector3d> x;
+    solver.contact().surface_positions(solver.pose(), x);
+    std::vector<StickAnchor> anchors;
+    const auto              &touches = solver.contact().touches();
+    for (std::size_t i = 0; i < touches.size(); ++i)
+      {
+        const auto           &t     = touches[i];
+        const double          N     = t.force.norm();
+        const Eigen::Vector3d along = t.normal.cross(Eigen::Vector3d::UnitZ()).normalized();
+        const double          slip  = slips[i % slips.size()] * mu * N / solver.contact().stiffness();
+        anchors.push_back({t.link, t.point, t.obstacle, x[t.point] - slip * along, t.normal, N});
+      }
+    return anchors;
+  }
+} // namespace
+
+TEST_CASE("a joint slides a point along a rough table: Coulomb's closed form with the settled normal force")
+{
+  // From the touch on (phi = -asin(h / l) at t = 0.51) the point slides
+  // towards -x, so the table holds it back with mu N along +x:
+  //   k phi - tau - N l (cos phi - mu sin phi) = 0,   N = -k_c (l sin phi + h).
+  // mu = 0.4 is below the ratio T / N = |tan phi| ~ 0.44 that sticking
+  // would need, so the point slides from the touch on.
+  const double        mu = 0.4;
+  const ChainModel    model = one_joint();
+  EquilibriumSettings settings;
+  settings.contact_stiffness = k_c;
+  ChainEquilibrium   solver(model, settings);
+  FrictionalLoadPath path(solver);
+  const ChainLoad    load{1.0, {}, {rough_table(mu)}};
+  const Equilibrium  e = path.solve(load);
+  REQUIRE(e.converged);
+  const auto normal = [&](double phi) { return -k_c * (l * std::sin(phi) + h); };
+  const double phi  = bisect([&](double p) { return joint_residual(p, 1.0, mu * normal(p), normal(p)); },
+                             -std::asin(h / l), tau / k);
+  // The friction uses the normal force of the pass before the last, which
+  // differs from the last one's by at most the path's tolerance (1e-6
+  // relative); phi moves by about that times the friction's share of M_z.
+  CHECK(e.angles[2] == Approx(phi).epsilon(1e-6));
+  const auto wrench = solver.contact().obstacle_wrenches();
+  REQUIRE(wrench.size() == 1);
+  CHECK(wrench[0].force[1] == Approx(-normal(phi)).epsilon(1e-5));
+  CHECK(wrench[0].force[0] == Approx(-mu * normal(phi)).epsilon(1e-5)); // dragged along -x
+  REQUIRE(solver.contact().friction().grips().size() == 1);
+  CHECK(solver.contact().friction().grips()[0].sliding);
+  // Without friction the table takes (k phi - tau) / (l cos phi): about
+  // 15 % more, since the friction's moment takes the rest.
+  ChainEquilibrium frictionless(model, settings);
+  REQUIRE(frictionless.solve(ChainLoad{1.0, {}, {plane(-h)}}).converged);
+  CHECK(frictionless.contact().obstacle_wrenches()[0].force[1] < 1.1 * wrench[0].force[1]);
+
+  // Sliding all the way, the answer does not depend on the steps.
+  for (const int steps : {3, 7, 50})
+    {
+      ChainEquilibrium   other(model, settings);
+      FrictionalLoadPath other_path(other, {steps, 30, 1e-6});
+      const Equilibrium  f = other_path.solve(load);
+      REQUIRE(f.converged);
+      CHECK(f.angles[2] == Approx(phi).epsilon(1e-6));
+    }
+}
+
+TEST_CASE("a point on a rough table sticks where it entered it")
+{
+  // mu = 1 holds the point (T / N ~ 0.44 < 1). It enters the table within
+  // the step from t = 0.5 (phi = tau / 2k = -0.4, above the table: x_s = c
+  // + l (cos 0.4, -sin 0.4)) to 0.55, where the first solve, frictionless
+  // for it, puts it at x_1 (k phi - 0.55 tau - N l cos phi = 0). It sticks
+  // at the zero of the gap interpolated from x_s to x_1, a = x_s + g_s /
+  // (g_s - g_1) (x_1 - x_s), and the penalty holds it there from then on,
+  // F = -k_c (x - a_x, l sin phi + h).
+  const double        mu = 1.0;
+  const ChainModel    model = one_joint();
+  EquilibriumSettings settings;
+  settings.contact_stiffness = k_c;
+  ChainEquilibrium   solver(model, settings);
+  FrictionalLoadPath path(solver);
+  const Equilibrium  e = path.solve(ChainLoad{1.0, {}, {rough_table(mu)}});
+  REQUIRE(e.converged);
+  // Relative to the joint.
+  const auto point   = [&](double phi) { return Eigen::Vector2d(l * std::cos(phi), l * std::sin(phi)); };
+  const auto force_y = [&](double phi) { return -k_c * (point(phi).y() + h); };
+  const Eigen::Vector2d start = point(-0.4);
+  const double          touch = -std::asin(h / l);
+  const Eigen::Vector2d first =
+    point(bisect([&](double p) { return joint_residual(p, 0.55, 0.0, force_y(p)); }, touch, 0.55 * tau / k));
+  const double before = start.y() + h, after = first.y() + h;
+  const double anchor = start.x() + before / (before - after) * (first.x() - start.x());
+  const auto   force_x = [&](double phi) { return -k_c * (point(phi).x() - anchor); };
+  const double phi = bisect([&](double p) { return joint_residual(p, 1.0, force_x(p), force_y(p)); }, touch,
+                            tau / k);
+  // The settled normal force (1e-6) enters the cone's test only: in stick
+  // the answer is the penalty's, to round-off of the solves (tolerance
+  // 1e-10) amplified by the stiff tangential penalty.
+  CHECK(e.angles[2] == Approx(phi).epsilon(1e-9));
+  REQUIRE(std::abs(force_x(phi)) < mu * force_y(phi)); // inside the cone: it sticks
+  const auto &grips = solver.contact().friction().grips();
+  REQUIRE(grips.size() == 1);
+  CHECK_FALSE(grips[0].sliding);
+  CHECK(grips[0].force.x() == Approx(force_x(phi)).margin(1e-5 * force_y(phi)));
+  // The friction carries a real share: T / N ~ 0.43 (0 without friction).
+  CHECK(force_x(phi) > 0.3 * force_y(phi));
+}
+
+TEST_CASE("friction: residual = energy gradient, tangent = central differences, in stick and slip")
+{
+  const int    n  = 4;
+  const double mu = 0.5;
+  for (const double skin : {0.0, 0.01})
+    for (auto obstacle : {plane(-0.012), cylinder({0.05, -0.016, 0.0}, 0.008)})
+      {
+        INFO("skin compliance " << skin << " m/N, " << obstacle.shape);
+        obstacle.friction = mu;
+        ChainModel model  = uniform_finger(n, 0.02, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
+        model.set_collision_surface(palm_points(n, 0.02, 3, 0.004, 0.006, skin > 0.0));
+        if (skin > 0.0)
+          model.set_skin_compliance(PiecewiseLinear({0.0}, {skin}));
+        // A soft penalty (penetrations ~1 mm, elastic slips mu N / k_t ~
+        // 0.5 mm), so that no point lies within the differences' reach of a
+        // kink (g = 0 or |delta| = delta_s).
+        EquilibriumSettings soft;
+        soft.contact_stiffness       = 100.0;
+        soft.woodbury_rows_per_angle = 1.0;
+        ChainEquilibrium solver(model, soft);
+        softchain::data::ObstacleRecord frictionless = obstacle;
+        frictionless.friction                        = 0.0;
+        const Equilibrium base = solver.solve(ChainLoad{1e4, {}, {frictionless}});
+        REQUIRE(base.converged);
+        // Anchors half within their elastic range (stick), half beyond (slip).
+        ChainLoad load{1e4, {}, {obstacle}};
+        load.anchors = shifted_anchors(solver, mu, {0.3, 3.0});
+        REQUIRE(load.anchors.size() >= 2);
+        Eigen::VectorXd q = base.angles;
+        for (int i = 0; i < 3 * n; ++i)
+          q[i] += 2e-4 * std::sin(1.0 + i);
+        solver.set_load(load);
+        const Eigen::VectorXd r = solver.residual(q);
+        const auto &grips = solver.contact().friction().grips();
+        REQUIRE(grips.size() == load.anchors.size());
+        int sliding = 0;
+        for (const auto &g : grips)
+          {
+            const double elastic = mu * load.anchors[&g - grips.data()].normal_force / 100.0;
+            REQUIRE(std::abs(g.slip - elastic) > 0.05 * elastic); // clear of the cone's kink
+            sliding += g.sliding;
+          }
+        CHECK(sliding > 0);
+        CHECK(sliding < static_cast<int>(grips.size()));
+        // Central differences err by h^2 |U'''| / 6 + eps |U| / h, ~1e-9 here.
+        const Eigen::VectorXd g = testing::energy_gradient(solver, q, 1e-6);
+        CHECK((r - g).lpNorm<Eigen::Infinity>() < 1e-7 * r.lpNorm<Eigen::Infinity>());
+        const Eigen::MatrixXd H = solver.tangent(q);
+        const Eigen::MatrixXd D = testing::central_differences(solver, q, 1e-7);
+        CHECK((H - D).lpNorm<Eigen::Infinity>() < 1e-6 * H.lpNorm<Eigen::Infinity>());
+        // The obstacle receives the friction too: its force has a part
+        // along the table.
+        Eigen::Vector3d friction = Eigen::Vector3d::Zero();
+        for (const auto &grip : grips)
+          friction -= grip.force;
+        const auto wrench = solver.contact().obstacle_wrenches();
+        double     normal_x = 0.0;
+        for (const auto &t : solver.contact().touches())
+          normal_x -= t.force.x();
+        CHECK(wrench[0].force[0] == Approx(normal_x + friction.x()).margin(1e-12));
+        CHECK(std::abs(friction.x()) > 1e-3 * std::abs(wrench[0].force[1]));
+        // The Woodbury step with the friction's rows is the dense step of
+        // the same active-set model ...
+        const Eigen::VectorXd step = solver.newton_step(q);
+        EquilibriumSettings   dense_only = soft;
+        dense_only.woodbury_rows_per_angle = 0.0;
+        ChainEquilibrium dense_solver(model, dense_only);
+        dense_solver.set_load(load);
+        const Eigen::VectorXd dense_step = dense_solver.newton_step(q);
+        CHECK((step - dense_step).lpNorm<Eigen::Infinity>() < 1e-9 * dense_step.lpNorm<Eigen::Infinity>());
+        // ... and the exact tangent's Newton step where that brings no other
+        // point into contact (else the model's active set takes it in).
+        Eigen::VectorXd dense = -H.llt().solve(r);
+        dense *= std::min(1.0, 1.5 / dense.lpNorm<Eigen::Infinity>());
+        const auto touching = solver.contact().touches().size();
+        solver.residual(q + dense);
+        if (solver.contact().touches().size() == touching)
+          CHECK((step - dense).lpNorm<Eigen::Infinity>() < 1e-9 * dense.lpNorm<Eigen::Infinity>());
+      }
+}
+
+TEST_CASE("a load without friction takes one solve; bad friction input is named")
+{
+  const ChainModel    model = one_joint();
+  EquilibriumSettings settings;
+  settings.contact_stiffness = k_c;
+  ChainEquilibrium   solver(model, settings), direct(model, settings);
+  FrictionalLoadPath path(solver);
+  const ChainLoad    load{1.0, {}, {plane(-h)}};
+  const Equilibrium  e = path.solve(load);
+  REQUIRE(e.converged);
+  CHECK(path.passes() == 1);
+  CHECK(e.angles == direct.solve(load).angles);
+
+  ChainLoad anchored{1.0, {}, {rough_table(0.5)}};
+  anchored.anchors.push_back({0, 0, 3, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0});
+  CHECK_THROWS_WITH(solver.solve(anchored), Catch::Contains("names obstacle 3 of 1"));
+  CHECK_THROWS_WITH(path.solve(anchored), Catch::Contains("starts at rest"));
+  CHECK_THROWS_AS(FrictionalLoadPath(solver, {0, 30, 1e-6}), std::invalid_argument);
+}
