@@ -43,6 +43,13 @@ namespace softchain::chain
                       "contact force: measured (c_s(p) the reduction fitted to the skin samples, "
                       "<label>_skin_compliance.csv; rigid sections without it), none (rigid "
                       "sections), or a value in m/N");
+      section.declare("Surface subdivisions", "3",
+                      "intervals per edge of the database mesh's outer faces on which the "
+                      "collision surface takes its points: 1 takes the vertices, n a grid of "
+                      "n x n intervals on each face (bilinear in its deformed vertices)");
+      section.declare("Friction load steps", "20",
+                      "equal steps of the load path along which a contact sample with friction "
+                      "is solved from rest (its stick anchors carried from step to step)");
       section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");
       section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
       section.declare("Maximum Newton iterations", "50", "per equilibrium");
@@ -94,6 +101,10 @@ namespace softchain::chain
         section.require(*p.skin_compliance >= 0, "Skin compliance",
                         "must be measured, none or a compliance >= 0 in m/N");
       }
+    p.surface_subdivisions = section.get_integer("Surface subdivisions");
+    section.require(p.surface_subdivisions >= 1, "Surface subdivisions", "must be >= 1");
+    p.friction_path.steps = section.get_integer("Friction load steps");
+    section.require(p.friction_path.steps >= 1, "Friction load steps", "must be >= 1");
     p.newton.max_iterations = section.get_integer("Maximum Newton iterations");
     section.require(p.newton.max_iterations >= 1, "Maximum Newton iterations", "must be >= 1");
     return p;

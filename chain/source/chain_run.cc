@@ -150,16 +150,16 @@ namespace softchain::chain
     // where the links are, rigid otherwise (the baseline). Only if the
     // database holds contact samples.
     void add_collision_surfaces(std::vector<ChainModel> &models, const data::ActuationDatabase &database,
-                                const EquilibriumSettings &settings)
+                                const ChainParameters &p)
     {
       const SurfaceSamples samples = SurfaceSamples::read(database);
       if (!samples.contact)
         return;
       for (ChainModel &model : models)
-        model.set_collision_surface(
-          model.has_link_geometry()
-            ? pressure_shaped_collision_surface(model, database.mesh(), samples.inflated, settings)
-            : rigid_collision_surface(model, database.mesh()));
+        model.set_collision_surface(model.has_link_geometry()
+                                      ? pressure_shaped_collision_surface(model, database.mesh(), samples.inflated,
+                                                                          p.newton, p.surface_subdivisions)
+                                      : rigid_collision_surface(model, database.mesh(), p.surface_subdivisions));
     }
 
     // Blocked force and grasp per model, if there are contact samples.
@@ -211,7 +211,7 @@ namespace softchain::chain
       std::vector<std::string> names;
       for (const ChainModel &model : models)
         {
-          validation.compare(model, p.newton);
+          validation.compare(model, p.newton, p.friction_path);
           names.push_back(model.name());
         }
       if (validation.records().empty())
@@ -287,7 +287,7 @@ namespace softchain::chain
                                .read_model(selected.name(), selected.chain().tip(), p.stiffness_column,
                                            p.in_pressure, p.rigid_where_missing, false);
     models.push_back(baseline_of(plain, mesh, p.baseline_youngs_modulus));
-    add_collision_surfaces(models, database, p.newton);
+    add_collision_surfaces(models, database, p);
     const int failed = validate(models, validation, p, files);
     compare_protocol(models, database, p, files);
     if (export_mjcf)

@@ -1,5 +1,4 @@
 #include <softchain/chain/chain_validation.h>
-#include <softchain/chain/frictional_load_path.h>
 #include <softchain/chain/angle_units.h>
 #include <softchain/data/statistics.h>
 #include <softchain/data/vector_of_point.h>
@@ -105,10 +104,11 @@ namespace softchain::chain
     });
   }
 
-  void ChainValidation::compare(const ChainModel &model, const EquilibriumSettings &settings)
+  void ChainValidation::compare(const ChainModel &model, const EquilibriumSettings &settings,
+                                const FrictionalPathSettings &friction_path)
   {
     ChainEquilibrium   solver(model, settings);
-    FrictionalLoadPath path(solver);
+    FrictionalLoadPath path(solver, friction_path);
     for (const FemSample &s : samples_)
       {
         const auto        start = std::chrono::steady_clock::now();

@@ -2,6 +2,7 @@
 #include <softchain/data/vector_of_point.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <array>
 #include <map>
@@ -24,21 +25,99 @@ namespace softchain::chain
       return nodes_per_cell == 8 ? hexahedron : tetrahedron;
     }
 
-    // Every face of the mesh with the number of cells that share it.
-    std::map<Face, int> face_counts(const data::MeshRecord &mesh)
+    // Every face of the mesh (keyed by its sorted nodes) with the number of
+    // cells that share it and its vertices in the first one's local order.
+    struct FaceUse
     {
-      std::map<Face, int> counts;
-      const int           k = mesh.nodes_per_cell;
+      int                       cells = 0;
+      std::vector<std::int64_t> vertices;
+    };
+
+    std::map<Face, FaceUse> face_uses(const data::MeshRecord &mesh)
+    {
+      std::map<Face, FaceUse> uses;
+      const int               k = mesh.nodes_per_cell;
       for (std::size_t c = 0; c + k <= mesh.cells.size(); c += k)
         for (const std::vector<int> &local : local_faces(k))
           {
+            std::vector<std::int64_t> vertices;
+            for (const int v : local)
+              vertices.push_back(mesh.cells[c + v]);
             Face face{-1, -1, -1, -1};
-            for (std::size_t v = 0; v < local.size(); ++v)
-              face[v] = mesh.cells[c + local[v]];
-            std::sort(face.begin(), face.begin() + local.size());
-            ++counts[face];
+            std::copy(vertices.begin(), vertices.end(), face.begin());
+            std::sort(face.begin(), face.begin() + vertices.size());
+            FaceUse &use = uses[face];
+            if (use.cells++ == 0)
+              use.vertices = std::move(vertices);
           }
-      return counts;
+      return uses;
+    }
+
+    // The boundary faces that are not cavity faces, vertices in local order
+    // (a quadrilateral's lexicographic: the unit square's (0,0), (1,0),
+    // (0,1), (1,1)).
+    std::vector<std::vector<std::int64_t>> outer_faces(const data::MeshRecord &mesh)
+    {
+      std::set<std::int64_t> cavity;
+      for (const auto &triangle : mesh.cavity_triangles)
+        cavity.insert(triangle.begin(), triangle.end());
+      std::vector<std::vector<std::int64_t>> outer;
+      for (const auto &[face, use] : face_uses(mesh))
+        if (use.cells == 1 && !std::all_of(use.vertices.begin(), use.vertices.end(),
+                                           [&](std::int64_t v) { return cavity.count(v) > 0; }))
+          outer.push_back(use.vertices);
+      return outer;
+    }
+
+    // A point of the outer surface: a combination sum w_i y_i of the
+    // vertices of the face it lies on, so that it follows the deformed mesh.
+    using Weights = std::vector<std::pair<std::int64_t, double>>;
+
+    data::Point3 combination(const Weights &weights, const std::vector<data::Point3> &y)
+    {
+      data::Point3 x{0.0, 0.0, 0.0};
+      for (const auto &[node, w] : weights)
+        for (int i = 0; i < 3; ++i)
+          x[i] += w * y[node][i];
+      return x;
+    }
+
+    // The points of the outer faces on a grid of `subdivisions` intervals
+    // per edge: bilinear on a quadrilateral, barycentric on a triangle. A point shared by faces
+    // is kept once (keyed by its weights); those carried only by clamped
+    // base vertices are left out.
+    std::vector<Weights> outer_surface_points(const data::MeshRecord &mesh, const int subdivisions)
+    {
+      const std::set<std::int64_t> base(mesh.base_nodes.begin(), mesh.base_nodes.end());
+      std::map<std::vector<std::pair<std::int64_t, long>>, Weights> points;
+      const auto add = [&](const Weights &combination) {
+        Weights                                  kept;
+        std::vector<std::pair<std::int64_t, long>> key;
+        for (const auto &[node, w] : combination)
+          if (w > 0.0)
+            {
+              kept.emplace_back(node, w);
+              key.emplace_back(node, std::lround(w * 1e9));
+            }
+        std::sort(key.begin(), key.end());
+        if (!std::all_of(kept.begin(), kept.end(), [&](const auto &nw) { return base.count(nw.first) > 0; }))
+          points.emplace(key, kept);
+      };
+      const double m = subdivisions;
+      for (const std::vector<std::int64_t> &face : outer_faces(mesh))
+        for (int i = 0; i <= subdivisions; ++i)
+          for (int j = 0; j <= subdivisions; ++j)
+            {
+              const double u = i / m, v = j / m;
+              if (face.size() == 4)
+                add({{face[0], (1 - u) * (1 - v)}, {face[1], u * (1 - v)}, {face[2], (1 - u) * v}, {face[3], u * v}});
+              else if (i + j <= subdivisions)
+                add({{face[0], 1 - u - v}, {face[1], u}, {face[2], v}});
+            }
+      std::vector<Weights> all;
+      for (auto &[key, weights] : points)
+        all.push_back(std::move(weights));
+      return all;
     }
 
     // Points of the outer surface on links, sorted by link, and whether each
@@ -47,28 +126,30 @@ namespace softchain::chain
     // (the solid base fill and tip cap do not give; ChainContact's skin).
     struct SurfacePoints
     {
-      std::vector<std::int64_t> nodes;
-      std::vector<int>          links;
-      std::vector<char>         gives;
+      std::vector<Weights> points;
+      std::vector<int>     links;
+      std::vector<char>    gives;
     };
 
-    SurfacePoints surface_points(const KinematicChain &chain, const data::MeshRecord &mesh)
+    SurfacePoints surface_points(const KinematicChain &chain, const data::MeshRecord &mesh, const int subdivisions)
     {
-      std::vector<std::pair<int, std::int64_t>> by_link;
-      for (const std::int64_t node : outer_surface_nodes(mesh))
+      std::vector<std::pair<int, Weights>> by_link;
+      for (Weights &point : outer_surface_points(mesh, subdivisions))
         {
-          const int link = chain.link_of(data::vector_of(mesh.X[node]));
+          const int link = chain.link_of(data::vector_of(combination(point, mesh.X)));
           if (link >= 0)
-            by_link.emplace_back(link, node);
+            by_link.emplace_back(link, std::move(point));
         }
-      std::sort(by_link.begin(), by_link.end());
+      std::stable_sort(by_link.begin(), by_link.end(),
+                       [](const auto &a, const auto &b) { return a.first < b.first; });
       const auto [low, high] = cavity_span(mesh);
       SurfacePoints points;
-      for (const auto &[link, node] : by_link)
+      for (auto &[link, point] : by_link)
         {
+          const double x = combination(point, mesh.X)[0];
           points.links.push_back(link);
-          points.nodes.push_back(node);
-          points.gives.push_back(mesh.X[node][0] > low && mesh.X[node][0] < high);
+          points.gives.push_back(x > low && x < high);
+          points.points.push_back(std::move(point));
         }
       return points;
     }
@@ -78,11 +159,11 @@ namespace softchain::chain
                                                   const std::vector<data::Point3> &y)
     {
       std::vector<Eigen::Vector3d> offsets;
-      for (std::size_t k = 0; k < points.nodes.size(); ++k)
+      for (std::size_t k = 0; k < points.points.size(); ++k)
         {
           const int b = points.links[k];
           offsets.push_back(pose.link_rotations[b].transpose() *
-                            (data::vector_of(y[points.nodes[k]]) - pose.joint_positions[b]));
+                            (data::vector_of(combination(points.points[k], y)) - pose.joint_positions[b]));
         }
       return offsets;
     }
@@ -109,29 +190,19 @@ namespace softchain::chain
 
   std::vector<std::int64_t> outer_surface_nodes(const data::MeshRecord &mesh)
   {
-    std::set<std::int64_t> cavity;
-    for (const auto &triangle : mesh.cavity_triangles)
-      cavity.insert(triangle.begin(), triangle.end());
     const std::set<std::int64_t> base(mesh.base_nodes.begin(), mesh.base_nodes.end());
     std::set<std::int64_t>       outer;
-    for (const auto &[face, count] : face_counts(mesh))
-      {
-        if (count != 1)
-          continue;
-        const bool on_cavity = std::all_of(face.begin(), face.end(), [&](std::int64_t v) {
-          return v < 0 || cavity.count(v) > 0;
-        });
-        if (!on_cavity)
-          for (const std::int64_t v : face)
-            if (v >= 0 && base.count(v) == 0)
-              outer.insert(v);
-      }
+    for (const std::vector<std::int64_t> &face : outer_faces(mesh))
+      for (const std::int64_t v : face)
+        if (base.count(v) == 0)
+          outer.insert(v);
     return {outer.begin(), outer.end()};
   }
 
-  CollisionSurface rigid_collision_surface(const ChainModel &model, const data::MeshRecord &mesh)
+  CollisionSurface rigid_collision_surface(const ChainModel &model, const data::MeshRecord &mesh,
+                                           const int subdivisions)
   {
-    const SurfacePoints points = surface_points(model.chain(), mesh);
+    const SurfacePoints points = surface_points(model.chain(), mesh, subdivisions);
     CollisionSurface::Row rest{0.0, offsets_in_links(points, model.chain().rest_pose(), mesh.X)};
     return CollisionSurface(points.links, {rest}, model.chain().n_joints(), points.gives);
   }
@@ -151,9 +222,9 @@ namespace softchain::chain
 
   CollisionSurface pressure_shaped_collision_surface(const ChainModel &model, const data::MeshRecord &mesh,
                                                      const InflatedNodes       &inflated,
-                                                     const EquilibriumSettings &settings)
+                                                     const EquilibriumSettings &settings, const int subdivisions)
   {
-    const SurfacePoints                points = surface_points(model.chain(), mesh);
+    const SurfacePoints                points = surface_points(model.chain(), mesh, subdivisions);
     std::vector<CollisionSurface::Row> rows{
       {0.0, offsets_in_links(points, model.chain().rest_pose(), mesh.X)}};
     ChainEquilibrium equilibrium(model, settings);

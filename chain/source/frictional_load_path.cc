@@ -1,5 +1,7 @@
 #include <softchain/chain/frictional_load_path.h>
 
+#include <softchain/chain/aitken_relaxation.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -30,23 +32,30 @@ namespace softchain::chain
     return step;
   }
 
+  // The largest change of a point's normal force (0 where it does not
+  // touch) and of N |dn| against the largest normal force: a point that
+  // grazes an obstacle may touch in one solve and not in the next, which
+  // changes nothing once its force is below the tolerance.
   bool FrictionalLoadPath::settled(const std::vector<StickAnchor> &before,
                                    const std::vector<StickAnchor> &after) const
   {
-    if (before.size() != after.size())
-      return false;
     double largest = 0.0, change = 0.0;
-    for (const StickAnchor &a : after)
-      {
-        const auto same = std::find_if(before.begin(), before.end(), [&](const StickAnchor &b) {
-          return b.point == a.point && b.obstacle == a.obstacle;
-        });
-        if (same == before.end())
-          return false;
-        largest = std::max(largest, a.normal_force);
-        change  = std::max({change, std::abs(a.normal_force - same->normal_force),
-                            a.normal_force * (a.normal - same->normal).norm()});
-      }
+    const auto compare = [&](const std::vector<StickAnchor> &these, const std::vector<StickAnchor> &those) {
+      for (const StickAnchor &a : these)
+        {
+          const auto same = std::find_if(those.begin(), those.end(), [&](const StickAnchor &b) {
+            return b.point == a.point && b.obstacle == a.obstacle;
+          });
+          largest = std::max(largest, a.normal_force);
+          if (same == those.end())
+            change = std::max(change, a.normal_force);
+          else
+            change = std::max({change, std::abs(a.normal_force - same->normal_force),
+                               a.normal_force * (a.normal - same->normal).norm()});
+        }
+    };
+    compare(after, before);
+    compare(before, after);
     return change <= settings_.tolerance * largest;
   }
 
@@ -76,7 +85,8 @@ namespace softchain::chain
           }
         solver_.contact().surface_positions(solver_.pose(), start);
         at_step.anchors = anchors;
-        bool done       = false;
+        bool                 done = false;
+        AitkenRelaxation relaxation;
         for (int pass = 0; pass < settings_.max_passes && !done; ++pass)
           {
             result = step == 1 && pass == 0 ? solver_.solve(at_step) : solver_.solve(at_step, q);
@@ -92,8 +102,9 @@ namespace softchain::chain
             q = result.angles;
             std::vector<StickAnchor> touching =
               solver_.contact().touching_anchors(solver_.pose(), at_step.anchors, start);
-            done            = settled(at_step.anchors, touching);
-            at_step.anchors = std::move(touching);
+            done = settled(at_step.anchors, touching);
+            if (!done)
+              at_step.anchors = relaxation.next(at_step.anchors, touching);
           }
         if (!done)
           {

@@ -185,19 +185,27 @@ namespace softchain::chain
       if (std::isfinite(value))
         max = std::isfinite(max) ? std::max(max, value) : value;
     };
+    std::optional<data::CsvTable> all; // every scene's rows
     for (const geometry::Obstacle &o : geometry::ContactScene::read(prm).obstacles)
       {
         if (!has_converged_contact(output_dir, o.name()))
           continue;
         const data::CsvTable table = *simulate_scene(o.description, database_path, output_dir);
+        if (!all)
+          all.emplace(table.columns());
         for (std::size_t r = 0; r < table.n_rows(); ++r, ++n)
           {
             larger(o.description.shape == "plane" ? blocked : grasp, std::abs(table.number(r, "difference_percent")));
             larger(tip, table.number(r, "tip_distance_percent_L"));
+            std::vector<std::string> cells;
+            for (const std::string &c : table.columns())
+              cells.push_back(table.text(r, c));
+            all->add_row(cells);
           }
       }
     if (n == 0)
       return 0;
+    all->write(data::SimulateFileSet(output_dir, "free").contact_vs_fem);
     const std::string file = data::ChainFileSet(output_dir).grasp_summary;
     write_mujoco_row(file, {"mujoco", data::CsvTable::cell(n), "0", data::CsvTable::cell(blocked),
                             data::CsvTable::cell(grasp), data::CsvTable::cell(tip), "nan", "nan"});

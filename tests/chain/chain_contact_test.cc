@@ -323,6 +323,42 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer
       CHECK(solid.size() == std::size_t(7 * 5 * 5 - 5 * 3 * 3 - 5 * 5));
     }
 
+  // Subdivided, a face's grid of m x m intervals: the boundary of the
+  // (m nx + 1)(m ny + 1)(m nz + 1) lattice less the base face's points (on
+  // a tetrahedral box the triangles' grids for m = 2 are the quadrilaterals'
+  // too: a diagonal's midpoint is the face's centre). Each point lies on the
+  // box's surface, and the links carry it there.
+  for (const bool tetrahedra : {false, true})
+    {
+      testing::BoxMeshSpec spec;
+      spec.nx = 6, spec.ny = 4, spec.nz = 4, spec.tetrahedra = tetrahedra;
+      const auto       mesh  = testing::box_mesh(spec);
+      // Joints from the base face on, so that every point has a link.
+      const ChainModel box("box",
+                           KinematicChain({{0.0, 0.0, 0.0}, {0.03, 0.0, 0.0}, {0.06, 0.0, 0.0}},
+                                          Eigen::Vector3d(spec.length, 0.0, 0.0)),
+                           JointStiffness(std::vector<Eigen::Vector3d>(3, Eigen::Vector3d(0.3, 0.2, 0.1))),
+                           PressureActuation(Eigen::VectorXd::Zero(9)));
+      const int        m     = 2;
+      const auto       fine  = rigid_collision_surface(box, mesh, m);
+      CHECK(fine.n_points() == 13 * 9 * 9 - 11 * 7 * 7 - 9 * 9);
+      CHECK(rigid_collision_surface(box, mesh, 1).n_points() ==
+            static_cast<int>(outer_surface_nodes(mesh).size()));
+      std::vector<Eigen::Vector3d> offsets;
+      fine.offsets_at(0.0, offsets);
+      const ChainPose rest = box.chain().rest_pose();
+      int             on_surface = 0;
+      for (int k = 0; k < fine.n_points(); ++k)
+        {
+          const int             b = fine.links()[k];
+          const Eigen::Vector3d x = rest.joint_positions[b] + rest.link_rotations[b] * offsets[k];
+          on_surface += std::abs(x.x() - spec.length) < 1e-12 || std::abs(x.y() - spec.y0) < 1e-12 ||
+                        std::abs(x.y() - spec.y0 - spec.height) < 1e-12 ||
+                        std::abs(std::abs(x.z()) - spec.width / 2) < 1e-12;
+        }
+      CHECK(on_surface == fine.n_points());
+    }
+
   const int    n     = 2;
   ChainModel   model = uniform_finger(n, 0.02, {0.3, 0.2, 0.1});
   auto with_friction = plane(-0.01);

@@ -229,18 +229,20 @@ namespace
   }
 
   // A contact sample made by `model` itself: its surface (the mesh's outer
-  // surface on rigid links) pressed on `o`, the nodes where its links carry
-  // them, the obstacle's wrench what the chain's contact gives it.
+  // surface on rigid links, as run_chain subdivides it) pressed on `o`
+  // (along its load path where `o` has friction), the nodes where its links
+  // carry them, the obstacle's wrench what the chain's contact gives it.
   data::SampleRecord chain_contact_sample(ChainModel model, const data::MeshRecord &mesh,
                                           const std::string &hash, double p, const data::ObstacleRecord &o)
   {
-    model.set_collision_surface(rigid_collision_surface(model, mesh));
+    model.set_collision_surface(rigid_collision_surface(model, mesh, ChainParameters().surface_subdivisions));
     data::Actuation a;
     a.pressure  = p;
     a.role      = "contact";
     a.obstacles = {o};
-    ChainEquilibrium solver(model);
-    const Equilibrium e = solver.solve(ChainLoad{p, {}, a.obstacles});
+    ChainEquilibrium   solver(model);
+    FrictionalLoadPath path(solver); // a single solve without friction
+    const Equilibrium  e = path.solve(ChainLoad{p, {}, a.obstacles});
     REQUIRE(e.converged);
     REQUIRE(!solver.contact().touches().empty());
     data::SampleRecord s = chain_sample(model, mesh, hash, actuation(p, "pressure", {0, 0, 0}));
@@ -277,6 +279,9 @@ TEST_CASE("run_chain compares contact samples in force and pose and writes grasp
                                                obstacle("table", "plane", {0, 0.024, 0}, {0, -1, 0}, 0)));
     database.store_sample(chain_contact_sample(m2_model, mesh, design.design_hash, 3e4,
                                                obstacle("rod", "cylinder", {0.05, 0.02, 0}, {0, 0, 1}, 0.008)));
+    auto rough     = obstacle("rough_rod", "cylinder", {0.05, 0.02, 0}, {0, 0, 1}, 0.008);
+    rough.friction = 0.5;
+    database.store_sample(chain_contact_sample(m2_model, mesh, design.design_hash, 3e4, rough));
   }
   std::ostringstream printed;
   {
@@ -288,7 +293,7 @@ TEST_CASE("run_chain compares contact samples in force and pose and writes grasp
   for (std::size_t r = 0; r < table.n_rows(); ++r)
     {
       const std::string role = table.text(r, "role");
-      if (role != "blocked force" && role != "grasp")
+      if (role != "blocked force" && role != "grasp" && role != "grasp with friction")
         {
           CHECK(std::isnan(table.number(r, "contact_force_N")));
           continue;
@@ -306,12 +311,12 @@ TEST_CASE("run_chain compares contact samples in force and pose and writes grasp
       else // 30 % stiffer joints press 30 % harder or less deep, beam theory differs
         CHECK(std::abs(table.number(r, "contact_force_error_percent")) > 1.0);
     }
-  CHECK(contact_rows == 6); // 2 contact samples x 3 models
+  CHECK(contact_rows == 9); // 3 contact samples x 3 models
   const data::CsvTable summary = data::CsvTable::read(out + "/chain/grasp_summary.csv");
   REQUIRE(summary.n_rows() == 3);
   for (std::size_t r = 0; r < summary.n_rows(); ++r)
     {
-      CHECK(summary.number(r, "n_samples") == 2);
+      CHECK(summary.number(r, "n_samples") == 3);
       CHECK(summary.number(r, "median_solve_time_us") > 0);
       if (summary.text(r, "model") == "M2")
         {

@@ -15,7 +15,7 @@
 //     set Maximum Newton iterations = 50
 //   end
 // Bad values are InputErrors naming file, line and parameter.
-#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/frictional_load_path.h>
 #include <softchain/chain/stiffness_files.h>
 #include <softchain/data/prm_file.h>
 
@@ -42,6 +42,8 @@ namespace softchain::chain
     std::vector<std::string> validation_roles    = {"validation", "pressure"};
     double                   baseline_youngs_modulus = 2.6e5;
     EquilibriumSettings      newton;
+    FrictionalPathSettings   friction_path; // the load path of a contact sample with friction
+    int                      surface_subdivisions = 3; // intervals per edge of the collision surface's mesh faces
 
     static ChainParameters read(const data::PrmFile &file);
   };

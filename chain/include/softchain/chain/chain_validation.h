@@ -16,7 +16,7 @@
 // role "blocked force" where the obstacle is a plane (the tip pressed on a
 // table, the actuator's classic characterisation) and "grasp" for any other
 // shape, followed by " with friction" where it has some.
-#include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/frictional_load_path.h>
 #include <softchain/data/tip_pose_fit.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
@@ -61,7 +61,8 @@ namespace softchain::chain
                     const std::vector<std::string> &roles, double finger_length);
 
     // Solves every sample with `model` and records the errors.
-    void compare(const ChainModel &model, const EquilibriumSettings &settings);
+    void compare(const ChainModel &model, const EquilibriumSettings &settings,
+                 const FrictionalPathSettings &friction_path = {});
 
     const std::vector<ValidationRecord> &records() const { return records_; }
     int                                  n_failed(const std::string &model) const;

@@ -26,8 +26,13 @@ namespace softchain::chain
   std::pair<double, double> cavity_span(const data::MeshRecord &mesh);
 
   // The outer surface carried rigidly by the links of `model`'s reference
-  // chain: one row, at p = 0 (the paper's rigid links, the baseline).
-  CollisionSurface rigid_collision_surface(const ChainModel &model, const data::MeshRecord &mesh);
+  // chain: one row, at p = 0 (the paper's rigid links, the baseline). Its
+  // points: the outer faces' vertices (`subdivisions` = 1) or a grid of
+  // subdivisions x subdivisions intervals on each face, bilinear in its
+  // vertices (barycentric on a triangle), so that a point follows the
+  // deformed mesh; each point once, none carried only by clamped vertices.
+  CollisionSurface rigid_collision_surface(const ChainModel &model, const data::MeshRecord &mesh,
+                                           int subdivisions = 1);
 
   // The deformed nodes of the converged pressure-only samples (role
   // "pressure", no forces, tip motion, obstacles or volume control), by
@@ -50,5 +55,5 @@ namespace softchain::chain
   // is left out.
   CollisionSurface pressure_shaped_collision_surface(const ChainModel &model, const data::MeshRecord &mesh,
                                                      const InflatedNodes       &inflated,
-                                                     const EquilibriumSettings &settings);
+                                                     const EquilibriumSettings &settings, int subdivisions = 1);
 } // namespace softchain::chain

@@ -5,9 +5,9 @@
 // t = 1/n, 2/n, ..., 1: pressure t p, point forces t f, the obstacles at
 // path parameter t of their motion. Each step starts from the last one's
 // angles and stick anchors, and is solved again with the normal forces and
-// normals it found until they settle (the same points touching, and the
-// largest change of a normal force and of N |dn| below `tolerance` times
-// the largest normal force): then the friction is
+// normals it found, relaxed (Aitken), until they settle (the largest change
+// of a point's normal force, 0 where it does not touch, and of N |dn| below
+// `tolerance` times the largest normal force): then the friction is
 // Coulomb's with the step's own normal forces, as in the FEM, where it is
 // part of one Newton system. A point that comes into contact during a step
 // sticks where it entered the obstacle on its way to the first solve that

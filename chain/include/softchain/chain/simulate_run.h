@@ -18,7 +18,8 @@
 // <output>/chain/grasp_summary.csv (model "mujoco": the largest absolute
 // force error on the plane obstacles' samples, blocked force, and on the
 // others', grasp; the largest tip distance in % of L; orientation and
-// solve time nan), replacing an earlier mujoco row. `softchain run` calls it
+// solve time nan), replacing an earlier mujoco row; contact_vs_fem.csv then
+// holds every scene's rows. `softchain run` calls it
 // after the chain's validation and MJCF export. Without contact samples it
 // does nothing and returns 0.
 #include <softchain/data/prm_file.h>
