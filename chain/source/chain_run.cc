@@ -160,6 +160,9 @@ namespace softchain::chain
                                       ? pressure_shaped_collision_surface(model, database.mesh(), samples.inflated,
                                                                           p.newton, p.surface_subdivisions)
                                       : rigid_collision_surface(model, database.mesh(), p.surface_subdivisions));
+      if (!models.empty())
+        std::cout << "chain: collision surface of " << models.front().collision_surface()->n_points()
+                  << " points (Chain/Surface subdivisions = " << p.surface_subdivisions << ")\n";
     }
 
     // Blocked force and grasp per model, if there are contact samples.
