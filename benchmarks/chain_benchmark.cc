@@ -1,9 +1,10 @@
 // Speed of the chain tier: one equilibrium of a 9-joint finger from
-// rest (free, and in contact with a table and a cylinder), a sweep of 100 pressures with warm starts, a 5-finger hand (45
+// rest (free, and in contact with a table and a cylinder, with and without friction), a sweep of 100 pressures with warm starts, a 5-finger hand (45
 // joints), and the heap memory of one finger (model + solver workspace).
 // The paper's SOFA chain took about 6 ms per finger (Sec. V).
 // Run: chain_benchmark --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <softchain/chain/chain_equilibrium.h>
+#include <softchain/chain/frictional_load_path.h>
 #include <softchain/chain/link_geometry.h>
 
 #include <benchmark/benchmark.h>
@@ -224,6 +225,30 @@ static void contact_ramp_20_warm_start(benchmark::State &state, const ChainLoad 
 }
 BENCHMARK_CAPTURE(contact_ramp_20_warm_start, table, on_table(0.0))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(contact_ramp_20_warm_start, cylinder, on_cylinder(0.0))->Unit(benchmark::kMicrosecond);
+
+// With Coulomb friction (mu = 0.5) on the same obstacles: the sample's load
+// path from rest (FrictionalLoadPath, 20 steps, each solved until its
+// normal forces settle). Time per path; solves and Newton iterations per path.
+static void frictional_path_20_steps(benchmark::State &state, const ChainLoad &obstacle_load)
+{
+  const ChainModel   model = finger_with_surface();
+  ChainEquilibrium   solver(model);
+  FrictionalLoadPath path(solver);
+  ChainLoad          load = obstacle_load;
+  load.obstacles.front().friction = 0.5;
+  int iterations = 0;
+  for (auto _ : state)
+    {
+      const Equilibrium e = path.solve(load);
+      require(e);
+      iterations = e.iterations;
+      benchmark::DoNotOptimize(e.angles.data());
+    }
+  state.counters["solves_per_path"]            = path.passes();
+  state.counters["newton_iterations_per_path"] = iterations;
+}
+BENCHMARK_CAPTURE(frictional_path_20_steps, table, on_table(0.5 * p_max))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(frictional_path_20_steps, cylinder, on_cylinder(0.5 * p_max))->Unit(benchmark::kMicrosecond);
 
 // Five fingers of different stiffness (45 joints), each under pressure and
 // its own tip force, solved from rest.

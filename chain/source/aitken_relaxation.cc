@@ -29,7 +29,7 @@ namespace softchain::chain
             square += d * d;
           }
         if (square > 0.0)
-          omega_ = std::clamp(-omega_ * along / square, 0.1, 1.0);
+          omega_ = std::clamp(-omega_ * along / square, 0.1, 5.0);
       }
     residual_ = residual;
     std::vector<StickAnchor> next;

@@ -6,12 +6,14 @@
 // R_k = N(N_k) - N_k over the points either touches (0 where one does not),
 //     N_{k+1} = N_k + w_k R_k,
 //     w_k = -w_{k-1} R_{k-1} . (R_k - R_{k-1}) / |R_k - R_{k-1}|^2,
-// w_0 = 1 (the plain iteration), w_k kept in [0.1, 1]. Where the plain
+// w_0 = 1 (the plain iteration), w_k kept in [0.1, 5]. Where the plain
 // iteration overshoots -- N and the friction pull each other back and
 // forth, and a grasp's normal forces oscillate with a ratio near -1 -- w
-// falls to about a half and the oscillation dies in a few solves; on a
-// linear map it is the secant method along the residual. A point whose
-// relaxed force is not positive loses its anchor.
+// falls to about a half and the oscillation dies in a few solves; where it
+// creeps (the load shifting slowly from one group of points to another,
+// ratio 0.8 on the benchmark's cylinder) w grows beyond 1. On a linear map
+// it is the secant method along the residual. A point whose relaxed force
+// is not positive loses its anchor.
 #include <softchain/chain/chain_load.h>
 
 #include <map>

@@ -57,7 +57,10 @@
 // of angles or H alone is not positive definite. A solve from rest starts
 // short of the first touch along the pressure's own shape (so that it never
 // starts deep inside an obstacle). The stability check then factors the
-// whole tangent.
+// whole tangent. Friction acts through the load's stick anchors
+// (ChainLoad::anchors, CoulombFriction): a load on an obstacle with friction
+// but without anchors is solved as if frictionless -- the first solve of a
+// load step; FrictionalLoadPath follows a frictional load from rest.
 #include <softchain/chain/chain_contact.h>
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/chain_model.h>
