@@ -268,7 +268,7 @@ TEST_CASE("a load without friction takes one solve; bad friction input is named"
   CHECK_THROWS_AS(FrictionalLoadPath(solver, {0, 30, 1e-6}), std::invalid_argument);
 }
 
-TEST_CASE("Aitken's relaxation settles an oscillating fixed point of the normal forces in a few solves")
+TEST_CASE("Aitken's relaxation settles an oscillating or creeping fixed point of the normal forces in a few solves")
 {
   // A linear model of a step's solve: the normal forces found from lagged
   // ones N, F(N) = b + A N with A = -0.95 (the back and forth of a grasp)
@@ -298,6 +298,16 @@ TEST_CASE("Aitken's relaxation settles an oscillating fixed point of the normal 
   CHECK(solves <= 12);
   CHECK((N - fixed).norm() < 1e-9);
   CHECK(relaxation.factor() < 0.9); // relaxed, not the plain iteration
+  // Where the plain iteration creeps (A = 0.8 on both points, about 100
+  // solves to 1e-10), the factor grows beyond 1 and lands in a few.
+  const Eigen::Vector2d creep(0.8, 0.8);
+  AitkenRelaxation      over;
+  N = Eigen::Vector2d(0.1, 0.1);
+  solves = 0;
+  for (; solves < 50 && (b + creep.cwiseProduct(N) - N).norm() > 1e-10; ++solves)
+    N = forces(over.next(anchors(N), anchors(b + creep.cwiseProduct(N))));
+  CHECK(solves <= 6);
+  CHECK((N - b / 0.2).norm() < 1e-9);
   // A point whose relaxed force is not positive loses its anchor.
   AitkenRelaxation fresh;
   CHECK(fresh.next(anchors({0.1, 0.1}), {anchors({0.1, 0.1})[0]}).size() == 1);
