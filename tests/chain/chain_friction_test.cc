@@ -31,6 +31,13 @@ namespace
     return model;
   }
 
+  EquilibriumSettings with_penalty()
+  {
+    EquilibriumSettings settings;
+    settings.contact_stiffness = k_c;
+    return settings;
+  }
+
   softchain::data::ObstacleRecord rough_table(const double mu)
   {
     softchain::data::ObstacleRecord table = plane(-h);
@@ -87,11 +94,10 @@ TEST_CASE("a joint slides a point along a rough table: Coulomb's closed form wit
   // mu = 0.4 is below the ratio T / N = |tan phi| ~ 0.44 that sticking
   // would need, so the point slides from the touch on.
   const double        mu = 0.4;
-  const ChainModel    model = one_joint();
-  EquilibriumSettings settings;
-  settings.contact_stiffness = k_c;
-  ChainEquilibrium   solver(model, settings);
-  FrictionalLoadPath path(solver);
+  const ChainModel          model    = one_joint();
+  const EquilibriumSettings settings = with_penalty();
+  ChainEquilibrium          solver(model, settings);
+  FrictionalLoadPath        path(solver);
   const ChainLoad    load{1.0, {}, {rough_table(mu)}};
   const Equilibrium  e = path.solve(load);
   REQUIRE(e.converged);
@@ -135,11 +141,10 @@ TEST_CASE("a point on a rough table sticks where it entered it")
   // (g_s - g_1) (x_1 - x_s), and the penalty holds it there from then on,
   // F = -k_c (x - a_x, l sin phi + h).
   const double        mu = 1.0;
-  const ChainModel    model = one_joint();
-  EquilibriumSettings settings;
-  settings.contact_stiffness = k_c;
-  ChainEquilibrium   solver(model, settings);
-  FrictionalLoadPath path(solver);
+  const ChainModel          model    = one_joint();
+  const EquilibriumSettings settings = with_penalty();
+  ChainEquilibrium          solver(model, settings);
+  FrictionalLoadPath        path(solver);
   const Equilibrium  e = path.solve(ChainLoad{1.0, {}, {rough_table(mu)}});
   REQUIRE(e.converged);
   // Relative to the joint.
@@ -250,10 +255,9 @@ TEST_CASE("friction: residual = energy gradient, tangent = central differences, 
 
 TEST_CASE("a load without friction takes one solve; bad friction input is named")
 {
-  const ChainModel    model = one_joint();
-  EquilibriumSettings settings;
-  settings.contact_stiffness = k_c;
-  ChainEquilibrium   solver(model, settings), direct(model, settings);
+  const ChainModel          model    = one_joint();
+  const EquilibriumSettings settings = with_penalty();
+  ChainEquilibrium          solver(model, settings), direct(model, settings);
   FrictionalLoadPath path(solver);
   const ChainLoad    load{1.0, {}, {plane(-h)}};
   const Equilibrium  e = path.solve(load);
