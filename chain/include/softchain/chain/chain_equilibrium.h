@@ -144,6 +144,7 @@ namespace softchain::chain
     void   contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
                         const Eigen::VectorXd &free_residual, bool factored, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
+    void   add_rows_to_lower(Eigen::MatrixXd &dense) const;
     bool   woodbury_pays(Eigen::Index rows) const;
     bool         skin_has_row(const ChainContact::Skin &skin, const std::vector<char> &active) const;
     Eigen::Index skin_rows(const std::vector<char> &active) const;
