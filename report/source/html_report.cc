@@ -394,7 +394,71 @@ namespace softchain::report
     page.table({"obstacle", "shape", "pressure [kPa]", "F_x [N]", "F_y [N]", "F_z [N]", "|F| [N]",
                 "tip angle [deg]", "status"},
                rows);
+    chain_contact(page);
     contact_pictures(page, obstacles);
+  }
+
+  // The chains and MuJoCo in contact against the FEM: chain/grasp_summary.csv
+  // per model, and per contact sample of chain/validation.csv the force each
+  // model's obstacle receives and its error.
+  void HtmlReport::chain_contact(HtmlDocument &page) const
+  {
+    const data::ChainFileSet files(output_directory_);
+    if (!fs::exists(files.grasp_summary) || !fs::exists(files.validation))
+      {
+        page.paragraph("No chain in contact: chain/grasp_summary.csv or chain/validation.csv is missing "
+                       "(softchain chain with the role contact among Chain/Validation roles).");
+        return;
+      }
+    const auto summary = data::CsvTable::read(files.grasp_summary);
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t r = 0; r < summary.n_rows(); ++r)
+      rows.push_back({summary.text(r, "model"), summary.text(r, "n_samples"), summary.text(r, "n_failed"),
+                      fmt(summary.number(r, "blocked_force_error_percent")),
+                      fmt(summary.number(r, "grasp_force_error_percent")),
+                      fmt(summary.number(r, "tip_error_percent_L")), fmt(summary.number(r, "orientation_error_deg")),
+                      fmt(summary.number(r, "median_solve_time_us"))});
+    page.paragraph("The chains in the same scenes (chain/grasp_summary.csv): per model the largest "
+                   "absolute error of the force on the obstacle over the blocked-force and over the "
+                   "grasp samples, with and without friction, the largest tip errors and the median "
+                   "solve time; mujoco is the exported finger in MuJoCo's scenes (simulate/).");
+    page.table({"model", "samples", "failed", "blocked force error [%]", "grasp force error [%]",
+                "tip error [% L]", "orientation error [deg]", "median solve [µs]"},
+               rows);
+    const auto validation = data::CsvTable::read(files.validation);
+    std::vector<std::string> models, samples;
+    for (std::size_t r = 0; r < validation.n_rows(); ++r)
+      if (std::isfinite(validation.number(r, "fem_contact_force_N")))
+        {
+          for (auto *list : {&models, &samples})
+            {
+              const std::string &key = validation.text(r, list == &models ? "model" : "sample");
+              if (std::find(list->begin(), list->end(), key) == list->end())
+                list->push_back(key);
+            }
+        }
+    std::vector<std::string> header{"sample role", "pressure [kPa]", "FEM |F| [N]"};
+    for (const auto &m : models)
+      for (const std::string what : {" |F| [N]", " error [%]"})
+        header.push_back(m + what);
+    rows.clear();
+    for (const auto &id : samples)
+      {
+        std::vector<std::string> row;
+        for (const auto &m : models)
+          for (std::size_t r = 0; r < validation.n_rows(); ++r)
+            if (validation.text(r, "sample") == id && validation.text(r, "model") == m)
+              {
+                if (row.empty())
+                  row = {validation.text(r, "role"), fmt(validation.number(r, "pressure") / 1e3),
+                         fmt(validation.number(r, "fem_contact_force_N"))};
+                row.push_back(fmt(validation.number(r, "contact_force_N")));
+                row.push_back(fmt(validation.number(r, "contact_force_error_percent")));
+              }
+        row.resize(header.size(), "–");
+        rows.push_back(row);
+      }
+    page.table(header, rows);
   }
 
   // The finger against each obstacle, at the highest converged pressure of

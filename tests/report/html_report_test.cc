@@ -126,6 +126,31 @@ TEST_CASE("The contact section plots the force per obstacle and draws the finger
   // The force plot and the finger on the can: two more pictures.
   CHECK(softchain::testing::occurrences(html, "<img src=\"data:image/svg+xml;base64,") == pictures + 2);
   CHECK(html.find("the finger on the obstacle 'can'") != std::string::npos);
+  CHECK(html.find("No chain in contact") != std::string::npos);
+
+  // The chains in contact: the summary per model, and per sample each
+  // model's force and error beside the FEM's.
+  softchain::data::CsvTable summary({"model", "n_samples", "n_failed", "blocked_force_error_percent",
+                                     "grasp_force_error_percent", "tip_error_percent_L", "orientation_error_deg",
+                                     "median_solve_time_us"});
+  summary.add_row({"M2", "1", "0", "nan", "4", "1.5", "2", "900"});
+  summary.add_row({"baseline", "1", "0", "nan", "60", "15", "30", "700"});
+  summary.write(outputs.file("chain/grasp_summary.csv"));
+  softchain::data::CsvTable validation({"sample", "role", "pressure", "model", "fem_contact_force_N",
+                                        "contact_force_N", "contact_force_error_percent", "solve_time_us"});
+  validation.add_row({"free", "pressure", "40000", "M2", "nan", "nan", "nan", "9"});
+  validation.add_row({pressed.id, "grasp with friction", "40000", "M2", "0.75", "0.78", "4", "900"});
+  validation.add_row({pressed.id, "grasp with friction", "40000", "baseline", "0.75", "1.2", "60", "700"});
+  validation.write(outputs.file("chain/validation.csv"));
+  html = report();
+  CHECK(html.find("No chain in contact") == std::string::npos);
+  CHECK(html.find("<td>M2</td><td>1</td><td>0</td><td>nan</td><td>4</td><td>1.5</td><td>2</td><td>900</td>") !=
+        std::string::npos);
+  CHECK(html.find("<th>M2 |F| [N]</th><th>M2 error [%]</th><th>baseline |F| [N]</th><th>baseline error [%]</th>") !=
+        std::string::npos);
+  CHECK(html.find("<tr><td>grasp with friction</td><td>40</td><td>0.75</td><td>0.78</td><td>4</td><td>1.2</td>"
+                  "<td>60</td></tr>") != std::string::npos);
+  CHECK(html.find("<td>pressure</td><td>40</td><td>nan</td>") == std::string::npos); // a free sample has no row
 }
 
 TEST_CASE("The protocol's base torque errors, or a line saying the design has none")

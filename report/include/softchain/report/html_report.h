@@ -54,6 +54,7 @@ namespace softchain::report
     // or a paragraph saying the design has none.
     void protocol_section(HtmlDocument &page) const;
     void contact_section(HtmlDocument &page) const;
+    void chain_contact(HtmlDocument &page) const;
     void contact_pictures(HtmlDocument &page, const std::vector<std::string> &obstacles) const;
     void timing_section(HtmlDocument &page) const;
     void claims_section(HtmlDocument &page) const;
