@@ -69,55 +69,62 @@ namespace softchain::chain
       }
     if (!load.anchors.empty())
       throw std::invalid_argument("FrictionalLoadPath: the path starts at rest, without anchors");
-    std::vector<StickAnchor>     anchors; // the last step's, slid
-    std::vector<Eigen::Vector3d> start;   // the surface's points at the step's start
-    Eigen::VectorXd              q;
-    Equilibrium                  result;
-    int                          iterations = 0;
+    std::vector<StickAnchor> anchors; // the last step's, slid
+    Equilibrium              result;
+    int                      iterations = 0;
     for (int step = 1; step <= settings_.steps; ++step)
       {
-        const double t       = double(step) / settings_.steps;
-        ChainLoad    at_step = at(load, t);
-        if (step == 1)
+        result = solve_step(at(load, double(step) / settings_.steps), anchors, result.angles);
+        iterations += result.iterations;
+        if (!result.converged)
           {
-            solver_.set_load(at_step);
-            solver_.energy(Eigen::VectorXd::Zero(solver_.chain().n_angles()));
-          }
-        solver_.contact().surface_positions(solver_.pose(), start);
-        at_step.anchors = anchors;
-        bool                 done = false;
-        AitkenRelaxation relaxation;
-        for (int pass = 0; pass < settings_.max_passes && !done; ++pass)
-          {
-            result = step == 1 && pass == 0 ? solver_.solve(at_step) : solver_.solve(at_step, q);
-            ++passes_;
-            iterations += result.iterations;
-            if (!result.converged)
-              {
-                result.failure = "friction: load step " + std::to_string(step) + " of " +
-                                 std::to_string(settings_.steps) + ": " + result.failure;
-                result.iterations = iterations;
-                return result;
-              }
-            q = result.angles;
-            std::vector<StickAnchor> touching =
-              solver_.contact().touching_anchors(solver_.pose(), at_step.anchors, start);
-            done = settled(at_step.anchors, touching);
-            if (!done)
-              at_step.anchors = relaxation.next(at_step.anchors, touching);
-          }
-        if (!done)
-          {
-            result.converged = false;
-            result.failure   = "friction: the normal forces did not settle within " +
-                             std::to_string(settings_.max_passes) + " solves at load step " +
-                             std::to_string(step) + " of " + std::to_string(settings_.steps);
-            result.iterations = iterations;
-            return result;
+            result.failure = "friction: load step " + std::to_string(step) + " of " +
+                             std::to_string(settings_.steps) + ": " + result.failure;
+            break;
           }
         anchors = solver_.contact().friction().slid_anchors();
       }
     result.iterations = iterations;
     return result;
+  }
+
+  // One step from the last one's angles `start` (none: from rest, the path's
+  // first), solved again with the normal forces it finds, relaxed, until they
+  // settle. Its iterations are all its solves'.
+  Equilibrium FrictionalLoadPath::solve_step(ChainLoad load, const std::vector<StickAnchor> &anchors,
+                                             const Eigen::VectorXd &start)
+  {
+    if (start.size() == 0) // the surface at rest
+      {
+        solver_.set_load(load);
+        solver_.energy(Eigen::VectorXd::Zero(solver_.chain().n_angles()));
+      }
+    std::vector<Eigen::Vector3d> entered_from; // the surface's points at the step's start
+    solver_.contact().surface_positions(solver_.pose(), entered_from);
+    load.anchors = anchors;
+    AitkenRelaxation relaxation;
+    Eigen::VectorXd  q          = start;
+    int              iterations = 0;
+    for (int pass = 0; pass < settings_.max_passes; ++pass)
+      {
+        Equilibrium e = q.size() == 0 ? solver_.solve(load) : solver_.solve(load, q);
+        ++passes_;
+        iterations += e.iterations;
+        e.iterations = iterations;
+        if (!e.converged)
+          return e;
+        q = e.angles;
+        const std::vector<StickAnchor> touching =
+          solver_.contact().touching_anchors(solver_.pose(), load.anchors, entered_from);
+        if (settled(load.anchors, touching))
+          return e;
+        load.anchors = relaxation.next(load.anchors, touching);
+      }
+    Equilibrium unsettled;
+    unsettled.angles     = q;
+    unsettled.iterations = iterations;
+    unsettled.failure    = "the normal forces did not settle within " + std::to_string(settings_.max_passes) +
+                        " solves";
+    return unsettled;
   }
 } // namespace softchain::chain

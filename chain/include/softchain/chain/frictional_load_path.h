@@ -45,7 +45,8 @@ namespace softchain::chain
     static bool has_friction(const ChainLoad &load);
 
   private:
-    ChainLoad at(const ChainLoad &load, double t) const;
+    ChainLoad   at(const ChainLoad &load, double t) const;
+    Equilibrium solve_step(ChainLoad load, const std::vector<StickAnchor> &anchors, const Eigen::VectorXd &start);
     bool      settled(const std::vector<StickAnchor> &before, const std::vector<StickAnchor> &after) const;
 
     ChainEquilibrium &solver_;
