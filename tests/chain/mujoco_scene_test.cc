@@ -91,6 +91,28 @@ TEST_CASE("MuJoCo's steady contact force on a table is the force the chain's equ
   CHECK((free.angles - mujoco).cwiseAbs().maxCoeff() > 1e-3);
 }
 
+TEST_CASE("On a rough table MuJoCo's finger keeps its friction over a slow ramp")
+{
+  // The same finger pressed on the table with mu = 0.5: the tip slides along
+  // the table as it presses, and the table holds it back. MuJoCo's soft
+  // contacts creep under a steady tangential load, which the elliptic cone
+  // and the no-slip passes (MujocoScene) stop.
+  softchain::testing::ScratchDirectory dir("mujoco_scene_rough_table");
+  ObstacleRecord rough = table();
+  rough.friction       = 0.5;
+  MujocoScene scene(export_finger(dir, finger_bending_down()), rough, 0.002, dir.file("scene.xml"));
+  CHECK(scene.model()->opt.cone == mjCONE_ELLIPTIC);
+  CHECK(scene.model()->opt.noslip_iterations > 0);
+  PressureRampSimulation ramp(scene, {20e3, 3.0, 0.25, 0});
+  const SteadyContact    steady = ramp.run({0.2 * p_max}).front();
+  REQUIRE(steady.force.y() < -0.01);
+  const double tangential = std::hypot(steady.force.x(), steady.force.z());
+  CHECK(tangential <= 0.5 * std::abs(steady.force.y()) * (1 + 1e-6)); // inside Coulomb's cone
+  // Measured T / N = 0.24; with MuJoCo's defaults (pyramidal cone, no
+  // no-slip pass) 5e-5: the friction had crept away.
+  CHECK(tangential > 0.05 * std::abs(steady.force.y()));
+}
+
 TEST_CASE("MuJoCo's skins give as the chain's: each slide joint at rest holds c_s(p) times the force along it")
 {
   softchain::testing::ScratchDirectory dir("mujoco_scene_skin");
