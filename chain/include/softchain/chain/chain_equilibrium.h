@@ -52,9 +52,11 @@
 // the source), and takes the low-rank part by the Woodbury identity around
 // the O(n) factor,
 //   (H + V^T W V)^-1 b = H^-1 b - Y (I + W V Y)^-1 W V H^-1 b,   Y = H^-1 V^T,
-// r solves of ChainTangent and an r x r system for r rows (touching points
-// and their curvatures), or by the dense tangent where r exceeds the number
-// of angles or H alone is not positive definite. A solve from rest starts
+// r solves of ChainTangent and an r x r system for r rows (touching points,
+// their curvatures, the skins' and the friction's rows), or by the dense
+// tangent where r exceeds a quarter of the angles
+// (EquilibriumSettings::woodbury_rows_per_angle) or H alone is not positive
+// definite. A solve from rest starts
 // short of the first touch along the pressure's own shape (so that it never
 // starts deep inside an obstacle). The stability check then factors the
 // whole tangent. Friction acts through the load's stick anchors
