@@ -58,7 +58,8 @@ namespace softchain::chain
         const double limit   = coefficient(a.obstacle) * a.normal_force; // mu N
         const double elastic = limit / stiffness_;                       // delta_s
         const Eigen::Vector3d t = g.slip > 0.0 ? Eigen::Vector3d(delta / g.slip) : tangent_of(a.normal);
-        g.sliding = g.slip > elastic;
+        g.direction = t;
+        g.sliding   = g.slip > elastic;
         if (!g.sliding)
           {
             g.force = -stiffness_ * delta;
@@ -83,9 +84,7 @@ namespace softchain::chain
         {
           const StickAnchor &a       = anchors_[i];
           const double       elastic = coefficient(a.obstacle) * a.normal_force / stiffness_;
-          Eigen::Vector3d    delta   = grips_[i].position - a.position;
-          delta -= a.normal.dot(delta) * a.normal;
-          anchors[i].position = grips_[i].position - elastic * delta / grips_[i].slip;
+          anchors[i].position        = grips_[i].position - elastic * grips_[i].direction;
         }
     return anchors;
   }

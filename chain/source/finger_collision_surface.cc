@@ -133,23 +133,28 @@ namespace softchain::chain
 
     SurfacePoints surface_points(const KinematicChain &chain, const data::MeshRecord &mesh, const int subdivisions)
     {
-      std::vector<std::pair<int, Weights>> by_link;
+      struct OnLink
+      {
+        int     link;
+        double  x; // the reference position's x
+        Weights point;
+      };
+      std::vector<OnLink> by_link;
       for (Weights &point : outer_surface_points(mesh, subdivisions))
         {
-          const int link = chain.link_of(data::vector_of(combination(point, mesh.X)));
+          const Eigen::Vector3d X    = data::vector_of(combination(point, mesh.X));
+          const int             link = chain.link_of(X);
           if (link >= 0)
-            by_link.emplace_back(link, std::move(point));
+            by_link.push_back({link, X.x(), std::move(point)});
         }
-      std::stable_sort(by_link.begin(), by_link.end(),
-                       [](const auto &a, const auto &b) { return a.first < b.first; });
+      std::stable_sort(by_link.begin(), by_link.end(), [](const OnLink &a, const OnLink &b) { return a.link < b.link; });
       const auto [low, high] = cavity_span(mesh);
       SurfacePoints points;
-      for (auto &[link, point] : by_link)
+      for (OnLink &p : by_link)
         {
-          const double x = combination(point, mesh.X)[0];
-          points.links.push_back(link);
-          points.gives.push_back(x > low && x < high);
-          points.points.push_back(std::move(point));
+          points.links.push_back(p.link);
+          points.gives.push_back(p.x > low && p.x < high);
+          points.points.push_back(std::move(p.point));
         }
       return points;
     }

@@ -427,15 +427,15 @@ namespace softchain::report
                rows);
     const auto validation = data::CsvTable::read(files.validation);
     std::vector<std::string> models, samples;
+    const auto               add_once = [](std::vector<std::string> &list, const std::string &key) {
+      if (std::find(list.begin(), list.end(), key) == list.end())
+        list.push_back(key);
+    };
     for (std::size_t r = 0; r < validation.n_rows(); ++r)
       if (std::isfinite(validation.number(r, "fem_contact_force_N")))
         {
-          for (auto *list : {&models, &samples})
-            {
-              const std::string &key = validation.text(r, list == &models ? "model" : "sample");
-              if (std::find(list->begin(), list->end(), key) == list->end())
-                list->push_back(key);
-            }
+          add_once(models, validation.text(r, "model"));
+          add_once(samples, validation.text(r, "sample"));
         }
     std::vector<std::string> header{"sample role", "pressure [kPa]", "FEM |F| [N]"};
     for (const auto &m : models)

@@ -48,6 +48,7 @@ namespace softchain::chain
       Eigen::Vector3d position = Eigen::Vector3d::Zero(); // x_k, m, world (the rigid section's point)
       Eigen::Vector3d force    = Eigen::Vector3d::Zero(); // f_k on the finger, N
       double          slip     = 0.0;                     // |delta_k|, m
+      Eigen::Vector3d direction = Eigen::Vector3d::Zero(); // t, along delta_k (any tangent at delta_k = 0)
       bool            sliding  = false;                   // on the cone: |f_k| = mu N_k
       // The Hessian's rows: directions (world) and weights, N/m.
       std::array<std::pair<Eigen::Vector3d, double>, 2> rows;
