@@ -55,14 +55,18 @@ namespace softchain::reduction
             ++n_without_base_;
             continue;
           }
-        Increment increment{sample.pressure(), sample.force_norm(), {}, {}};
+        Increment increment{sample.pressure(), sample.force_norm(), {}, {}, {}};
         for (std::size_t j = 0; j < sample.joints().size(); ++j)
           {
             const JointResult &loaded = sample.joints()[j];
-            const double base_angle  = base ? angle_about(base->joints()[j].free_angles, axis) : 0.0;
-            const double base_torque = base ? base->joints()[j].torque(axis) : 0.0;
+            const double base_angle   = base ? angle_about(base->joints()[j].free_angles, axis) : 0.0;
+            double       d_tau[3];
+            for (int a = 0; a < 3; ++a)
+              d_tau[a] = loaded.torque(a) - (base ? base->joints()[j].torque(a) : 0.0);
+            const double norm = std::sqrt(d_tau[0] * d_tau[0] + d_tau[1] * d_tau[1] + d_tau[2] * d_tau[2]);
             increment.angle.push_back(angle_about(loaded.angles, axis) - base_angle);
-            increment.torque.push_back(loaded.torque(axis) - base_torque);
+            increment.torque.push_back(d_tau[axis]);
+            increment.share.push_back(norm > 0 ? std::abs(d_tau[axis]) / norm : 0.0);
           }
         increments_.push_back(increment);
       }
@@ -73,7 +77,8 @@ namespace softchain::reduction
 
   bool ForceIncrementStiffness::usable(const Increment &increment, const std::size_t joint) const
   {
-    return std::abs(increment.angle[joint]) >= threshold_ && increment.angle[joint] != 0.0;
+    return std::abs(increment.angle[joint]) >= threshold_ && increment.angle[joint] != 0.0 &&
+           increment.share[joint] >= min_share;
   }
 
   double ForceIncrementStiffness::at_largest_load(const std::size_t joint) const

@@ -260,3 +260,46 @@ TEST_CASE("k_theta(p) is fitted to the lightest lateral increments over the pres
   CHECK(std::abs(fit_of_first(1) / fit_of_first(2) - 1) > 0.1);
   CHECK(std::abs(fit_of_first(2) / fit_of_first(3) - 1) > 0.1);
 }
+
+TEST_CASE("k_psi(p) leaves out joints whose torque lies mostly about another axis")
+{
+  // At rest (the pressure-only state at p = 0), a torsion sample twisted at
+  // 2 rad/m about the centroid axis and loaded by one force along z at the
+  // tip's top, 5 mm above that axis: joint i carries tau = r_i x f with
+  // r_i = (x_tip - x_i, 5 mm, 0), so tau_x / |tau| = 5 mm / |r_i| falls
+  // from the tip to the base. Joints where it is below a quarter turn
+  // about psi by their coupling, not their torque (ForceIncrementStiffness).
+  const SyntheticFinger finger = hollow_box(uniform_planes(50 * mm, 50));
+  const double          y_c    = finger.node_centroid_y();
+  data::SampleRecord    s;
+  s.id                     = "torsion";
+  s.actuation.role         = "torsion";
+  s.actuation.point_forces = {{{50 * mm, y_c + 5 * mm, 0}, {0, 0, 0.1}}};
+  s.x                      = deform(finger.mesh.X, twist_about_x(2.0, y_c));
+  const Eigen::Vector3d q  = twist_about_x(2.0, y_c)(Eigen::Vector3d(50 * mm, y_c + 5 * mm, 0));
+  s.force_points_deformed  = {{q(0), q(1), q(2)}};
+  const MethodReduction reduction = reduce(finger, {s});
+  const data::CsvTable  table     = StiffnessTables(reduction, parameters()).k_vs_pressure(0);
+  int                   with_k = 0, without_k = 0;
+  for (std::size_t row = 0; row < table.n_rows(); ++row)
+    {
+      const std::size_t  joint = static_cast<std::size_t>(table.number(row, "joint")) - 1;
+      const JointResult &r     = reduction.samples()[0].joints()[joint];
+      const double share = std::abs(r.torque(0)) / std::hypot(r.torque(0), r.torque(1), r.torque(2));
+      const double k     = table.number(row, "k_psi");
+      CAPTURE(joint, share, k);
+      if (share >= 0.25 && std::abs(r.angles.psi) >= threshold)
+        {
+          CHECK(k == Approx(r.torque(0) / r.angles.psi).epsilon(1e-12));
+          ++with_k;
+        }
+      else
+        {
+          CHECK(std::isnan(k));
+          ++without_k;
+        }
+    }
+  // Both kinds occur: joints within 5 mm / 0.25 of the tip's force keep a k.
+  CHECK(with_k > 0);
+  CHECK(without_k > 0);
+}

@@ -23,7 +23,17 @@
 // section distal to which the whole cavity lies, P10's joint 1 in the solid
 // base fill), and k_theta(p), k_psi(p) (lateral and torsion samples).
 // |d q| below the threshold gives no value; a force sample without a
-// pressure-only state at its pressure gives nothing (counted).
+// pressure-only state at its pressure gives nothing (counted). Nor does an
+// increment whose torque about this axis is less than a quarter of the
+// joint's torque increment |d tau| (all three axes): the joint then turns
+// about this axis mostly through its coupling to the others, and d tau / d q
+// is not its stiffness. P10 at 40 kPa is curled by 92 degrees, so the base's
+// torsion couple bends joints 8 and 9 rather than twisting them (0.10 and
+// 0.004 of their torque about psi, against 0.31-1 at joints 1-7), and gave
+// them k_psi = 0.040 and 0.0027 N m/rad against 0.066 and 0.072 at 20 kPa;
+// the chain then twisted sideways under the blocked force
+// (docs/chain_fidelity.md, "Contact in the chain"). Such a pressure gets
+// no value, and the chain interpolates k(p) from the others.
 #include <softchain/reduction/sample_reduction.h>
 
 #include <map>
@@ -65,7 +75,9 @@ namespace softchain::reduction
       double              force;
       std::vector<double> angle;  // d q per joint
       std::vector<double> torque; // d tau per joint
+      std::vector<double> share;  // |d tau about the axis| / |d tau| per joint
     };
+    static constexpr double min_share = 0.25;
     bool   usable(const Increment &increment, std::size_t joint) const;
     double fit_over(const std::vector<const Increment *> &increments, std::size_t joint) const;
 
