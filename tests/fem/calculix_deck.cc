@@ -104,6 +104,31 @@ namespace softchain::fem::test
       if (plane.friction > 0) // mu, stick slope
         inp << "*FRICTION\n" << plane.friction << ", " << plane.stick_slope << '\n';
     }
+
+    // Per node of the tip faces, the consistent nodal load of a unit
+    // uniform traction: integral of N_a dA over each parallelogram face.
+    std::map<unsigned int, double> tip_node_areas(const Triangulation<3> &mesh, NodeNumbers &numbers,
+                                                  const bool quadratic)
+    {
+      if (!quadratic)
+        {
+          std::map<unsigned int, double> area;
+          for (const auto &[v, share] : tip_area_shares(mesh))
+            area[numbers.vertex(v)] = share;
+          return area;
+        }
+      std::map<unsigned int, double> area;
+      for (const auto &face : mesh.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == boundary::tip)
+          {
+            for (unsigned int v = 0; v < 4; ++v)
+              area[numbers.vertex(face->vertex_index(v))] -= face->measure() / 12;
+            for (unsigned int l = 0; l < 4; ++l)
+              area[numbers.midpoint(face->line(l)->vertex_index(0), face->line(l)->vertex_index(1))] +=
+                face->measure() / 3;
+          }
+      return area;
+    }
   } // namespace
 
   std::map<unsigned int, double> tip_area_shares(const Triangulation<3> &mesh)
@@ -171,11 +196,13 @@ namespace softchain::fem::test
         << "*STEP, NLGEOM, INC=1000\n*STATIC\n"
         << first_increment << ", 1.0, 1e-5, " << max_increment << '\n'
         << "*CONTROLS, PARAMETERS=FIELD\n" << tolerance << ", " << tolerance << '\n';
-    if (load.tip_traction_y != 0)
+    if (load.tip_traction_y != 0 || load.tip_traction_z != 0)
       {
         inp << "*CLOAD\n";
-        for (const auto &[v, a] : tip_area_shares(mesh))
-          inp << numbers.vertex(v) << ", 2, " << load.tip_traction_y * a << '\n';
+        for (const auto &[node, a] : tip_node_areas(mesh, numbers, quadratic))
+          for (const auto &[direction, t] : {std::pair{2, load.tip_traction_y}, std::pair{3, load.tip_traction_z}})
+            if (t != 0)
+              inp << node << ", " << direction << ", " << t * a << '\n';
       }
     if (load.pressure != 0)
       {

@@ -9,9 +9,11 @@
 // NEO HOOKE, W = C10 (I1bar - 3) + (J - 1)^2 / D1 with C10 = mu/2 and
 // D1 = 2/kappa, which is SoftChain's `split` energy
 // W = mu/2 (I1bar - 3) + kappa/4 (J^2 - 1 - 2 ln J) to O((J - 1)^3).
-// Boundary: the `base` face clamped. Loads: a dead tip traction t_y (as
-// consistent nodal loads of bilinear faces, C3D8 only) and a follower
-// pressure on the `cavity` faces (face loads, follower under NLGEOM).
+// Boundary: the `base` face clamped. Loads: a dead tip traction (t_y, t_z)
+// as the consistent nodal loads of parallelogram faces (C3D8: A/4 per
+// corner; C3D20R: -A/12 per corner and A/3 per mid-side node) and a
+// follower pressure on the `cavity` faces (face loads, follower under
+// NLGEOM).
 // Contact (optional): a rigid plane y = const below the body, as the fixed
 // top face of one C3D8 whose nodes are all clamped (the master surface),
 // met by the body's faces on the -y side of their cells (the slave
@@ -39,6 +41,7 @@ namespace softchain::fem::test
     {
       double tip_traction_y = 0; // N/m^2, dead
       double pressure       = 0; // Pa, follower, on the cavity
+      double tip_traction_z = 0; // N/m^2, dead
     };
     struct RigidPlane
     {
