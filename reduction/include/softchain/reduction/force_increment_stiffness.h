@@ -27,13 +27,13 @@
 // increment whose torque about this axis is less than a quarter of the
 // joint's torque increment |d tau| (all three axes): the joint then turns
 // about this axis mostly through its coupling to the others, and d tau / d q
-// is not its stiffness. P10 at 40 kPa is curled by 92 degrees, so the base's
-// torsion couple bends joints 8 and 9 rather than twisting them (0.10 and
-// 0.004 of their torque about psi, against 0.31-1 at joints 1-7), and gave
-// them k_psi = 0.040 and 0.0027 N m/rad against 0.066 and 0.072 at 20 kPa;
-// the chain then twisted sideways under the blocked force
-// (docs/chain_fidelity.md, "Contact in the chain"). Such a pressure gets
-// no value, and the chain interpolates k(p) from the others.
+// is not its stiffness. P10 at 40 kPa is curled by 92 degrees, so the torsion
+// couple (at the tip, about the base's x axis) bends joints 8 and 9 rather
+// than twisting them (0.10 and 0.004 of their torque about psi, against
+// 0.31-1 at joints 1-7), and gave them k_psi = 0.040 and 0.0027 N m/rad
+// against 0.066 and 0.072 at 20 kPa; the chain then twisted sideways under
+// the blocked force (docs/chain_fidelity.md, "Contact in the chain"). Such a
+// pressure gets no value, and the chain interpolates k(p) from the others.
 #include <softchain/reduction/sample_reduction.h>
 
 #include <map>
