@@ -26,6 +26,7 @@
 #include <calculix_deck.h>
 #include <fem_test_tools.h>
 
+#include <softchain/data/richardson_extrapolation.h>
 #include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/lone_process_mpi.h>
 
@@ -39,7 +40,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -139,17 +139,14 @@ namespace
     return scene;
   }
 
-  void softchain_solve(const std::string &prm_text, const std::string &scene_text, Mesh &mesh)
+  // SoftChain's solve of `scene` on the fixture's mesh; the time includes
+  // the mesh and the solver's setup (from `start`).
+  void softchain_solve(test::SolverFixture &f, const Scene &scene,
+                       const std::chrono::steady_clock::time_point start, Mesh &mesh)
   {
-    const auto          start = std::chrono::steady_clock::now();
-    Parameters          prm = test::parameters_from_text("calculix_finger", prm_text);
-    prm.contact             = prm.contact.solve_scene(); // no obstacle: CalculiX's deck has none
-    test::SolverFixture f(prm);
-    const Scene         scene = scene_from(scene_text, f.mesh.triangulation);
-    LoadState           load;
+    LoadState load;
     load.pressure     = scene.pressure;
     load.tip_traction = scene.traction;
-
     const auto result = f.solver->solve(load);
     mesh.softchain_s  = seconds_since(start);
     if (!result.converged)
@@ -164,46 +161,24 @@ namespace
     });
   }
 
-  void calculix_solve(const std::string &prm_text, const std::string &scene_text, Mesh &mesh)
+  // CalculiX's solve of `scene` on the same mesh: its deck and its run.
+  void calculix_solve(const Triangulation<3> &finger, const Scene &scene, Mesh &mesh)
   {
-    FingerMesh finger;
-    FingerMesh::build(test::parameters_from_text("calculix_finger_mesh", prm_text), finger);
-    const Scene scene = scene_from(scene_text, finger.triangulation);
     std::vector<unsigned int> tip;
-    for (const auto &[v, share] : test::tip_area_shares(finger.triangulation))
+    for (const auto &[v, share] : test::tip_area_shares(finger))
       tip.push_back(v);
     const auto         start = std::chrono::steady_clock::now();
     test::CalculixDeck deck;
     deck.element   = test::CalculixDeck::Element::C3D20R;
     deck.tolerance = 1e-6;
-    deck.write("finger.inp", finger.triangulation, {scene.traction[1], scene.pressure, scene.traction[2]}, tip);
+    deck.write("finger.inp", finger, {scene.traction[1], scene.pressure, scene.traction[2]}, tip);
     if (std::system("ccx -i finger > finger.log 2>&1") != 0)
       {
         std::fprintf(stderr, "ccx failed at %g m: see finger.log in the scratch directory\n", mesh.size);
         std::exit(2);
       }
     mesh.calculix_s = seconds_since(start);
-    mesh.calculix_u = test::calculix_mean_tip_displacement("finger.dat", finger.triangulation);
-  }
-
-  // The converged value of f from three meshes (1 finest) with sizes h,
-  // by Richardson extrapolation at the observed order; nullopt where the
-  // three do not converge in order (oscillating, or an order outside
-  // [0.5, 8]: no asymptotic range).
-  std::optional<double> richardson(const std::array<double, 3> &h, const std::array<double, 3> &f)
-  {
-    const double e21 = f[1] - f[0], e32 = f[2] - f[1];
-    if (e21 == 0.0 || e32 / e21 <= 0.0)
-      return std::nullopt;
-    const double r21 = h[1] / h[0], r32 = h[2] / h[1];
-    double       p   = 2;
-    for (int it = 0; it < 100; ++it) // s = sign(e32 / e21) = 1
-      p = std::abs(std::log(std::abs(e32 / e21)) +
-                   std::log((std::pow(r21, p) - 1) / (std::pow(r32, p) - 1))) /
-          std::log(r21);
-    if (!(p >= 0.5 && p <= 8))
-      return std::nullopt;
-    return (std::pow(r21, p) * f[0] - f[1]) / (std::pow(r21, p) - 1);
+    mesh.calculix_u = test::calculix_mean_tip_displacement("finger.dat", finger);
   }
 
   // Per component: the extrapolated value, or the finest mesh's. A
@@ -225,9 +200,9 @@ namespace
             value[i] = f[0];
             continue;
           }
-        const auto estimate = richardson(h, f);
-        extrapolated        = extrapolated && estimate.has_value();
-        value[i]            = estimate.value_or(f[0]);
+        const auto estimate = softchain::data::RichardsonExtrapolation::of(h, f);
+        extrapolated        = extrapolated && estimate.asymptotic;
+        value[i]            = estimate.value;
       }
     return value;
   }
@@ -242,12 +217,16 @@ namespace
                 "SoftChain mean tip u [mm]", "CalculiX mean tip u [mm]", "|diff| [mm]");
     for (const double size : sizes)
       {
-        const std::string text = comparison_prm(design, size, layers);
-        length = test::parameters_from_text("calculix_finger", text).finger_design->length();
-        Mesh mesh;
+        const auto start = std::chrono::steady_clock::now();
+        Parameters prm   = test::parameters_from_text("calculix_finger", comparison_prm(design, size, layers));
+        prm.contact      = prm.contact.solve_scene(); // no obstacle: CalculiX's deck has none
+        length           = prm.finger_design->length();
+        test::SolverFixture f(prm);
+        const Scene         loads = scene_from(scene, f.mesh.triangulation);
+        Mesh                mesh;
         mesh.size = size;
-        softchain_solve(text, scene, mesh);
-        calculix_solve(text, scene, mesh);
+        softchain_solve(f, loads, start, mesh);
+        calculix_solve(f.mesh.triangulation, loads, mesh);
         meshes.push_back(mesh);
         const Tensor<1, 3> a = 1e3 * mesh.softchain_u, b = 1e3 * mesh.calculix_u;
         std::printf("%8.2f %7u %9.2f %9.2f   (%8.4f, %8.4f, %8.4f)   (%8.4f, %8.4f, %8.4f) %10.4f\n",
