@@ -14,13 +14,13 @@
 // one by LU.
 //
 // A symmetric K is first factorised without pivoting in single precision,
-// and the solution refined in double until its normwise backward error is
-// at most 1e-12 (what Newton needs, see solve_unpivoted()) or its relative
-// residual |b - K x| / |b| meets the caller's `relative_residual` (an
-// inexact Newton step's forcing term, see refine()); where the refinement
-// stalls, K is factorised without pivoting in double (no pivot search, no
-// delayed pivots: the P10 sample's linear solve 0.77x the time of the
-// pivoting factorisation) and the backward error checked again; a K whose
+// and the solution refined in double by GMRES on K with those factors as
+// preconditioner until its relative residual |b - K x| / |b| meets the
+// caller's `relative_residual` (an inexact Newton step's forcing term), or
+// 1e-12 without one (see refine()); where the refinement does not converge,
+// K is factorised without pivoting in double (no pivot search, no delayed
+// pivots: the P10 sample's linear solve 0.77x the time of the pivoting
+// factorisation) and the solution's backward error checked; a K whose
 // pivots need a search (a zero or tiny pivot in the ordering's sequence,
 // possible only where K is indefinite) is then factorised with threshold
 // pivoting. Each step is taken only where the one before does not meet the
@@ -107,14 +107,12 @@ namespace softchain::fem
     Factors last_factors() const { return last; }
     // Did the last solve use an LDL^T factorisation (else LU)?
     bool used_ldlt() const { return last != Factors::lu; }
-    // GMRES iterations of the last solve with Factors::krylov.
+    // GMRES iterations of the last solve with Factors::single or Factors::krylov.
     unsigned int krylov_iterations_taken() const { return krylov_iterations; }
     // Did the last LDL^T solve need the pivoting factorisation?
     bool used_pivoting() const { return last == Factors::pivoted; }
     // Negative eigenvalues of the last K factorised by LDL^T.
     int negative_eigenvalues() const;
-    // Refinement steps of the last single-precision solve.
-    unsigned int refinement_steps_taken() const { return refinement_steps; }
 
   private:
     void copy_values(const dealii::TrilinosWrappers::SparseMatrix &matrix, std::vector<double> &into) const;
@@ -141,7 +139,7 @@ namespace softchain::fem
 
     // x = K^-1 b for a symmetric K, each false where it does not apply (below).
     bool solve_single(const double *b, std::vector<double> &x);
-    bool refine(const double *b, std::vector<double> &x); // with the single factors
+    bool refine(const double *b, std::vector<double> &x); // GMRES with the single factors
     bool solve_double(const double *b, std::vector<double> &x);
     bool solve_unpivoted(const double *b, std::vector<double> &x);
     // Factorises M = K - N by LDL^T (single, else double with pivoting);
@@ -150,13 +148,23 @@ namespace softchain::fem
     // x = K^-1 b by GMRES preconditioned with the factors of M; false if it
     // does not converge.
     bool solve_krylov(const double *b, std::vector<double> &x);
+    // x = K^-1 b by flexible GMRES with `apply_preconditioner(in, out)` on
+    // the right; false if it does not converge in `max_iterations`.
+    template <typename Preconditioner>
+    bool fgmres(const double *b, std::vector<double> &x, unsigned int max_iterations,
+                const Preconditioner &apply_preconditioner);
     // r = b - K x; returns the normwise backward error |r|_inf / (|K|_inf
     // |x|_inf + |b|_inf) of x (Rigal and Gaches, Numer. Math. 1967).
     double residual(const double *b, const std::vector<double> &x, std::vector<double> &r) const;
     // The backward error every solve of a symmetric K meets (solve_unpivoted(),
     // refine()).
     static constexpr double       backward_error_bound = 1e-12;
-    static constexpr unsigned int max_refinement_steps = 6;
+    // The refinement's budget: each GMRES iteration costs about a tenth of a
+    // single factorisation (P10, refine()), and single factors save about a
+    // third of the double factorisation's time, so a refinement that needs
+    // more than this costs what the single factors save. On P10 with
+    // fibre sheets GMRES took 3-9 iterations.
+    static constexpr unsigned int max_refinement_iterations = 12;
     // GMRES's budget (one Krylov basis, no restart): on P10 pressed with
     // friction it took 4.6 iterations on average and 13 at most.
     static constexpr unsigned int max_krylov_iterations = 40;
@@ -165,7 +173,6 @@ namespace softchain::fem
     std::unique_ptr<MultifrontalLDLT<float>>  single;           // each made when first needed
     std::unique_ptr<MultifrontalLDLT<double>> unpivoted, pivoted;
     Factors                                   last             = Factors::lu;
-    unsigned int                              refinement_steps = 0;
     unsigned int                              krylov_iterations = 0;
     // Which factors hold M for GMRES: the single ones, else `pivoted`.
     bool approximation_in_single = true;

@@ -48,7 +48,7 @@ namespace softchain::fem
     mumps.icntl[1] = -1;
     mumps.icntl[2] = -1;
     mumps.icntl[3] = 0;
-    mumps.icntl[6] = 2; // AMF ordering
+    mumps.icntl[6] = 7; // MUMPS chooses the ordering (header)
     mumps.n        = rhs.size();
     mumps.nnz      = entry.size();
     mumps.irn      = row.data();
