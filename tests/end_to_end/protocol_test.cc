@@ -77,7 +77,10 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
       // The bender is symmetric about its mid-plane z = const: the lateral
       // motion -t_z mirrors +t_z, base moments being pseudovectors
       // (T_x, T_y change sign, T_z does not). On the Q2 demo bender the two
-      // agree to 6e-12 of the moment; 1e-8 of it bounds the solver's residual.
+      // agree to 3.3e-8 of the moment (to 6e-12 where every load step's
+      // Newton update is solved exactly; the stepping stones' inexact solves,
+      // NewtonSolver's forcing term, are not mirror-symmetric); Newton's
+      // tolerances, 1e-6, bound the difference.
       if (t.z() > 1e-6) // a lateral motion (the others' z is round-off)
         for (const auto &n : motions)
           if (std::abs((R.transpose() * data::vector_of(n.actuation.tip_motion->translation)).z() + t.z()) < 1e-12)
@@ -85,9 +88,9 @@ TEST_CASE("the validation protocol: inflation to the tip angle, tip motions, tor
               const Eigen::Vector3d a = data::vector_of(m.base_moment), b = data::vector_of(n.base_moment);
               INFO("lateral " << t.z());
               CHECK(a.norm() > 0);
-              CHECK(std::abs(a.x() + b.x()) <= 1e-8 * a.norm());
-              CHECK(std::abs(a.y() + b.y()) <= 1e-8 * a.norm());
-              CHECK(std::abs(a.z() - b.z()) <= 1e-8 * a.norm());
+              CHECK(std::abs(a.x() + b.x()) <= 1e-6 * a.norm());
+              CHECK(std::abs(a.y() + b.y()) <= 1e-6 * a.norm());
+              CHECK(std::abs(a.z() - b.z()) <= 1e-6 * a.norm());
             }
     }
 

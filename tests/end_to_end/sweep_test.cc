@@ -72,15 +72,24 @@ namespace
   }
 
   // The largest coordinate difference of any node of any sample of a and b.
-  double position_difference(const ActuationDatabase &a, const ActuationDatabase &b)
+  // The largest nodal position difference of each sample of a and b over
+  // the norm |u| of all of the sample's displacements in a (Newton's
+  // displacement test's scale), the largest over the samples.
+  double relative_position_difference(const ActuationDatabase &a, const ActuationDatabase &b)
   {
-    double largest = 0.0;
+    const auto &X       = a.mesh().X;
+    double      largest = 0.0;
     for (const auto &id : a.sample_ids())
       {
         const auto x = a.read_sample(id).x, y = b.read_sample(id).x;
+        double     difference = 0.0, u_squared = 0.0;
         for (std::size_t n = 0; n < x.size(); ++n)
           for (int c = 0; c < 3; ++c)
-            largest = std::max(largest, std::abs(x[n][c] - y[n][c]));
+            {
+              difference = std::max(difference, std::abs(x[n][c] - y[n][c]));
+              u_squared += std::pow(x[n][c] - X[n][c], 2);
+            }
+        largest = std::max(largest, difference / std::max(std::sqrt(u_squared), 1e-300));
       }
     return largest;
   }
@@ -637,14 +646,14 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
   CHECK(c.mesh().cavity_triangles == a.mesh().cavity_triangles);
   CHECK(c.mesh().tip_nodes == a.mesh().tip_nodes);
   REQUIRE(c.sample_ids() == a.sample_ids());
-  // The partitioned solve sums in another order, and one rank accepts
-  // Newton steps refined to a relative linear residual of a hundredth of
-  // the residual tolerance (SerialDirectSolver) where two ranks factorise in
-  // double: the answers differ within Newton's tolerances (measured 1.1e-12
-  // m; 6.6e-16 m, rounding, when both solved exactly). 1e-9 m is the
-  // displacement tolerance (1e-6) of the ~1 mm displacements, far below
-  // any numbering or gathering error (>= 1 mm).
-  CHECK(position_difference(a, c) < 1e-9);
+  // The partitioned solve sums in another order, and one rank solves the
+  // load steps before the last inexactly (NewtonSolver's forcing term)
+  // where two ranks factorise in double: each answer lies within Newton's
+  // displacement tolerance of the exact one, |x* - x| <= 1e-6 |u| (u all
+  // of the sample's displacements), so the two within 2e-6 |u| of each
+  // other (measured 3.2e-9 m; 6.6e-16 m, rounding, when both solved every
+  // step exactly), far below any numbering or gathering error (>= 1 mm).
+  CHECK(relative_position_difference(a, c) <= 2e-6);
 }
 
 TEST_CASE("the validation protocol's tip motions give the same samples on 1 and 2 MPI ranks")

@@ -3,13 +3,17 @@
 # Runs `softchain solve FILE.prm` on 1 and on 2 MPI ranks (in ./np1, ./np2;
 # the .prm's output directory is relative) and compares their
 # solve_summary.csv: the converged flag and the counts equal, the load factor
-# and the cavity volume to relative 1e-8, the tip displacement vector to 1e-8
-# of its length (a component that is zero by symmetry is round-off on both
-# runs), the base force and moment to 1e-8 of their length plus 1e-9 N
-# (N m): under pressure alone they are round-off, ~1e-12 (one code path in
-# serial and in parallel), and the cavity pressure to 1e-8 of (|p| + 1 Pa).
-# With contact, each obstacle's force and moment (three columns each, after
-# the fifteen) to 1e-8 of their length plus 1e-9 N (N m), as the base's.
+# and the cavity volume to relative 1e-6, the tip displacement vector to 1e-6
+# of its length, the base force and moment to 1e-6 of their length plus 1e-7
+# N (N m), and the cavity pressure to 1e-6 of (|p| + 1 Pa). With contact,
+# each obstacle's force and moment (three columns each, after the fifteen)
+# to 1e-6 of their length plus 1e-7 N (N m), as the base's. 1e-6 is Newton's
+# residual and displacement tolerance: one rank solves the load steps before
+# the last inexactly (single-precision factors and GMRES to the forcing
+# term of NewtonSolver), two ranks exactly, so their paths differ within
+# the intermediate tolerance and their answers within Newton's (measured
+# 3.5e-8 of the tip displacement and 2.5e-8 of the table's force); a
+# numbering or gathering error moves them by far more.
 set -eu
 mpiexec=$1 softchain=$2 prm=$3
 for n in 1 2; do
@@ -21,7 +25,7 @@ one=np1/output/solve_summary.csv two=np2/output/solve_summary.csv
 cat "$one" "$two"
 awk -F, 'function abs(x) { return x < 0 ? -x : x }
          function differs(i, scale) {
-           if (abs($i - a[i]) <= 1e-8 * scale) return 0
+           if (abs($i - a[i]) <= 1e-6 * scale) return 0
            print "column " i " differs by " abs($i - a[i]) " (scale " scale ")"
            return 1
          }

@@ -40,7 +40,8 @@ namespace
       return residual <= tolerance * std::abs(f * s_target);
     }
     double solution_norm() const override { return std::abs(x); }
-    bool   solve_correction(bool) override
+    double residual_scale() const override { return std::abs(f * s_target); }
+    bool   solve_correction(bool, double) override
     {
       if (singular)
         return false;

@@ -384,7 +384,7 @@ TEST_CASE("every Direct solver package solves the tangent as KLU does", "[fem][s
       const std::unique_ptr<TangentSolver> tangent_solver =
         TangentSolver::create(f.prm.solver, solver.space(), log);
       TrilinosWrappers::MPI::Vector update(solver.negative_residual());
-      REQUIRE(tangent_solver->solve(solver.tangent(), nullptr, solver.negative_residual(), update, false));
+      REQUIRE(tangent_solver->solve(solver.tangent(), nullptr, solver.negative_residual(), update, false, 0.0));
       CHECK(relative_difference(update, klu_solution(solver)) < 1e-5);
     }
 }

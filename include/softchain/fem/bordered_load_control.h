@@ -67,8 +67,9 @@ namespace softchain::fem
     // The solver's residual test (|R| against the external loads) and
     // |c_target - c| <= Residual tolerance times the path's scale of c.
     bool   residual_converged(double residual, double tolerance) const override;
+    double residual_scale() const override { return solver.residual_scale(); }
     double solution_norm() const override { return solver.solution_norm(); }
-    bool   solve_correction(bool same_tangent) override;
+    bool   solve_correction(bool same_tangent, double forcing) override;
     bool   keeps_factorisation() const override { return solver.keeps_factorisation(); }
     double correction_norm() const override { return du.l2_norm(); }
     double correction_slope() const override { return -(du * solver.negative_residual()); }

@@ -14,7 +14,10 @@
 //     the error bounded by the last update or estimated by the simplified
 //     Newton correction K(x_{k-1})^-1 R(x_k) from kept factors (Deuflhard,
 //     Newton Methods for Nonlinear Problems, 2004, Sec. 2.1, NLEQ-ERR);
-//  3. dx = -K^-1 R, x_{k+1} = x_k + a dx, a = 1 unless the system admits
+//  3. dx = -K^-1 R, solved to a linear residual eta_k |R| (an inexact
+//     Newton step, Dembo, Eisenstat and Steihaug, SIAM J. Numer. Anal. 19,
+//     1982: it converges as Newton's up to a term eta_k |R|; forcing()),
+//     x_{k+1} = x_k + a dx, a = 1 unless the system admits
 //     less of it (contact points entering an obstacle) or the line search on
 //     the energy's slope s(a) = dx . R(x_k + a dx) cuts it (Crisfield,
 //     Non-linear Finite Element Analysis of Solids and Structures, Vol. 1,
@@ -41,12 +44,16 @@ namespace softchain::fem
     virtual void   first_residual(double /*residual*/) {}
     // |R| <= tolerance times the system's residual scale (its loads).
     virtual bool   residual_converged(double residual, double tolerance) const = 0;
+    // That scale.
+    virtual double residual_scale() const = 0;
     // |x|, the error test's scale.
     virtual double solution_norm() const = 0;
-    // dx = -K^-1 R with the last assembled K; `same_tangent`: with the
-    // factors of the last solve where the linear solver keeps them. False if
-    // the linear solve failed (a singular K, a Krylov solve that stalled).
-    virtual bool   solve_correction(bool same_tangent) = 0;
+    // dx = -K^-1 R with the last assembled K, to a linear residual |K dx +
+    // R| <= forcing |R| where the linear solver is iterative (exactly by a
+    // direct one); `same_tangent`: with the factors of the last solve where
+    // the linear solver keeps them. False if the linear solve failed (a
+    // singular K, a Krylov solve that stalled).
+    virtual bool   solve_correction(bool same_tangent, double forcing) = 0;
     virtual bool   keeps_factorisation() const = 0;
     virtual double correction_norm() const = 0;
     // dx . R at the current x: the energy's slope along dx (< 0 before a
@@ -102,5 +109,8 @@ namespace softchain::fem
     // inverts an element (`valid` false) is halved, at most six times.
     // Returns whether an admissible x was found (assembled, K included).
     bool line_search(NewtonSystem &system, double s0, bool valid);
+    // The forcing term eta of the correction at residual |R| in the path's
+    // last step (`final_state`) or a stepping stone.
+    double forcing(const NewtonSystem &system, double residual, bool final_state) const;
   };
 } // namespace softchain::fem

@@ -126,9 +126,12 @@ namespace softchain::fem
     // (keeps_factorisation()), even if K was assembled anew since, else with
     // K. False if the solver failed (a singular K, a Krylov solve that did
     // not converge).
+    // `forcing`: the relative residual |b - K x| <= forcing |b| an iterative
+    // solve may stop at (0: the solver's own tolerance).
     bool solve_tangent(const dealii::TrilinosWrappers::MPI::Vector &b,
                        dealii::TrilinosWrappers::MPI::Vector       &x,
-                       bool                                         same_tangent = false);
+                       bool                                         same_tangent = false,
+                       double                                       forcing      = 0);
     // A Newton update: u += update, and the springs' link states take their
     // Newton step for it; scale_correction() shortens it.
     void apply_update(const dealii::TrilinosWrappers::MPI::Vector &update);
@@ -139,8 +142,12 @@ namespace softchain::fem
     double residual_norm() const override { return residual_bound(); }
     void   first_residual(double residual) override;
     bool   residual_converged(double residual, double tolerance) const override;
+    double residual_scale() const override;
     double solution_norm() const override { return u_owned.l2_norm(); }
-    bool   solve_correction(bool same_tangent) override { return solve_tangent(rhs, du, same_tangent); }
+    bool   solve_correction(bool same_tangent, double forcing) override
+    {
+      return solve_tangent(rhs, du, same_tangent, forcing);
+    }
     bool   keeps_factorisation() const override;
     double correction_norm() const override { return du.l2_norm(); }
     double correction_slope() const override { return -(du * rhs); }

@@ -74,6 +74,9 @@ namespace softchain::fem
     // error bound).
     explicit SerialDirectSolver(const dealii::TrilinosWrappers::SparseMatrix &matrix,
                                 double relative_residual = 0.0);
+    // The relative residual the following solves accept (0: only 1e-12 or
+    // the backward error bound), e.g. each Newton step's forcing term.
+    void accept_relative_residual(double eta) { relative_residual = eta; }
     ~SerialDirectSolver();
     SerialDirectSolver(const SerialDirectSolver &)            = delete;
     SerialDirectSolver &operator=(const SerialDirectSolver &) = delete;
@@ -168,7 +171,7 @@ namespace softchain::fem
     // GMRES's budget (one Krylov basis, no restart): on P10 pressed with
     // friction it took 4.6 iterations on average and 13 at most.
     static constexpr unsigned int max_krylov_iterations = 40;
-    const double                  relative_residual;
+    double                        relative_residual;
 
     std::unique_ptr<MultifrontalLDLT<float>>  single;           // each made when first needed
     std::unique_ptr<MultifrontalLDLT<double>> unpivoted, pivoted;

@@ -32,6 +32,8 @@ namespace softchain::fem
 
     // x = K^-1 b; `same_tangent`: with the factors of the last solve where
     // the solver keeps them (keeps_factorisation()), else with K.
+    // `forcing`: the relative residual |b - K x| <= forcing |b| a solve that
+    // refines or iterates may stop at (0: its own tolerance).
     // `unsymmetric_part`: nullptr, or a part N of K such that K - N is
     // symmetric where the rest of K is (the friction's, ObstacleContact),
     // for a solver that can use it.
@@ -39,7 +41,8 @@ namespace softchain::fem
                        const dealii::TrilinosWrappers::SparseMatrix *unsymmetric_part,
                        const dealii::TrilinosWrappers::MPI::Vector  &b,
                        dealii::TrilinosWrappers::MPI::Vector        &x,
-                       bool                                          same_tangent) = 0;
+                       bool                                          same_tangent,
+                       double                                        forcing) = 0;
     virtual bool keeps_factorisation() const { return false; }
     // K's sparsity pattern changed: a kept analysis of the old one is void.
     virtual void pattern_changed() {}

@@ -43,13 +43,13 @@ namespace softchain::fem
            std::abs(misfit) <= prm.solver.residual_tolerance * scale;
   }
 
-  bool BorderedLoadControl::solve_correction(const bool same_tangent)
+  bool BorderedLoadControl::solve_correction(const bool same_tangent, const double forcing)
   {
     const FiniteElementSpace     &s = solver.space();
     TrilinosWrappers::MPI::Vector b(s.owned_dofs, s.communicator);
     du.reinit(b);
-    if (!solver.solve_tangent(solver.negative_residual(), du, same_tangent) ||
-        !solver.solve_tangent(q, b, true))
+    if (!solver.solve_tangent(solver.negative_residual(), du, same_tangent, forcing) ||
+        !solver.solve_tangent(q, b, true, forcing))
       return false;
     dmu = (misfit - q * du) / (q * b);
     du.add(dmu, b);

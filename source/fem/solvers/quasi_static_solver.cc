@@ -355,12 +355,13 @@ namespace softchain::fem
 
   bool QuasiStaticSolver::solve_tangent(const TrilinosWrappers::MPI::Vector &b,
                                         TrilinosWrappers::MPI::Vector       &x,
-                                        const bool                           same_tangent)
+                                        const bool                           same_tangent,
+                                        const double                         forcing)
   {
     TimerOutput::Scope timer_section(computing_timer, "linear solve");
     x = 0;
     const bool friction = contact && contact->has_friction();
-    if (!tangent_solver->solve(matrix, friction ? &friction_unsymmetric_part : nullptr, b, x, same_tangent))
+    if (!tangent_solver->solve(matrix, friction ? &friction_unsymmetric_part : nullptr, b, x, same_tangent, forcing))
       return false;
     (active_constraints ? *active_constraints : fe_space->fixed_dofs).distribute(x);
     return std::isfinite(x.l2_norm());
@@ -452,13 +453,16 @@ namespace softchain::fem
       motion_residual_scale = residual;
   }
 
+  // The residual's scale: the external loads, a prescribed motion's first
+  // residual, or (a scene with neither) the springs' rest tension.
+  double QuasiStaticSolver::residual_scale() const
+  {
+    return std::max({f_ext_norm, motion_residual_scale, springs ? springs->rest_force() : 0.0, 1e-300});
+  }
+
   bool QuasiStaticSolver::residual_converged(const double residual, const double tolerance) const
   {
-    // The residual's scale: the external loads, a prescribed motion's first
-    // residual, or (a scene with neither) the springs' rest tension.
-    const double scale = std::max({f_ext_norm, motion_residual_scale,
-                                   springs ? springs->rest_force() : 0.0, 1e-300});
-    return residual <= tolerance * scale;
+    return residual <= tolerance * residual_scale();
   }
 
   void QuasiStaticSolver::anchor_tip_motion(const bool point_contact)

@@ -23,14 +23,13 @@ namespace softchain::fem
       {}
       bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::SparseMatrix *unsymmetric_part,
                  const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x,
-                 const bool same_tangent) override
+                 const bool same_tangent, const double forcing) override
       {
-        // The linear residual Newton's steps may leave: at most a hundredth
-        // of the residual tolerance relative to |R|, so that near the
-        // solution (|R| <= |f|) it is a hundredth of what the final test
-        // allows (SerialDirectSolver::refine()).
+        // The linear residual Newton's step may leave (NewtonSolver), else a
+        // hundredth of the residual tolerance relative to |b|.
         if (!factors)
-          factors = std::make_unique<SerialDirectSolver>(K, prm.residual_tolerance / 100);
+          factors = std::make_unique<SerialDirectSolver>(K);
+        factors->accept_relative_residual(forcing > 0 ? forcing : prm.residual_tolerance / 100);
         if (same_tangent)
           {
             factors->solve_again(x, b);
@@ -61,7 +60,7 @@ namespace softchain::fem
                     "Amesos_Mumps")
       {}
       bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::SparseMatrix *,
-                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x, bool) override
+                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x, bool, double) override
       {
         SolverControl                  control(1000, prm.krylov_tolerance * b.l2_norm());
         TrilinosWrappers::SolverDirect solver(control, TrilinosWrappers::SolverDirect::AdditionalData(false, package));
@@ -90,7 +89,7 @@ namespace softchain::fem
         amg.aggregation_threshold = 0.02;
       }
       bool solve(const TrilinosWrappers::SparseMatrix &K, const TrilinosWrappers::SparseMatrix *,
-                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x, bool) override
+                 const TrilinosWrappers::MPI::Vector &b, TrilinosWrappers::MPI::Vector &x, bool, double) override
       {
         SolverControl                     control(1000, prm.krylov_tolerance * b.l2_norm());
         TrilinosWrappers::PreconditionAMG preconditioner;

@@ -195,9 +195,22 @@ namespace softchain::fem
         for (unsigned int c = 0; c < 3; ++c)
           for (unsigned int c2 = 0; c2 < 3; ++c2)
             H[c][c2] = dT_dl * e[c] * e[c2] + T_own / l * ((c == c2) - e[c] * e[c2]);
-        for (unsigned int i = 0; i < s.component.size(); ++i)
-          for (unsigned int j = 0; j < s.component.size(); ++j)
-            (*matrix)(i, j) += s.delta[i] * H[s.component[i]][s.component[j]] * s.delta[j];
+        // K_ij = delta_i w^{c_i}_j with w^c_j = H_{c c_j} delta_j, formed once
+        // per component: each row of K is then one contiguous, vectorised
+        // update instead of a gather of H per entry.
+        const unsigned int  n = s.component.size();
+        std::vector<double> w(3 * n);
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int j = 0; j < n; ++j)
+            w[c * n + j] = H[c][s.component[j]] * s.delta[j];
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double  delta_i = s.delta[i];
+            const double *w_i     = &w[s.component[i] * n];
+            double       *row     = &(*matrix)(i, 0);
+            for (unsigned int j = 0; j < n; ++j)
+              row[j] += delta_i * w_i[j];
+          }
       }
     return std::abs(T - EA * tension_law.tension(eps)) * std::sqrt(f_norm_squared);
   }

@@ -398,11 +398,16 @@ namespace softchain::fem
                                     const std::vector<data::Point3> &directions,
                                     const std::string &design_hash)
   {
+    // A direction measured on a computed state carries that state's
+    // round-off (1e-13 between solver orderings or rank counts); rounded to
+    // 1e-9 it gives the same forces, and so the same sample id (cached),
+    // however the state was computed.
+    const auto                    rounded = [](const double c) { return std::round(c * 1e9) / 1e9; };
     std::vector<data::PointForce> forces;
     for (std::size_t k = 0; k < request.points.size(); ++k)
       forces.push_back({request.points[k],
-                        {{request.forces[k] * directions[k][0], request.forces[k] * directions[k][1],
-                          request.forces[k] * directions[k][2]}}});
+                        {{request.forces[k] * rounded(directions[k][0]), request.forces[k] * rounded(directions[k][1]),
+                          request.forces[k] * rounded(directions[k][2])}}});
     Sample sample = sample_of(request.role(), request.pressure, std::move(forces), request.label);
     sample.id     = data::sample_id(design_hash, sample.actuation);
     return sample;
