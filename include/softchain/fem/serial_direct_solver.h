@@ -162,11 +162,12 @@ namespace softchain::fem
     // The backward error every solve of a symmetric K meets (solve_unpivoted(),
     // refine()).
     static constexpr double       backward_error_bound = 1e-12;
-    // The refinement's budget: each GMRES iteration costs about a tenth of a
-    // single factorisation (P10, refine()), and single factors save about a
-    // third of the double factorisation's time, so a refinement that needs
-    // more than this costs what the single factors save. On P10 with
-    // fibre sheets GMRES took 3-9 iterations.
+    // The refinement's budget: on P10 with fibre sheets GMRES took 3-9
+    // iterations to 1e-8 |b|, so a refinement fails only where the single
+    // factors are far from K. An iteration costs about 25 ms there against
+    // 0.19 s for the single factorisation, so a failed refinement costs
+    // about two factorisations, once per solver (after it the double
+    // factors serve).
     static constexpr unsigned int max_refinement_iterations = 12;
     // GMRES's budget (one Krylov basis, no restart): on P10 pressed with
     // friction it took 4.6 iterations on average and 13 at most.
