@@ -388,3 +388,33 @@ TEST_CASE("every Direct solver package solves the tangent as KLU does", "[fem][s
       CHECK(relative_difference(update, klu_solution(solver)) < 1e-5);
     }
 }
+
+TEST_CASE("the iterative solver meets the Krylov tolerance, and a breakdown is a failed solve",
+          "[fem][solver]")
+{
+  // Linear solver = iterative (GMRES with algebraic multigrid) on the demo
+  // finger's tangent at rest: its contract is the relative residual
+  // |b - K x| <= Krylov tolerance |b| from the Newton solver's start x = 0.
+  // From a start far from the solution (x = b, a force read as a
+  // displacement) AztecOO stops with "loss of precision"; the solve must
+  // then fail with a named reason, which cuts the load step, not throw.
+  test::SolverFixture f(test::parameters_from_text(
+    "iterative", test::bender_prm("Q2", 4, "subsection Solver\n  set Linear solver = iterative\nend\n")));
+  QuasiStaticSolver &solver = *f.solver;
+  LoadState          load;
+  load.pressure = 2e4;
+  REQUIRE(solver.assemble(load, true));
+  std::ostringstream                   log;
+  const std::unique_ptr<TangentSolver> tangent_solver = TangentSolver::create(f.prm.solver, solver.space(), log);
+  const TrilinosWrappers::MPI::Vector &b = solver.negative_residual();
+  TrilinosWrappers::MPI::Vector        x(b), r(b);
+  x = 0;
+  REQUIRE(tangent_solver->solve(solver.tangent(), nullptr, b, x, false, 0.0));
+  solver.tangent().vmult(r, x);
+  r -= b;
+  CHECK(r.l2_norm() <= f.prm.solver.krylov_tolerance * b.l2_norm());
+
+  x = b;
+  CHECK_FALSE(tangent_solver->solve(solver.tangent(), nullptr, b, x, false, 0.0));
+  CHECK(log.str().find("GMRES broke down") != std::string::npos);
+}

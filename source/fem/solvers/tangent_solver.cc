@@ -7,6 +7,8 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <algorithm>
+
 namespace softchain::fem
 {
   using namespace dealii;
@@ -74,7 +76,7 @@ namespace softchain::fem
     };
 
     // GMRES(200) with ML's smoothed aggregation, the translations as
-    // constant modes.
+    // constant modes, to the Krylov tolerance.
     class AmgGmresSolver : public TangentSolver
     {
     public:
@@ -103,6 +105,14 @@ namespace softchain::fem
           {
             log << "      GMRES did not converge in " << failure.last_step << " iterations (residual "
                 << failure.last_residual << ")\n";
+            return false;
+          }
+        catch (const ExceptionBase &)
+          {
+            // AztecOO stops with an error code where GMRES breaks down or
+            // loses precision: a failed solve, which cuts the load step,
+            // rather than an exception that ends the run.
+            log << "      GMRES broke down (AztecOO stopped with an error)\n";
             return false;
           }
         return true;
