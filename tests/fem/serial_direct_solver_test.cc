@@ -396,7 +396,7 @@ TEST_CASE("the iterative solver meets the Krylov tolerance, and a breakdown is a
   // finger's tangent at rest: its contract is the relative residual
   // |b - K x| <= Krylov tolerance |b| from the Newton solver's start x = 0.
   // From a start far from the solution (x = b, a force read as a
-  // displacement) AztecOO stops with "loss of precision"; the solve must
+  // displacement) AztecOO stops with an error code; the solve must
   // then fail with a named reason, which cuts the load step, not throw.
   test::SolverFixture f(test::parameters_from_text(
     "iterative", test::bender_prm("Q2", 4, "subsection Solver\n  set Linear solver = iterative\nend\n")));
