@@ -56,7 +56,7 @@ namespace softchain::geometry
     const auto   node   = [&](double x, double s) {
       return Eigen::Vector3d(x, layout.fabric_height, s * 0.5 * (d.width(x) - d.wall));
     };
-    SpringNetwork fabric{"fabric", {}};
+    SpringNetwork fabric{"fabric", {}, {}};
     for (const double s : across)
       {
         fabric.polylines.push_back({false, {}});
@@ -77,7 +77,7 @@ namespace softchain::geometry
     // Rings at cavity_start + (k + 1/2) pitch, k = 0, 1, ... before cavity_end.
     const int n_rings = static_cast<int>(
       std::ceil((d.cavity_end() - d.cavity_start()) / layout.thread_pitch - 0.5));
-    SpringNetwork threads{"thread", {}};
+    SpringNetwork threads{"thread", {}, {}};
     for (int k = 0; k < n_rings; ++k)
       threads.polylines.push_back(ring(d, layout, d.cavity_start() + (k + 0.5) * layout.thread_pitch));
     return threads;

@@ -81,9 +81,9 @@ TEST_CASE("an open cavity surface is refused", "[geometry][checks]")
 TEST_CASE("a spring node outside the body is named", "[geometry][checks]")
 {
   const MshFile mesh = small_mesh("springs", all_groups, good_cells);
-  SpringNetwork inside{"fabric", {{false, {{0.1, 0.1, 0.1}, {0.5, 0.5, 0.5}}}}};
+  SpringNetwork inside{"fabric", {{false, {{0.1, 0.1, 0.1}, {0.5, 0.5, 0.5}}}}, {}};
   CHECK_NOTHROW(MeshChecks::check_springs_inside(mesh, {inside}, "springs.txt"));
-  SpringNetwork outside{"thread", {{true, {{0.1, 0.1, 0.1}, {0.9, 0.9, 0.1}}}}};
+  SpringNetwork outside{"thread", {{true, {{0.1, 0.1, 0.1}, {0.9, 0.9, 0.1}}}}, {}};
   CHECK_THROWS_WITH(MeshChecks::check_springs_inside(mesh, {inside, outside}, "springs.txt"),
                     Contains("springs.txt") && Contains("'thread'") && Contains("0.9"));
   // A fibre sheet's corners, likewise.
