@@ -651,8 +651,9 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
   // where two ranks factorise in double: each answer lies within Newton's
   // displacement tolerance of the exact one, |x* - x| <= 1e-6 |u| (u all
   // of the sample's displacements), so the two within 2e-6 |u| of each
-  // other (measured 3.2e-9 m; 6.6e-16 m, rounding, when both solved every
-  // step exactly), far below any numbering or gathering error (>= 1 mm).
+  // other (measured 1e-10 m, 9.6e-8 |u|; 6.6e-16 m, rounding, when both
+  // solved every step exactly), far below any numbering or gathering error
+  // (>= 1 mm).
   CHECK(relative_position_difference(a, c) <= 2e-6);
 }
 
