@@ -7,8 +7,6 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <algorithm>
-
 namespace softchain::fem
 {
   using namespace dealii;

@@ -197,9 +197,11 @@ namespace softchain::fem
             H[c][c2] = dT_dl * e[c] * e[c2] + T_own / l * ((c == c2) - e[c] * e[c2]);
         // K_ij = delta_i w^{c_i}_j with w^c_j = H_{c c_j} delta_j, formed once
         // per component: each row of K is then one contiguous, vectorised
-        // update instead of a gather of H per entry.
-        const unsigned int  n = s.component.size();
-        std::vector<double> w(3 * n);
+        // update instead of a gather of H per entry. The rows w^c live in a
+        // buffer per assembly thread, so that no link allocates.
+        const unsigned int                n = s.component.size();
+        thread_local std::vector<double> w;
+        w.resize(3 * n);
         for (unsigned int c = 0; c < 3; ++c)
           for (unsigned int j = 0; j < n; ++j)
             w[c * n + j] = H[c][s.component[j]] * s.delta[j];
