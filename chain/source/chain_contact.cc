@@ -166,22 +166,20 @@ namespace softchain::chain
     return s;
   }
 
-  void ChainContact::skins(const ChainPose &pose, const int n_angles, std::vector<Skin> &skins) const
+  void ChainContact::skins(const ChainPose &pose, std::vector<Skin> &skins) const
   {
     skins.clear();
     for (std::size_t b = 0; b < skin_compliance_.size(); ++b)
       if (skin_compliance_[b] > 0.0)
         {
           Skin skin;
-          skin.link            = static_cast<int>(b);
-          skin.direction       = skin_direction(pose, skin.link);
-          skin.shift           = skin_shift_[b];
-          skin.stiffness       = 1.0 / skin_compliance_[b];
-          skin.penetration_row = Eigen::RowVectorXd::Zero(n_angles);
+          skin.link      = static_cast<int>(b);
+          skin.direction = skin_direction(pose, skin.link);
+          skin.shift     = skin_shift_[b];
+          skin.stiffness = 1.0 / skin_compliance_[b];
           skins.push_back(skin);
         }
-    Eigen::RowVectorXd row(n_angles);
-    auto               skin = skins.begin();
+    auto skin = skins.begin();
     for (const Touch &touch : touches_)
       {
         while (skin != skins.end() && skin->link < touch.link)
@@ -190,52 +188,22 @@ namespace softchain::chain
           continue;
         const Eigen::Vector3d &d = skin->direction;
         const double           f = stiffness_ * touch.gap;
-        jacobian_row(pose, touch, touch.curvature * d, row);
-        skin->penetration_row += f * row;
-        // d turns with the link: d(n . d)/dq_{i,alpha} = a_{i,alpha} . (d x n).
-        const Eigen::Vector3d w = d.cross(touch.normal);
-        for (int i = 0; i <= touch.link; ++i)
-          for (int alpha = 0; alpha < 3; ++alpha)
-            skin->penetration_row[3 * i + alpha] += f * pose.joint_axes[i].col(alpha).dot(w);
+        skin->penetration_row += f * LinkWrenchStiffness::point_row(touch.position, touch.curvature * d);
+        // d turns with the link: d(n . d)/dq_{i,alpha} = a_{i,alpha} . (d x n),
+        // the row of a turn alone (w_b . (d x n)).
+        skin->penetration_row.head<3>() += f * d.cross(touch.normal);
         skin->penetration_curvature += f * d.dot(touch.curvature * d);
       }
   }
 
-  void ChainContact::jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
-                                  Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const
+  void ChainContact::friction_rows(std::vector<LinkRow> &rows) const
   {
-    jacobian_row(pose, touch.link, touch.position, e, row);
-  }
-
-  void ChainContact::jacobian_row(const ChainPose &pose, const int link, const Eigen::Vector3d &position,
-                                  const Eigen::Vector3d &e,
-                                  Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const
-  {
-    row.setZero();
-    for (int i = 0; i <= link; ++i)
-      for (int alpha = 0; alpha < 3; ++alpha)
-        {
-          const Eigen::Vector3d &pivot = alpha == 0 ? pose.twist_pivots[i] : pose.joint_positions[i];
-          row[3 * i + alpha] = pose.joint_axes[i].col(alpha).dot((position - pivot).cross(e));
-        }
-  }
-
-  void ChainContact::friction_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
-                                   Eigen::VectorXd &weights) const
-  {
-    std::vector<std::pair<const CoulombFriction::Grip *, int>> nonzero; // (grip, row)
+    rows.clear();
     for (const CoulombFriction::Grip &grip : friction_.grips())
       for (int r = 0; r < 2; ++r)
         if (grip.rows[r].second > 0.0)
-          nonzero.emplace_back(&grip, r);
-    rows.resize(static_cast<Eigen::Index>(nonzero.size()), n_angles);
-    weights.resize(static_cast<Eigen::Index>(nonzero.size()));
-    for (std::size_t j = 0; j < nonzero.size(); ++j)
-      {
-        const auto &[grip, r] = nonzero[j];
-        jacobian_row(pose, grip->link, grip->position, grip->rows[r].first, rows.row(j));
-        weights[j] = grip->rows[r].second;
-      }
+          rows.push_back({grip.link, LinkWrenchStiffness::point_row(grip.position, grip.rows[r].first),
+                          grip.rows[r].second});
   }
 
   // A point new in contact sticks where it entered the obstacle, on the
@@ -281,11 +249,10 @@ namespace softchain::chain
   // The normal row (weight k_c) if `normal`, and each eigenvector e of H_g
   // with eigenvalue mu != 0 (a round obstacle's 1/radius) with weight
   // k_c g mu.
-  void ChainContact::append_rows(const Touch &touch, const bool normal,
-                                 std::vector<std::pair<Eigen::Vector3d, double>> &directions) const
+  void ChainContact::append_rows(const Touch &touch, const bool normal, std::vector<LinkRow> &rows) const
   {
     if (normal)
-      directions.emplace_back(touch.normal, stiffness_);
+      rows.push_back({touch.link, LinkWrenchStiffness::point_row(touch.position, touch.normal), stiffness_});
     if (touch.curvature.isZero())
       return;
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
@@ -293,123 +260,105 @@ namespace softchain::chain
     const double largest = eigen.eigenvalues().cwiseAbs().maxCoeff();
     for (int i = 0; i < 3; ++i)
       if (std::abs(eigen.eigenvalues()[i]) > 1e-9 * largest)
-        directions.emplace_back(eigen.eigenvectors().col(i), stiffness_ * touch.gap * eigen.eigenvalues()[i]);
-  }
-
-  void ChainContact::fill_rows(const ChainPose &pose,
-                               const std::vector<std::pair<Eigen::Vector3d, double>> &directions,
-                               const std::vector<int> &owner, const int n_angles, Eigen::MatrixXd &rows,
-                               Eigen::VectorXd &weights) const
-  {
-    rows.resize(static_cast<Eigen::Index>(directions.size()), n_angles);
-    weights.resize(static_cast<Eigen::Index>(directions.size()));
-    for (std::size_t r = 0; r < directions.size(); ++r)
-      {
-        jacobian_row(pose, touches_[owner[r]], directions[r].first, rows.row(r));
-        weights[r] = directions[r].second;
-      }
+        rows.push_back({touch.link, LinkWrenchStiffness::point_row(touch.position, eigen.eigenvectors().col(i)),
+                        stiffness_ * touch.gap * eigen.eigenvalues()[i]});
   }
 
   // With a skin, one row u_b per touching link with weight -1 / D_b (header).
-  void ChainContact::tangent_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
-                                  Eigen::VectorXd &weights) const
+  void ChainContact::tangent_rows(const ChainPose &pose, std::vector<LinkRow> &rows) const
   {
-    rows_of_touches(pose, true, n_angles, rows, weights);
-    Eigen::MatrixXd friction;
-    Eigen::VectorXd friction_weights;
-    friction_rows(pose, n_angles, friction, friction_weights);
-    rows.conservativeResize(rows.rows() + friction.rows(), n_angles);
-    weights.conservativeResize(weights.size() + friction_weights.size());
-    rows.bottomRows(friction.rows()) = friction;
-    weights.tail(friction_weights.size()) = friction_weights;
+    rows.clear();
+    for (const Touch &touch : touches_)
+      append_rows(touch, true, rows);
+    std::vector<LinkRow> friction;
+    friction_rows(friction);
+    rows.insert(rows.end(), friction.begin(), friction.end());
     if (!has_skin())
       return;
     std::vector<Skin> links;
-    skins(pose, n_angles, links);
-    Eigen::RowVectorXd row(n_angles);
+    skins(pose, links);
     for (const Skin &skin : links)
       {
-        Eigen::RowVectorXd u = skin.penetration_row;
-        double             D = skin.stiffness + skin.penetration_curvature;
-        bool               touching = false;
+        LinkWrenchStiffness::Vector6d u = skin.penetration_row;
+        double                        D = skin.stiffness + skin.penetration_curvature;
+        bool                          touching = false;
         for (const Touch &touch : touches_)
           if (touch.link == skin.link && gives(touch))
             {
               const double a = touch.normal.dot(skin.direction);
-              jacobian_row(pose, touch, touch.normal, row);
-              u += stiffness_ * a * row;
+              u += stiffness_ * a * LinkWrenchStiffness::point_row(touch.position, touch.normal);
               D += stiffness_ * a * a;
               touching = true;
             }
-        if (!touching)
-          continue;
-        rows.conservativeResize(rows.rows() + 1, n_angles);
-        weights.conservativeResize(weights.size() + 1);
-        rows.row(rows.rows() - 1) = u;
-        weights[weights.size() - 1] = -1.0 / D;
+        if (touching)
+          rows.push_back({skin.link, u, -1.0 / D});
       }
   }
 
-  void ChainContact::curvature_rows(const ChainPose &pose, const int n_angles, Eigen::MatrixXd &rows,
-                                    Eigen::VectorXd &weights) const
+  void ChainContact::curvature_rows(std::vector<LinkRow> &rows) const
   {
-    rows_of_touches(pose, false, n_angles, rows, weights);
+    rows.clear();
+    for (const Touch &touch : touches_)
+      append_rows(touch, false, rows);
   }
 
-  void ChainContact::rows_of_touches(const ChainPose &pose, const bool normals, const int n_angles,
-                                     Eigen::MatrixXd &rows, Eigen::VectorXd &weights) const
-  {
-    std::vector<std::pair<Eigen::Vector3d, double>> directions;
-    std::vector<int>                                owner;
-    for (std::size_t t = 0; t < touches_.size(); ++t)
-      {
-        append_rows(touches_[t], normals, directions);
-        owner.resize(directions.size(), static_cast<int>(t));
-      }
-    fill_rows(pose, directions, owner, n_angles, rows, weights);
-  }
-
-  // Cluster by cluster (CollisionSurface), so that the points come sorted
-  // by link; a cluster whose bounding sphere lies farther than `margin`
-  // from an obstacle (g(centre) > radius + margin, g being 1-Lipschitz) has
-  // no point within it. A point inside (g < 0) carries f = -k_c g n.
+  // Down each link's tree of spheres (CollisionSurface::nodes), so that
+  // the points come sorted by link; a node whose sphere lies farther than
+  // `margin` from every obstacle (clearance > margin, g being 1-Lipschitz)
+  // has no point within it, and in a cluster only the obstacles its sphere
+  // reaches are tested. A point inside (g < 0) carries f = -k_c g n.
   void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near) const
   {
     near.clear();
     if (obstacles_.empty())
       return;
-    for (const CollisionSurface::Cluster &cluster : surface_->clusters())
+    const std::vector<CollisionSurface::Node> &nodes = surface_->nodes();
+    for (std::size_t i = 0; i < nodes.size();)
       {
-        const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
-        const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
-        const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
-        const Eigen::Vector3d  skin(0.0, s, 0.0);
-        const Eigen::Vector3d  centre = c + R * cluster.centre;
-        for (std::size_t o = 0; o < obstacles_.size(); ++o)
+        const CollisionSurface::Node &node = nodes[i];
+        if (clearance(pose, node) > margin)
+          i = node.skip;
+        else if (node.cluster < 0)
+          ++i;
+        else
           {
-            const geometry::Obstacle &obstacle = obstacles_[o];
-            if (obstacle.body->gap(centre, poses_[o]) > cluster.radius + std::abs(s) + margin)
-              continue;
-            for (int k = cluster.begin; k < cluster.end; ++k)
-              {
-                const Eigen::Vector3d x = c + R * (surface_->gives(k) ? offsets_[k] + skin : offsets_[k]);
-                if (!(obstacle.body->gap(x, poses_[o]) < margin))
-                  continue;
-                near.emplace_back();
-                touch_at(x, cluster.link, k, static_cast<int>(o), near.back());
-              }
+            add_candidates(pose, surface_->clusters()[node.cluster], margin, near);
+            i = node.skip;
           }
       }
   }
 
-  double ChainContact::clearance(const ChainPose &pose, const CollisionSurface::Cluster &cluster) const
+  void ChainContact::add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
+                                    const double margin, std::vector<Touch> &near) const
   {
-    const Eigen::Vector3d centre =
-      pose.joint_positions[cluster.link] + pose.link_rotations[cluster.link] * cluster.centre;
+    const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
+    const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
+    const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
+    const Eigen::Vector3d  skin(0.0, s, 0.0);
+    const Eigen::Vector3d  centre = c + R * cluster.centre;
+    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+      {
+        const geometry::Obstacle &obstacle = obstacles_[o];
+        if (obstacle.body->gap(centre, poses_[o]) > cluster.radius + std::abs(s) + margin)
+          continue;
+        for (int k = cluster.begin; k < cluster.end; ++k)
+          {
+            const Eigen::Vector3d x = c + R * (surface_->gives(k) ? offsets_[k] + skin : offsets_[k]);
+            if (!(obstacle.body->gap(x, poses_[o]) < margin))
+              continue;
+            near.emplace_back();
+            touch_at(x, cluster.link, k, static_cast<int>(o), near.back());
+          }
+      }
+  }
+
+  double ChainContact::clearance(const ChainPose &pose, const CollisionSurface::Node &node) const
+  {
+    const Eigen::Vector3d centre = pose.joint_positions[node.link] + pose.link_rotations[node.link] * node.centre;
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t o = 0; o < obstacles_.size(); ++o)
       nearest = std::min(nearest, obstacles_[o].body->gap(centre, poses_[o]));
-    return nearest - cluster.radius - (has_skin() ? std::abs(skin_shift_[cluster.link]) : 0.0);
+    return nearest - node.radius - (has_skin() ? std::abs(skin_shift_[node.link]) : 0.0);
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

@@ -253,53 +253,50 @@ namespace softchain::chain
   //   (H + C + k_c V_A^T V_A) d = -(r_f + k_c V_A^T g_A),
   // until A repeats (at most 10 passes). So a step from outside an
   // obstacle already stops at it, instead of diving in and being cut back
-  // by the line search. The rows are added by Woodbury around H's O(n)
-  // factor where H is positive definite and they are few (woodbury_pays),
-  // else to the dense tangent (shifted if need be). If the curvature rows (negative weights) leave no descent
+  // by the line search. Every row belongs to one link, so the rows of a
+  // pass are gathered into each link's 6 x 6 stiffness (LinkWrenchStiffness)
+  // and added to H's dense form, factored by Cholesky (shifted if need
+  // be). If the curvature rows (negative weights) leave no descent
   // direction, the step is taken without them (the friction's, positive, stay).
   void ChainEquilibrium::contact_direction()
   {
     contact_.candidates(pose_, contact_margin_, near_);
     const double       k = contact_.stiffness();
     const Eigen::Index m = static_cast<Eigen::Index>(near_.size());
-    near_rows_.resize(m, chain_.n_angles());
-    has_row_.assign(m, 0);
     Eigen::VectorXd    gaps(m);
-    Eigen::VectorXd    free_residual = residual_;
     std::vector<char>  active(m);
+    near_rows_.resize(m);
+    link_model_.reset(chain_.n_joints());
     for (Eigen::Index c = 0; c < m; ++c)
       {
-        gaps[c]   = near_[c].gap;
-        active[c] = gaps[c] < 0.0;
+        gaps[c]       = near_[c].gap;
+        active[c]     = gaps[c] < 0.0;
+        near_rows_[c] = LinkWrenchStiffness::point_row(near_[c].position, near_[c].normal);
         if (active[c])
-          free_residual -= k * gaps[c] * near_row(c).transpose();
+          link_model_.add_force(near_[c].link, near_rows_[c], -k * gaps[c]);
       }
-    contact_.curvature_rows(pose_, chain_.n_angles(), curvature_rows_, curvature_weights_);
-    contact_.friction_rows(pose_, chain_.n_angles(), friction_rows_, friction_weights_);
-    contact_.skins(pose_, chain_.n_angles(), skins_);
+    Eigen::VectorXd free_residual = residual_;
+    link_model_.add_generalised_force(pose_, free_residual);
+    contact_.curvature_rows(curvature_rows_);
+    contact_.friction_rows(friction_rows_);
+    contact_.skins(pose_, skins_);
+    skin_of_link_.assign(chain_.n_joints(), -1);
+    for (std::size_t j = 0; j < skins_.size(); ++j)
+      skin_of_link_[skins_[j].link] = static_cast<int>(j);
     alignment_.setZero(m);
-    for (const ChainContact::Skin &skin : skins_)
-      for (Eigen::Index c = 0; c < m; ++c)
-        if (near_[c].link == skin.link && contact_.gives(near_[c]))
-          alignment_[c] = near_[c].normal.dot(skin.direction);
-    has_dense_tangent_  = false;
-    const bool factored = tangent_.factor(0.0);
-    if (factored) // H^-1 r_f once; H^-1 of a row when it first enters A
-      {
-        solved_rows_.resize(chain_.n_angles(), m + curvature_rows_.rows() + friction_rows_.rows());
-        solved_.assign(solved_rows_.cols(), 0);
-        solved_residual_.resize(chain_.n_angles());
-        tangent_.solve(free_residual, solved_residual_);
-      }
+    for (Eigen::Index c = 0; c < m; ++c)
+      if (const int j = skin_of_link_[near_[c].link]; j >= 0 && contact_.gives(near_[c]))
+        alignment_[c] = near_[c].normal.dot(skins_[j].direction);
+    dense_tangent_ = tangent_.dense();
     for (const bool curvature : {true, false})
       {
         for (int pass = 0; pass < 10; ++pass)
           {
-            contact_step(active, gaps, free_residual, factored, curvature);
+            contact_step(active, gaps, free_residual, curvature);
             if (!update_active_set(gaps, active))
               break;
           }
-        if (residual_.dot(direction_) < 0.0 || curvature_rows_.rows() == 0)
+        if (residual_.dot(direction_) < 0.0 || curvature_rows_.empty())
           break;
       }
     if (residual_.dot(direction_) < 0.0)
@@ -307,7 +304,7 @@ namespace softchain::chain
     // No descent direction from the model: the step of the touching points alone.
     for (Eigen::Index c = 0; c < m; ++c)
       active[c] = gaps[c] < 0.0;
-    contact_step(active, gaps, free_residual, factored, false);
+    contact_step(active, gaps, free_residual, false);
   }
 
   // Each link's velocity (w_b, v_b: the point velocity is v_b + w_b x x)
@@ -338,7 +335,10 @@ namespace softchain::chain
     update_link_velocities();
     std::vector<double> skin_change(chain_.n_joints(), 0.0); // the predicted change of each s_b
     for (const SkinPrediction &s : skin_predictions_)
-      skin_change[s.link] = -(s.gamma + s.u.dot(direction_)) / s.D;
+      {
+        const auto &[w, v]  = link_velocities_[s.link];
+        skin_change[s.link] = -(s.gamma + s.u.head<3>().dot(w) + s.u.tail<3>().dot(v)) / s.D;
+      }
     bool changed = false;
     for (std::size_t c = 0; c < active.size(); ++c)
       {
@@ -362,117 +362,56 @@ namespace softchain::chain
   // while a point that moves less than its clearance cannot reach one (the
   // signed distance is 1-Lipschitz). Bounded per cluster: motion by
   // |v_b + w_b x centre| + |w_b| radius, clearance by ChainContact::clearance.
+  // A node's bound is at least that of every cluster below it (its sphere
+  // holds theirs), so a branch whose bound is below the largest ratio so far
+  // (or below 1, which needs no cut) is skipped.
   void ChainEquilibrium::limit_surface_motion()
   {
     update_link_velocities();
-    double ratio = 0.0; // the largest motion over what the cluster may move
-    for (const CollisionSurface::Cluster &cluster : model_.collision_surface()->clusters())
+    const std::vector<CollisionSurface::Node> &nodes = model_.collision_surface()->nodes();
+    double ratio = 1.0; // the largest motion over what a cluster may move, where above 1
+    for (std::size_t i = 0; i < nodes.size();)
       {
-        const auto &[w, v]         = link_velocities_[cluster.link];
-        const Eigen::Vector3d centre = pose_.joint_positions[cluster.link] +
-                                       pose_.link_rotations[cluster.link] * cluster.centre;
-        const double motion = (v + w.cross(centre)).norm() + w.norm() * cluster.radius;
-        ratio = std::max(ratio, motion / std::max(contact_margin_, contact_.clearance(pose_, cluster)));
-      }
-    if (ratio > 1.0)
-      direction_ /= ratio;
-  }
-
-  // n_c^T J_c of candidate c, computed when first needed.
-  const Eigen::RowVectorXd ChainEquilibrium::near_row(const Eigen::Index c)
-  {
-    if (!has_row_[c])
-      {
-        contact_.jacobian_row(pose_, near_[c], near_[c].normal, near_rows_.row(c));
-        has_row_[c] = 1;
-      }
-    return near_rows_.row(c);
-  }
-
-  // direction_ = -(H + C + k V_A^T V_A)^-1 (r_f + k V_A^T g_A) (above); by
-  // Woodbury from the rows solved with H's factor,
-  //   (H + V^T W V)^-1 b = x - Y (I + W V Y)^-1 W V x,   x = H^-1 b, Y = H^-1 V^T,
-  // while there are at most as many rows as angles, else (or where H is not
-  // positive definite) with the dense tangent, whose factorisation then
-  // costs less than the r x r system.
-  void ChainEquilibrium::contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
-                                      const Eigen::VectorXd &free_residual, const bool factored,
-                                      const bool curvature)
-  {
-    const double       k = contact_.stiffness();
-    const Eigen::Index m = static_cast<Eigen::Index>(active.size());
-    std::vector<Eigen::Index> rows; // into [near rows, curvature rows]
-    for (Eigen::Index c = 0; c < m; ++c)
-      if (active[c])
-        rows.push_back(c);
-    const Eigen::Index nc = curvature_rows_.rows();
-    if (curvature)
-      for (Eigen::Index i = 0; i < nc; ++i)
-        rows.push_back(m + i);
-    for (Eigen::Index i = 0; i < friction_rows_.rows(); ++i)
-      rows.push_back(m + nc + i);
-    const auto r        = static_cast<Eigen::Index>(rows.size());
-    const bool woodbury = factored && woodbury_pays(r + skin_rows(active));
-    contact_rows_.resize(r, chain_.n_angles());
-    contact_weights_.resize(r);
-    Eigen::MatrixXd Y(chain_.n_angles(), woodbury ? r : 0);
-    Eigen::VectorXd b = free_residual;
-    Eigen::VectorXd x = woodbury ? solved_residual_ : Eigen::VectorXd();
-    for (Eigen::Index j = 0; j < r; ++j)
-      {
-        const Eigen::Index i = rows[j];
-        if (i < m)
-          contact_rows_.row(j) = near_row(i);
-        else if (i < m + nc)
-          contact_rows_.row(j) = curvature_rows_.row(i - m);
+        const CollisionSurface::Node &node = nodes[i];
+        const auto &[w, v]                 = link_velocities_[node.link];
+        const Eigen::Vector3d centre = pose_.joint_positions[node.link] + pose_.link_rotations[node.link] * node.centre;
+        const double motion = (v + w.cross(centre)).norm() + w.norm() * node.radius;
+        const double bound  = motion / std::max(contact_margin_, contact_.clearance(pose_, node));
+        if (bound <= ratio)
+          i = node.skip;
+        else if (node.cluster < 0)
+          ++i;
         else
-          contact_rows_.row(j) = friction_rows_.row(i - m - nc);
-        contact_weights_[j] = i < m ? k : i < m + nc ? curvature_weights_[i - m] : friction_weights_[i - m - nc];
-        if (i < m) // the model's force k g_c of a point in A
-          b += k * gaps[i] * near_rows_.row(i).transpose();
-        if (!woodbury)
-          continue;
-        if (!solved_[i])
           {
-            Eigen::VectorXd column(chain_.n_angles());
-            tangent_.solve(contact_rows_.row(j).transpose(), column);
-            solved_rows_.col(i) = column;
-            solved_[i]          = 1;
+            ratio = bound;
+            i     = node.skip;
           }
-        Y.col(j) = solved_rows_.col(i);
-        if (i < m)
-          x += k * gaps[i] * solved_rows_.col(i);
       }
-    add_skin_rows(active, gaps, woodbury, Y, b, x);
-    if (!woodbury)
-      {
-        dense_solve(b);
-        return;
-      }
-    direction_ = -x;
-    if (contact_rows_.rows() == 0)
-      return;
-    const Eigen::MatrixXd WV = contact_weights_.asDiagonal() * contact_rows_;
-    const Eigen::MatrixXd S  = Eigen::MatrixXd::Identity(WV.rows(), WV.rows()) + WV * Y;
-    direction_ += Y * S.partialPivLu().solve(WV * x);
+    direction_ /= ratio;
   }
 
-  // Whether skin b adds a row to the step's model: a touching point or a
-  // point of A that gives (alignment a_c != 0).
-  bool ChainEquilibrium::skin_has_row(const ChainContact::Skin &skin, const std::vector<char> &active) const
+  // direction_ = -(H + C + k V_A^T V_A)^-1 (r_f + k V_A^T g_A) (above), with
+  // the rows and forces of the pass gathered link by link.
+  void ChainEquilibrium::contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
+                                      const Eigen::VectorXd &free_residual, const bool curvature)
   {
-    if (!skin.penetration_row.isZero())
-      return true;
+    const double k = contact_.stiffness();
+    link_model_.reset(chain_.n_joints());
     for (std::size_t c = 0; c < active.size(); ++c)
-      if (active[c] && near_[c].link == skin.link && alignment_[c] != 0.0)
-        return true;
-    return false;
-  }
-
-  Eigen::Index ChainEquilibrium::skin_rows(const std::vector<char> &active) const
-  {
-    return std::count_if(skins_.begin(), skins_.end(),
-                         [&](const ChainContact::Skin &skin) { return skin_has_row(skin, active); });
+      if (active[c]) // the model's force k g_c of a point in A
+        {
+          link_model_.add_row(near_[c].link, near_rows_[c], k);
+          link_model_.add_force(near_[c].link, near_rows_[c], k * gaps[c]);
+        }
+    if (curvature)
+      for (const ChainContact::LinkRow &row : curvature_rows_)
+        link_model_.add_row(row.link, row.row, row.weight);
+    for (const ChainContact::LinkRow &row : friction_rows_)
+      link_model_.add_row(row.link, row.row, row.weight);
+    add_skin_rows(active, gaps);
+    Eigen::VectorXd b = free_residual;
+    link_model_.add_generalised_force(pose_, b);
+    dense_solve(b);
   }
 
   // The skins in the step's model: with s_b an unknown beside d, link b's
@@ -481,74 +420,55 @@ namespace softchain::chain
   // (t_b, e_b: ChainContact::Skin). Its minimum over ds is
   //   -(gamma_b + u_b d)^2 / (2 D_b),   u_b = sum_{c in A} k_c a_c v_c + t_b,
   //   gamma_b = k_s s_b + sum_{c in A} k_c a_c g_c,   D_b = k_s + sum_{c in A} k_c a_c^2 + e_b,
-  // one row u_b of weight -1 / D_b whose force -gamma_b u_b / D_b joins the
-  // right side (equal to the exact tangent's where A holds the touching
-  // points).
-  void ChainEquilibrium::add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps,
-                                       const bool woodbury, Eigen::MatrixXd &Y, Eigen::VectorXd &b,
-                                       Eigen::VectorXd &x)
+  // one row u_b of link b with weight -1 / D_b whose force -gamma_b u_b / D_b
+  // joins the right side (equal to the exact tangent's where A holds the
+  // touching points). A skin has a row where a point touches (t_b != 0) or a
+  // point of A gives (a_c != 0).
+  void ChainEquilibrium::add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps)
   {
     skin_predictions_.clear();
-    const double k = contact_.stiffness();
-    for (const ChainContact::Skin &skin : skins_)
+    if (skins_.empty())
+      return;
+    const double      k = contact_.stiffness();
+    std::vector<char> has_row(skins_.size(), 0);
+    for (std::size_t j = 0; j < skins_.size(); ++j)
       {
-        if (!skin_has_row(skin, active))
-          continue;
-        SkinPrediction s{skin.link, skin.stiffness * skin.shift, skin.stiffness + skin.penetration_curvature,
-                         skin.penetration_row};
-        Eigen::VectorXd y = Eigen::VectorXd::Zero(woodbury ? chain_.n_angles() : 0);
-        if (woodbury && !skin.penetration_row.isZero())
-          tangent_.solve(skin.penetration_row.transpose(), y);
-        for (std::size_t c = 0; c < active.size(); ++c)
-          if (active[c] && near_[c].link == skin.link && alignment_[c] != 0.0)
-            {
-              const double a = alignment_[c];
-              s.u += k * a * near_row(c);
-              s.gamma += k * a * gaps[c];
-              s.D += k * a * a;
-              if (woodbury)
-                y += k * a * solved_rows_.col(c);
-            }
-        const Eigen::Index j = contact_rows_.rows();
-        contact_rows_.conservativeResize(j + 1, Eigen::NoChange);
-        contact_weights_.conservativeResize(j + 1);
-        contact_rows_.row(j) = s.u;
-        contact_weights_[j]  = -1.0 / s.D;
-        b -= s.gamma / s.D * s.u.transpose();
-        if (woodbury)
-          {
-            Y.conservativeResize(Eigen::NoChange, j + 1);
-            Y.col(j) = y;
-            x -= s.gamma / s.D * y;
-          }
-        skin_predictions_.push_back(std::move(s));
+        const ChainContact::Skin &skin = skins_[j];
+        skin_predictions_.push_back({skin.link, skin.stiffness * skin.shift,
+                                     skin.stiffness + skin.penetration_curvature, skin.penetration_row});
+        has_row[j] = !skin.penetration_row.isZero();
       }
+    for (std::size_t c = 0; c < active.size(); ++c)
+      if (active[c] && alignment_[c] != 0.0)
+        {
+          const int       j = skin_of_link_[near_[c].link];
+          SkinPrediction &s = skin_predictions_[j];
+          const double    a = alignment_[c];
+          s.u += k * a * near_rows_[c];
+          s.gamma += k * a * gaps[c];
+          s.D += k * a * a;
+          has_row[j] = 1;
+        }
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < skins_.size(); ++j)
+      if (has_row[j])
+        {
+          const SkinPrediction &s = skin_predictions_[j];
+          link_model_.add_row(s.link, s.u, -1.0 / s.D);
+          link_model_.add_force(s.link, s.u, -s.gamma / s.D);
+          skin_predictions_[kept++] = s;
+        }
+    skin_predictions_.resize(kept);
   }
 
-  // Woodbury's r solves with H's O(n) factor and its r x r system, against
-  // the dense tangent's n^2 per row and its n^3 / 3 Cholesky factor. On the
-  // benchmark's finger of 9 joints (n = 27), Woodbury for at most n / 4 rows
-  // against Woodbury up to r = n, three interleaved runs of 5:
-  // blocked_on_table 98-103 against 108-113 us, grasp_of_cylinder 202-256
-  // against 236-250 us (chain/README.md, "Speed and memory"). A hand's many angles
-  // keep Woodbury for more rows. (EquilibriumSettings::woodbury_rows_per_angle)
-  bool ChainEquilibrium::woodbury_pays(const Eigen::Index rows) const
-  {
-    return rows <= settings_.woodbury_rows_per_angle * chain_.n_angles();
-  }
-
-  // The same with the dense tangent, shifted until positive definite. H's
-  // dense form is built once per Newton step (dense_tangent_), the contact
-  // rows are added to its lower triangle, which LLT reads.
+  // H's dense form (built once per Newton step, dense_tangent_) with the
+  // pass's rows in its lower triangle, which LLT reads; shifted until
+  // positive definite. For the chain's few angles (3 per joint) the
+  // factorisation costs about what forming the rows does.
   void ChainEquilibrium::dense_solve(const Eigen::VectorXd &b)
   {
-    if (!has_dense_tangent_)
-      {
-        dense_tangent_     = tangent_.dense();
-        has_dense_tangent_ = true;
-      }
     Eigen::MatrixXd dense = dense_tangent_;
-    add_rows_to_lower(dense);
+    link_model_.add_to_lower(pose_, dense);
     const double                scale = dense.diagonal().cwiseAbs().maxCoeff();
     Eigen::LLT<Eigen::MatrixXd> factor;
     for (double shift = 0.0; factor.compute(dense).info() != Eigen::Success; shifted_ = true)
@@ -558,28 +478,6 @@ namespace softchain::chain
         shift += more;
       }
     direction_ = -factor.solve(b);
-  }
-
-  // + V^T diag(w) V into the lower triangle of `dense`, as two symmetric
-  // rank-k updates, U U^T - U' U'^T with the columns sqrt|w_j| v_j of the
-  // positive and the negative weights: blocked products instead of one
-  // rank-one update per row (a fine collision surface gives a grasp a
-  // hundred rows: its dense solves were 28 % of a solve's time).
-  void ChainEquilibrium::add_rows_to_lower(Eigen::MatrixXd &dense) const
-  {
-    for (const double sign : {1.0, -1.0})
-      {
-        std::vector<Eigen::Index> rows;
-        for (Eigen::Index j = 0; j < contact_rows_.rows(); ++j)
-          if (sign * contact_weights_[j] > 0.0)
-            rows.push_back(j);
-        if (rows.empty())
-          continue;
-        Eigen::MatrixXd U(chain_.n_angles(), static_cast<Eigen::Index>(rows.size()));
-        for (std::size_t c = 0; c < rows.size(); ++c)
-          U.col(c) = std::sqrt(sign * contact_weights_[rows[c]]) * contact_rows_.row(rows[c]).transpose();
-        dense.selfadjointView<Eigen::Lower>().rankUpdate(U, sign);
-      }
   }
 
   // Backtracking until U decreases enough (Armijo); `slack` admits the
@@ -756,10 +654,13 @@ namespace softchain::chain
   {
     if (!touching())
       return;
-    Eigen::MatrixXd rows;
-    Eigen::VectorXd weights;
-    contact_.tangent_rows(pose_, chain_.n_angles(), rows, weights);
-    dense += rows.transpose() * weights.asDiagonal() * rows;
+    std::vector<ChainContact::LinkRow> rows;
+    contact_.tangent_rows(pose_, rows);
+    LinkWrenchStiffness links;
+    links.reset(chain_.n_joints());
+    for (const ChainContact::LinkRow &row : rows)
+      links.add_row(row.link, row.row, row.weight);
+    links.add_to(pose_, dense);
   }
 
   bool ChainEquilibrium::touching() const

@@ -31,11 +31,19 @@ namespace softchain::chain
   }
 
   // Halves [begin, end) at the median of the rest offsets along their
-  // longest extent until a run has at most 8 points; its sphere: the rest
-  // points' mean as centre, the farthest point at any pressure as radius.
-  void CollisionSurface::split(const int link, const int begin, const int end)
+  // longest extent until a run has at most 8 points, a cluster; its sphere:
+  // the rest points' mean as centre, the farthest point at any pressure as
+  // radius. A node above clusters: the mean as centre, the radius that
+  // holds both children's spheres (so that it bounds everything they bound).
+  // Nodes in pre-order, each with the index past its subtree.
+  int CollisionSurface::split(const int link, const int begin, const int end)
   {
-    const std::vector<Eigen::Vector3d> &rest = rows_.front().offsets;
+    const std::vector<Eigen::Vector3d> &rest  = rows_.front().offsets;
+    const int                           index = static_cast<int>(nodes_.size());
+    nodes_.emplace_back();
+    Node node{link, -1, 0, Eigen::Vector3d::Zero(), 0.0};
+    for (int k = begin; k < end; ++k)
+      node.centre += rest[k] / (end - begin);
     if (end - begin > 8)
       {
         Eigen::Vector3d low = rest[begin], high = rest[begin];
@@ -53,17 +61,22 @@ namespace softchain::chain
                          [&](int a, int b) { return rest[a][axis] < rest[b][axis]; });
         reorder(order);
         const int middle = (begin + end) / 2;
-        split(link, begin, middle);
-        split(link, middle, end);
-        return;
+        for (const int child : {split(link, begin, middle), split(link, middle, end)})
+          node.radius = std::max(node.radius, (nodes_[child].centre - node.centre).norm() + nodes_[child].radius);
       }
-    Cluster cluster{link, begin, end, Eigen::Vector3d::Zero(), 0.0};
-    for (int k = begin; k < end; ++k)
-      cluster.centre += rest[k] / (end - begin);
-    for (const Row &row : rows_)
-      for (int k = begin; k < end; ++k)
-        cluster.radius = std::max(cluster.radius, (row.offsets[k] - cluster.centre).norm());
-    clusters_.push_back(cluster);
+    else
+      {
+        Cluster cluster{link, begin, end, node.centre, 0.0};
+        for (const Row &row : rows_)
+          for (int k = begin; k < end; ++k)
+            cluster.radius = std::max(cluster.radius, (row.offsets[k] - cluster.centre).norm());
+        node.cluster = static_cast<int>(clusters_.size());
+        node.radius  = cluster.radius;
+        clusters_.push_back(cluster);
+      }
+    node.skip      = static_cast<int>(nodes_.size());
+    nodes_[index] = node;
+    return index;
   }
 
   // Point k becomes point order[k]'s in every row.

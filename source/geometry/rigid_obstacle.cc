@@ -37,8 +37,10 @@ namespace softchain::geometry
 
   SignedDistance RigidObstacle::distance(const Eigen::Vector3d &x, const RigidTransform &pose) const
   {
-    const Eigen::Matrix3d &R    = pose.rotation();
-    const SignedDistance   rest = distance_at_rest(pose.to_rest(x));
+    const SignedDistance rest = distance_at_rest(pose.to_rest(x));
+    if (!pose.is_turned())
+      return rest;
+    const Eigen::Matrix3d &R = pose.rotation();
     return {rest.gap, R * rest.normal, R * rest.hessian * R.transpose()};
   }
 
@@ -72,6 +74,7 @@ namespace softchain::geometry
                                      const double radius)
     : point(point)
     , axis(unit(axis, "a cylinder's axis"))
+    , normal_projection(Eigen::Matrix3d::Identity() - this->axis * this->axis.transpose())
     , radius(radius)
   {
     check_positive(radius, "a cylinder's radius");
@@ -79,8 +82,7 @@ namespace softchain::geometry
 
   SignedDistance CylinderObstacle::distance_at_rest(const Eigen::Vector3d &x) const
   {
-    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - axis * axis.transpose();
-    return radial(P * (x - point), radius, P);
+    return radial(normal_projection * (x - point), radius, normal_projection);
   }
 
   double CylinderObstacle::gap_at_rest(const Eigen::Vector3d &x) const

@@ -4,7 +4,8 @@ namespace softchain::geometry
 {
   RigidTransform::RigidTransform(const Eigen::Matrix3d &rotation, const Eigen::Vector3d &pivot,
                                  const Eigen::Vector3d &translation)
-    : turn(rotation)
+    : turned(rotation != Eigen::Matrix3d::Identity())
+    , turn(rotation)
     , pivot(pivot)
     , shift(translation)
   {}
@@ -19,11 +20,6 @@ namespace softchain::geometry
   {
     const double angle = v.norm();
     return angle > 0 ? Eigen::AngleAxisd(angle, v / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
-  }
-
-  Eigen::Vector3d RigidTransform::to_rest(const Eigen::Vector3d &x) const
-  {
-    return turn.transpose() * (x - pivot - shift) + pivot;
   }
 
   Eigen::Vector3d RigidTransform::to_world(const Eigen::Vector3d &y) const

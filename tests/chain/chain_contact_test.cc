@@ -2,7 +2,7 @@
 // against the closed form of the penalty model and its exact-constraint
 // limit; the contact's energy gradient and consistent tangent (plane and
 // cylinder, the curvature term included) against central differences; the
-// Woodbury Newton step against the dense solve; contact with the tip held
+// Newton step against the exact tangent's; contact with the tip held
 // (TipConstrainedEquilibrium); the collision surface's interpolation, outer
 // surface and errors.
 #include <softchain/chain/chain_equilibrium.h>
@@ -108,7 +108,7 @@ TEST_CASE("a joint bent onto a table through a compliant skin: the closed form o
   // force along d, 1.4 mm here, far more than the penetration (~1 um): the
   // skin, not the penalty, sets the contact's compliance.
   std::vector<ChainContact::Skin> skins;
-  solver.contact().skins(solver.pose(), 3, skins);
+  solver.contact().skins(solver.pose(), skins);
   REQUIRE(skins.size() == 1);
   CHECK(skins[0].shift == Approx(shift(phi)).epsilon(1e-8));
   CHECK(skins[0].shift > 100.0 * -gap(phi));
@@ -136,7 +136,6 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       // perturbation and the differences' steps.
       EquilibriumSettings soft;
       soft.contact_stiffness = 100.0;
-      soft.woodbury_rows_per_angle = 1.0; // the Woodbury step, checked below
       ChainEquilibrium  solver(model, soft);
       const Equilibrium e = solver.solve(ChainLoad{1e4, {}, obstacles});
       REQUIRE(e.converged);
@@ -158,7 +157,7 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       CHECK((H - D).lpNorm<Eigen::Infinity>() < 1e-6 * H.lpNorm<Eigen::Infinity>());
       // Each skin balances its touches' force along d: s_b = c f_b . d_b.
       std::vector<ChainContact::Skin> skins;
-      solver.contact().skins(solver.pose(), 3 * n, skins);
+      solver.contact().skins(solver.pose(), skins);
       CHECK(skins.size() == (skin > 0.0 ? std::size_t(n) : 0));
       std::vector<Eigen::Vector3d> offsets;
       model.collision_surface()->offsets_at(1e4, offsets);
@@ -183,25 +182,16 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
       // about f / R per touching point: checked to be seen.
       if (obstacles.front().shape == "cylinder")
         {
-          Eigen::MatrixXd rows;
-          Eigen::VectorXd weights;
-          solver.contact().tangent_rows(solver.pose(), 3 * n, rows, weights);
-          CHECK(rows.rows() > static_cast<Eigen::Index>(touches.size()));
+          std::vector<ChainContact::LinkRow> rows;
+          solver.contact().tangent_rows(solver.pose(), rows);
+          CHECK(rows.size() > touches.size());
         }
-      // The Woodbury step around the O(n) factor is the dense Newton step
-      // (both capped at 1.5 rad per angle).
+      // The solver's step, its rows gathered per link, is the Newton step of
+      // the exact tangent (both capped at 1.5 rad per angle).
       const Eigen::VectorXd step  = solver.newton_step(q);
       Eigen::VectorXd       dense = -H.llt().solve(r);
       dense *= std::min(1.0, 1.5 / dense.lpNorm<Eigen::Infinity>());
       CHECK((step - dense).lpNorm<Eigen::Infinity>() < 1e-9 * dense.lpNorm<Eigen::Infinity>());
-      // And the solver's own dense step (no Woodbury), from the same state.
-      EquilibriumSettings dense_only = soft;
-      dense_only.woodbury_rows_per_angle = 0.0;
-      ChainEquilibrium dense_solver(model, dense_only);
-      dense_solver.solve(ChainLoad{1e4, {}, obstacles});
-      dense_solver.residual(q);
-      const Eigen::VectorXd dense_step = dense_solver.newton_step(q);
-      CHECK((dense_step - dense).lpNorm<Eigen::Infinity>() < 1e-9 * dense.lpNorm<Eigen::Infinity>());
     }
 }
 
@@ -308,6 +298,30 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer
             CHECK((offsets[k] - cluster.centre).norm() <= cluster.radius * (1 + 1e-12));
         }
     }
+  // The tree above the clusters: pre-order, each node's sphere holding its
+  // children's (so a skipped branch hides no point near an obstacle), the
+  // leaves being the clusters in order.
+  const auto &nodes = many.nodes();
+  REQUIRE(nodes.size() == 2 * many.clusters().size() - 1);
+  int leaves = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    {
+      const auto &node = nodes[i];
+      if (node.cluster >= 0)
+        {
+          CHECK(node.cluster == leaves++);
+          CHECK(node.skip == static_cast<int>(i) + 1);
+          CHECK(node.radius == many.clusters()[node.cluster].radius);
+          continue;
+        }
+      const auto &left  = nodes[i + 1];
+      const auto &right = nodes[left.skip];
+      CHECK(right.skip == node.skip);
+      for (const auto *child : {&left, &right})
+        CHECK((child->centre - node.centre).norm() + child->radius <= node.radius * (1 + 1e-12));
+    }
+  CHECK(leaves == static_cast<int>(many.clusters().size()));
+  CHECK(nodes.front().skip == static_cast<int>(nodes.size()));
   CHECK(covered == 20);
   CHECK_THROWS_AS(CollisionSurface({1, 0}, {{0.0, {{0, 0, 0}, {0, 0, 0}}}}, 2), std::invalid_argument);
   CHECK_THROWS_AS(CollisionSurface({0}, {{1.0, {{0, 0, 0}}}}, 1), std::invalid_argument);

@@ -86,6 +86,7 @@ namespace softchain::geometry
 
   private:
     Eigen::Vector3d point, axis;
+    Eigen::Matrix3d normal_projection; // P = I - a a^T
     double          radius;
   };
 

@@ -24,11 +24,21 @@ namespace softchain::geometry
     // The rotation matrix of the rotation vector v: about v / |v| by |v| rad.
     static Eigen::Matrix3d rotation_of(const Eigen::Vector3d &v);
 
-    Eigen::Vector3d to_rest(const Eigen::Vector3d &x) const;
+    // Inline, and without the product by R where it is the identity (an
+    // obstacle that only translates): a contact search calls it for every
+    // surface point it tests.
+    Eigen::Vector3d to_rest(const Eigen::Vector3d &x) const
+    {
+      const Eigen::Vector3d local = x - pivot - shift;
+      return (turned ? Eigen::Vector3d(turn.transpose() * local) : local) + pivot;
+    }
     Eigen::Vector3d to_world(const Eigen::Vector3d &y) const;
     const Eigen::Matrix3d &rotation() const { return turn; }
+    // Whether R is not the identity.
+    bool is_turned() const { return turned; }
 
   private:
+    bool            turned = false;
     Eigen::Matrix3d turn  = Eigen::Matrix3d::Identity();
     Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
     Eigen::Vector3d shift = Eigen::Vector3d::Zero();

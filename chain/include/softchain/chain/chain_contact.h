@@ -13,9 +13,9 @@
 // f_k's part as a point load at x_k, the change of the lever J_k)
 //     J_k^T k_c (n n^T + g H_g) J_k,
 // the normal stiffness and the curvature of a round obstacle (negative:
-// g < 0 where it acts). It is low rank -- one row n^T J_k per touching point,
-// and one per non-zero curvature e^T J_k -- so ChainEquilibrium adds it to
-// its O(n) tangent by the Woodbury identity instead of forming a dense one.
+// g < 0 where it acts): one row n^T J_k per touching point and one per
+// non-zero curvature e^T J_k, each of one link, which ChainEquilibrium
+// gathers into each link's 6 x 6 stiffness (LinkWrenchStiffness).
 //
 // The penalty k_c [N/m] per point makes the penetration k_c^-1 |f_k|: with
 // the default 1e5 N/m, 10 um under a force of 1 N on one point, and the
@@ -50,6 +50,7 @@
 #include <softchain/chain/collision_surface.h>
 #include <softchain/chain/coulomb_friction.h>
 #include <softchain/chain/kinematic_chain.h>
+#include <softchain/chain/link_wrench_stiffness.h>
 #include <softchain/geometry/contact_scene.h>
 
 #include <Eigen/Core>
@@ -90,9 +91,16 @@ namespace softchain::chain
     const std::vector<Touch> &touches() const { return touches_; }
     double                    stiffness() const { return stiffness_; }
     const CoulombFriction    &friction() const { return friction_; }
+    // A row of the contact's tangent: g^T J_b of one link (LinkWrenchStiffness)
+    // with its weight.
+    struct LinkRow
+    {
+      int                           link = 0;
+      LinkWrenchStiffness::Vector6d row;
+      double                        weight = 0.0;
+    };
     // The Hessian rows of the friction at the last update (weights > 0).
-    void friction_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
-                       Eigen::VectorXd &weights) const;
+    void friction_rows(std::vector<LinkRow> &rows) const;
     // The anchors of a pass of a frictional load step at the last update
     // (at `pose`): one per point touching an obstacle with friction, at its
     // anchor in `held` (the step's start) or, new in contact, where it
@@ -105,28 +113,18 @@ namespace softchain::chain
     void surface_positions(const ChainPose &pose, std::vector<Eigen::Vector3d> &positions) const;
 
     // The tangent's low-rank part at the last update, J^T k_c (n n^T + g H_g) J
-    // = V^T diag(w) V: rows V (one per row, n_angles columns) and weights w.
-    void tangent_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
-                      Eigen::VectorXd &weights) const;
+    // (with the friction's and the skins' rows) = sum of w J_b^T g g^T J_b over `rows`.
+    void tangent_rows(const ChainPose &pose, std::vector<LinkRow> &rows) const;
     // Only the curvature rows of the touching points (weights k_c g mu).
-    void curvature_rows(const ChainPose &pose, int n_angles, Eigen::MatrixXd &rows,
-                        Eigen::VectorXd &weights) const;
+    void curvature_rows(std::vector<LinkRow> &rows) const;
 
     // The candidates of a Newton step's active set at `pose`: every surface
     // point within `margin` of an obstacle (g < margin, the touching ones
     // among them).
     void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near) const;
-    // A lower bound of every point's distance to the obstacles in `cluster`
-    // at `pose`: min over obstacles of g(centre) - radius - |s_b|.
-    double clearance(const ChainPose &pose, const CollisionSurface::Cluster &cluster) const;
-    // e^T dx_k/dq of the point of `touch`: (i, alpha) entry
-    // a_{i,alpha} . ((x - p_{i,alpha}) x e) for the joints i up to the
-    // point's link (pivot s_i for psi), zero beyond.
-    void jacobian_row(const ChainPose &pose, const Touch &touch, const Eigen::Vector3d &e,
-                      Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
-    void jacobian_row(const ChainPose &pose, int link, const Eigen::Vector3d &position,
-                      const Eigen::Vector3d &e, Eigen::Ref<Eigen::RowVectorXd, 0, Eigen::InnerStride<>> row) const;
-
+    // A lower bound of every point's distance to the obstacles in `node`'s
+    // sphere at `pose`: min over obstacles of g(centre) - radius - |s_b|.
+    double clearance(const ChainPose &pose, const CollisionSurface::Node &node) const;
     // A touching link's skin at the last update: its displacement s_b, the
     // direction d_b (world), k_s, and the parts of u_b and D_b (header) that
     // the touching points' penetrations g_k carry (t_b, e_b), which a Newton
@@ -136,10 +134,10 @@ namespace softchain::chain
       int                link      = 0;
       Eigen::Vector3d    direction = Eigen::Vector3d::Zero();
       double             shift = 0.0, stiffness = 0.0;
-      Eigen::RowVectorXd penetration_row; // t_b
-      double             penetration_curvature = 0.0; // e_b
+      LinkWrenchStiffness::Vector6d penetration_row = LinkWrenchStiffness::Vector6d::Zero(); // t_b, of link b
+      double                        penetration_curvature = 0.0;                             // e_b
     };
-    void skins(const ChainPose &pose, int n_angles, std::vector<Skin> &skins) const;
+    void skins(const ChainPose &pose, std::vector<Skin> &skins) const;
     bool has_skin() const { return !skin_compliance_.empty(); }
     // Whether the point of `touch` moves with its link's skin (a link with
     // skin compliance, a point of CollisionSurface::gives).
@@ -169,13 +167,11 @@ namespace softchain::chain
     // The touch of surface point k of `link` against obstacle o at x, or
     // false if x is outside.
     bool touch_at(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
-    // The rows of every touch, with or without the normal rows.
-    void rows_of_touches(const ChainPose &pose, bool normals, int n_angles, Eigen::MatrixXd &rows,
-                         Eigen::VectorXd &weights) const;
-    // Appends the rows of `touch` to `directions` (e, weight).
-    void append_rows(const Touch &touch, bool normal, std::vector<std::pair<Eigen::Vector3d, double>> &directions) const;
-    void fill_rows(const ChainPose &pose, const std::vector<std::pair<Eigen::Vector3d, double>> &directions,
-                   const std::vector<int> &owner, int n_angles, Eigen::MatrixXd &rows, Eigen::VectorXd &weights) const;
+    // Appends the points of `cluster` within `margin` of an obstacle to `near`.
+    void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster, double margin,
+                        std::vector<Touch> &near) const;
+    // Appends the rows of `touch`, with or without its normal row.
+    void append_rows(const Touch &touch, bool normal, std::vector<LinkRow> &rows) const;
 
     const CollisionSurface        *surface_ = nullptr;
     std::vector<geometry::Obstacle> obstacles_;

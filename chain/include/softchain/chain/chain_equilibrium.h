@@ -46,17 +46,14 @@
 //
 // Contact (ChainContact): with obstacles in the load, the model's collision
 // surface adds its penalty energy U_c to U, its point forces to J^T f, and
-// to H a low-rank part V^T diag(w) V. Each Newton step minimises the
-// quadratic model of U with the penalties of the surface points near an
-// obstacle linearised, by an active set over them (contact_direction in
-// the source), and takes the low-rank part by the Woodbury identity around
-// the O(n) factor,
-//   (H + V^T W V)^-1 b = H^-1 b - Y (I + W V Y)^-1 W V H^-1 b,   Y = H^-1 V^T,
-// r solves of ChainTangent and an r x r system for r rows (touching points,
-// their curvatures, the skins' and the friction's rows), or by the dense
-// tangent where r exceeds a quarter of the angles
-// (EquilibriumSettings::woodbury_rows_per_angle) or H alone is not positive
-// definite. A solve from rest starts
+// to H a sum of rows of single links, V^T diag(w) V. Each Newton step
+// minimises the quadratic model of U with the penalties of the surface
+// points near an obstacle linearised, by an active set over them
+// (contact_direction in the source). The rows of a pass (touching points,
+// their curvatures, the skins' and the friction's rows) are gathered into
+// each link's 6 x 6 stiffness (LinkWrenchStiffness), added to H's dense
+// form in O(n^2) and factored by Cholesky: for a finger's few dozen angles
+// this costs less than the rows would one by one. A solve from rest starts
 // short of the first touch along the pressure's own shape (so that it never
 // starts deep inside an obstacle). The stability check then factors the
 // whole tangent. Friction acts through the load's stick anchors
@@ -68,6 +65,7 @@
 #include <softchain/chain/chain_model.h>
 
 #include <softchain/chain/chain_tangent.h>
+#include <softchain/chain/link_wrench_stiffness.h>
 
 #include <Eigen/Core>
 #include <string>
@@ -80,10 +78,6 @@ namespace softchain::chain
     int    max_iterations = 50;
     double max_step_angle = 1.5;   // rad per angle and Newton step
     double contact_stiffness = 1e5; // k_c of ChainContact, N/m per surface point
-    // A contact step adds its r rows by Woodbury around H's O(n) factor while
-    // r <= this fraction of the n angles, else to H's dense form
-    // (ChainEquilibrium::woodbury_pays has the measurement).
-    double woodbury_rows_per_angle = 0.25;
   };
 
   struct Equilibrium
@@ -144,18 +138,12 @@ namespace softchain::chain
     void   newton_direction();
     void   contact_direction();
     void   contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
-                        const Eigen::VectorXd &free_residual, bool factored, bool curvature);
+                        const Eigen::VectorXd &free_residual, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
-    void   add_rows_to_lower(Eigen::MatrixXd &dense) const;
-    bool   woodbury_pays(Eigen::Index rows) const;
-    bool         skin_has_row(const ChainContact::Skin &skin, const std::vector<char> &active) const;
-    Eigen::Index skin_rows(const std::vector<char> &active) const;
-    void   add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps, bool woodbury,
-                         Eigen::MatrixXd &Y, Eigen::VectorXd &b, Eigen::VectorXd &x);
+    void   add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps);
     void   update_link_velocities();
     bool   update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active);
     void   limit_surface_motion();
-    const Eigen::RowVectorXd near_row(Eigen::Index c);
     bool   line_search(Eigen::VectorXd &q);
     std::string range_violation(const Eigen::VectorXd &q) const;
     std::string instability();
@@ -171,36 +159,29 @@ namespace softchain::chain
     std::vector<JointForceLaw::Blend> force_law_; // per joint at the load's pressure; empty: linear
     std::vector<AttachedLoad> loads_;           // sorted by link
     ChainContact              contact_;         // the load's obstacles
-    Eigen::MatrixXd           contact_rows_;    // V of the contact's tangent
-    Eigen::VectorXd           contact_weights_; // w
+    LinkWrenchStiffness       link_model_;      // a contact step's rows and forces, per link
     // Candidates of the active set: points closer than 5 % of the chain's
     // length (on P10 the fastest of 2, 5 and 10 % at the same iterations).
     double                    contact_margin_ = 0.0;
     std::vector<ChainContact::Touch> near_;     // the step's active-set candidates
-    Eigen::MatrixXd           near_rows_;       // their normal rows, where computed
-    std::vector<char>         has_row_;         // which of them are
+    std::vector<LinkWrenchStiffness::Vector6d> near_rows_; // their normal rows g_c (LinkWrenchStiffness)
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> link_velocities_; // (w_b, v_b) under a step
-    Eigen::MatrixXd           curvature_rows_;  // the touching points' curvature rows
-    Eigen::VectorXd           curvature_weights_;
-    Eigen::MatrixXd           friction_rows_;   // the friction's rows (ChainContact::friction_rows)
-    Eigen::VectorXd           friction_weights_;
-    Eigen::MatrixXd           solved_rows_;     // H^-1 of the near and curvature rows
-    std::vector<char>         solved_;          // which of them are solved
-    Eigen::VectorXd           solved_residual_; // H^-1 r_f
+    std::vector<ChainContact::LinkRow> curvature_rows_; // the touching points' curvature rows
+    std::vector<ChainContact::LinkRow> friction_rows_;  // the friction's rows
     // The skins of the step's model (ChainContact::Skin), the alignment
     // a_c = n_c . d_b of each candidate, and per skin row the prediction of
     // its displacement's change, -(gamma_b + u_b d) / D_b.
     std::vector<ChainContact::Skin> skins_;
+    std::vector<int>          skin_of_link_;    // index into skins_ per link, -1: none
     Eigen::VectorXd           alignment_;
     struct SkinPrediction
     {
-      int                link;
-      double             gamma, D;
-      Eigen::RowVectorXd u;
+      int                           link;
+      double                        gamma, D;
+      LinkWrenchStiffness::Vector6d u;
     };
     std::vector<SkinPrediction> skin_predictions_;
-    Eigen::MatrixXd           dense_tangent_;   // H, dense, for the step's dense solves
-    bool                      has_dense_tangent_ = false;
+    Eigen::MatrixXd           dense_tangent_;   // H, dense, for the step's solves
 
     // State of the last evaluation
     Eigen::VectorXd              spring_torque_; // the joints' spring torques
