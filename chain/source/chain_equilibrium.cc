@@ -247,36 +247,30 @@ namespace softchain::chain
   //   m(d) = r_f^T d + 1/2 d^T (H + C) d + sum_c 1/2 k_c <-(g_c + v_c d)>^2,
   // r_f the residual without the contact's normal forces, H the tangent
   // without the contact's rows, C the touching points' curvature rows and
-  // the friction's (CoulombFriction, held at the iterate), v_c = n_c^T J_c.
-  // Its minimiser is found by an active set (a semismooth Newton method on
-  // the model): A = {c : g_c + v_c d < 0}, d from
-  //   (H + C + k_c V_A^T V_A) d = -(r_f + k_c V_A^T g_A),
-  // until A repeats (at most 10 passes). So a step from outside an
-  // obstacle already stops at it, instead of diving in and being cut back
-  // by the line search. Every row belongs to one link, so the rows of a
-  // pass are gathered into each link's 6 x 6 stiffness (LinkWrenchStiffness)
-  // and added to H's dense form, factored by Cholesky (shifted if need
-  // be). If the curvature rows (negative weights) leave no descent
-  // direction, the step is taken without them (the friction's, positive, stay).
+  // the friction's (CoulombFriction, held at the iterate), v_c = n_c^T J_c
+  // (with skins, their displacements' changes are unknowns of m too:
+  // add_skin_rows). So a step from outside an obstacle already stops at it,
+  // instead of diving in and being cut back by the line search. m is
+  // minimised by a semismooth Newton method (settle_active_set). If the
+  // curvature rows (negative weights) leave no descent direction, the step
+  // is taken without them (the friction's, positive, stay).
   void ChainEquilibrium::contact_direction()
   {
     contact_.candidates(pose_, contact_margin_, near_);
     const double       k = contact_.stiffness();
     const Eigen::Index m = static_cast<Eigen::Index>(near_.size());
-    Eigen::VectorXd    gaps(m);
-    std::vector<char>  active(m);
+    gaps_.resize(m);
     near_rows_.resize(m);
     link_model_.reset(chain_.n_joints());
     for (Eigen::Index c = 0; c < m; ++c)
       {
-        gaps[c]       = near_[c].gap;
-        active[c]     = gaps[c] < 0.0;
+        gaps_[c]      = near_[c].gap;
         near_rows_[c] = LinkWrenchStiffness::point_row(near_[c].position, near_[c].normal);
-        if (active[c])
-          link_model_.add_force(near_[c].link, near_rows_[c], -k * gaps[c]);
+        if (gaps_[c] < 0.0)
+          link_model_.add_force(near_[c].link, near_rows_[c], -k * gaps_[c]);
       }
-    Eigen::VectorXd free_residual = residual_;
-    link_model_.add_generalised_force(pose_, free_residual);
+    free_residual_ = residual_;
+    link_model_.add_generalised_force(pose_, free_residual_);
     contact_.curvature_rows(curvature_rows_);
     contact_.friction_rows(friction_rows_);
     contact_.skins(pose_, skins_);
@@ -288,14 +282,10 @@ namespace softchain::chain
       if (const int j = skin_of_link_[near_[c].link]; j >= 0 && contact_.gives(near_[c]))
         alignment_[c] = near_[c].normal.dot(skins_[j].direction);
     dense_tangent_ = tangent_.dense();
+    std::vector<char> active(m);
     for (const bool curvature : {true, false})
       {
-        for (int pass = 0; pass < 10; ++pass)
-          {
-            contact_step(active, gaps, free_residual, curvature);
-            if (!update_active_set(gaps, active))
-              break;
-          }
+        settle_active_set(curvature, active);
         if (residual_.dot(direction_) < 0.0 || curvature_rows_.empty())
           break;
       }
@@ -303,49 +293,156 @@ namespace softchain::chain
       return;
     // No descent direction from the model: the step of the touching points alone.
     for (Eigen::Index c = 0; c < m; ++c)
-      active[c] = gaps[c] < 0.0;
-    contact_step(active, gaps, free_residual, false);
+      active[c] = gaps_[c] < 0.0;
+    contact_step(active, false);
   }
 
-  // Each link's velocity (w_b, v_b: the point velocity is v_b + w_b x x)
-  // under the angle rates direction_, summed joint by joint: a turn
-  // d_{i,alpha} about a_{i,alpha} through p_{i,alpha} adds a d to w and
-  // p x a d to v.
-  void ChainEquilibrium::update_link_velocities()
+  // Semismooth Newton on m (with the skins' changes ds_b beside d): from
+  // d = 0 and A = {c : g_c < 0}, each pass solves m's quadratic with the
+  // points of A held (contact_step) for (d^, ds^), moves to the minimiser
+  // of m on the segment towards it (model_step), and takes A as the points
+  // predicted inside there, g_c + v_c d + a_c ds_b < 0; until A repeats
+  // after a whole step, at most 10 passes. Without the segment's minimum
+  // the passes can cycle between active sets (on P10's grasp and blocked
+  // force in a fifth of the Newton steps).
+  void ChainEquilibrium::settle_active_set(const bool curvature, std::vector<char> &active)
   {
-    Eigen::Vector3d w = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
-    link_velocities_.resize(chain_.n_joints());
+    const int           n = chain_.n_joints();
+    Eigen::VectorXd     d = Eigen::VectorXd::Zero(chain_.n_angles());
+    std::vector<double> ds(n, 0.0), change(n);
+    predict_active_set(d, ds, active);
+    for (int pass = 0; pass < 10; ++pass)
+      {
+        contact_step(active, curvature);
+        const Eigen::VectorXd step = direction_ - d;
+        link_twists(direction_, twists_);
+        std::fill(change.begin(), change.end(), 0.0);
+        for (const SkinPrediction &s : skin_predictions_)
+          change[s.link] = -(s.gamma + s.u.dot(twists_[s.link])) / s.D;
+        for (int b = 0; b < n; ++b)
+          change[b] -= ds[b];
+        const double t = model_step(d, ds, step, change, curvature);
+        if (t == 0.0)
+          break;
+        d += t * step;
+        for (int b = 0; b < n; ++b)
+          ds[b] += t * change[b];
+        if (!predict_active_set(d, ds, active) && t == 1.0)
+          break;
+      }
+    direction_ = d;
+  }
+
+  // The t in [0, 1] that minimises m(d + t dd, ds + t dds) (contact_direction,
+  // add_skin_rows): m' = 2 alpha t + beta + sum_c k_c <h_c(t)>- h1_c with the
+  // quadratic part's coefficients alpha, beta from
+  //   r_f^T d + 1/2 d^T (H + C) d + sum_b [1/2 k_s (s_b + ds_b)^2 + ds_b t_b d + 1/2 e_b ds_b^2]
+  // and each candidate's h_c(t) = h0_c + t h1_c, g_c + v_c d + a_c ds_b along
+  // the segment. m' is increasing where m is convex; its root is bracketed
+  // and found by Newton's method (exact in a few steps: m' is piecewise
+  // linear), bisecting where a step leaves the bracket. 1 if m still falls
+  // at the end, 0 if it does not fall at the start.
+  double ChainEquilibrium::model_step(const Eigen::VectorXd &d, const std::vector<double> &ds,
+                                      const Eigen::VectorXd &dd, const std::vector<double> &dds,
+                                      const bool curvature)
+  {
+    link_twists(d, twists_);
+    link_twists(dd, step_twists_);
+    const Eigen::VectorXd Hdd   = dense_tangent_ * dd;
+    double                alpha = 0.5 * dd.dot(Hdd), beta = free_residual_.dot(dd) + d.dot(Hdd);
+    const auto add_rows = [&](const std::vector<ChainContact::LinkRow> &rows) {
+      for (const ChainContact::LinkRow &row : rows)
+        {
+          const double p = row.row.dot(twists_[row.link]), q = row.row.dot(step_twists_[row.link]);
+          beta += row.weight * p * q;
+          alpha += 0.5 * row.weight * q * q;
+        }
+    };
+    if (curvature)
+      add_rows(curvature_rows_);
+    add_rows(friction_rows_);
+    for (const ChainContact::Skin &skin : skins_)
+      {
+        const int    b  = skin.link;
+        const double y0 = skin.penetration_row.dot(twists_[b]), y1 = skin.penetration_row.dot(step_twists_[b]);
+        beta += skin.stiffness * (skin.shift + ds[b]) * dds[b] + ds[b] * y1 + dds[b] * y0 +
+                skin.penetration_curvature * ds[b] * dds[b];
+        alpha += 0.5 * (skin.stiffness + skin.penetration_curvature) * dds[b] * dds[b] + dds[b] * y1;
+      }
+    const std::size_t m = near_.size();
+    h0_.resize(m);
+    h1_.resize(m);
+    for (std::size_t c = 0; c < m; ++c)
+      {
+        const int b = near_[c].link;
+        h0_[c]      = gaps_[c] + near_rows_[c].dot(twists_[b]) + alignment_[c] * ds[b];
+        h1_[c]      = near_rows_[c].dot(step_twists_[b]) + alignment_[c] * dds[b];
+      }
+    const double k     = contact_.stiffness();
+    const auto   slope = [&](const double t, double &curvature_t) {
+      double value = 2.0 * alpha * t + beta;
+      curvature_t  = 2.0 * alpha;
+      for (std::size_t c = 0; c < m; ++c)
+        if (const double h = h0_[c] + t * h1_[c]; h < 0.0)
+          {
+            value += k * h * h1_[c];
+            curvature_t += k * h1_[c] * h1_[c];
+          }
+      return value;
+    };
+    double curvature_t = 0.0;
+    if (slope(1.0, curvature_t) <= 0.0)
+      return 1.0;
+    if (slope(0.0, curvature_t) >= 0.0)
+      return 0.0;
+    double low = 0.0, high = 1.0, t = 1.0;
+    for (int iteration = 0; iteration < 60 && high - low > 1e-12; ++iteration)
+      {
+        const double value = slope(t, curvature_t);
+        if (value == 0.0)
+          return t;
+        (value < 0.0 ? low : high) = t;
+        double next = curvature_t > 0.0 ? t - value / curvature_t : low;
+        if (!(next > low && next < high))
+          next = 0.5 * (low + high);
+        if (std::abs(next - t) <= 1e-12)
+          return next;
+        t = next;
+      }
+    return low;
+  }
+
+  // Each link's twist t_b = (w_b, v_b) (the point velocity is v_b + w_b x x)
+  // under the angle rates d, summed joint by joint: a turn d_{i,alpha} about
+  // a_{i,alpha} through p_{i,alpha} adds a d to w and p x a d to v.
+  void ChainEquilibrium::link_twists(const Eigen::VectorXd &d, std::vector<LinkWrenchStiffness::Vector6d> &twists) const
+  {
+    LinkWrenchStiffness::Vector6d t = LinkWrenchStiffness::Vector6d::Zero();
+    twists.resize(chain_.n_joints());
     for (int i = 0; i < chain_.n_joints(); ++i)
       {
         for (int alpha = 0; alpha < 3; ++alpha)
           {
-            const Eigen::Vector3d  turn  = pose_.joint_axes[i].col(alpha) * direction_[3 * i + alpha];
+            const Eigen::Vector3d  turn  = pose_.joint_axes[i].col(alpha) * d[3 * i + alpha];
             const Eigen::Vector3d &pivot = alpha == 0 ? pose_.twist_pivots[i] : pose_.joint_positions[i];
-            w += turn;
-            v += pivot.cross(turn);
+            t.head<3>() += turn;
+            t.tail<3>() += pivot.cross(turn);
           }
-        link_velocities_[i] = {w, v};
+        twists[i] = t;
       }
   }
 
-  // The candidates predicted inside after direction_, g_c + n_c . (v_b +
-  // w_b x x_c). Returns whether the set changed.
-  bool ChainEquilibrium::update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active)
+  // The candidates predicted inside at (d, ds), g_c + v_c d + a_c ds_b < 0.
+  // Returns whether the set changed.
+  bool ChainEquilibrium::predict_active_set(const Eigen::VectorXd &d, const std::vector<double> &ds,
+                                            std::vector<char> &active)
   {
-    update_link_velocities();
-    std::vector<double> skin_change(chain_.n_joints(), 0.0); // the predicted change of each s_b
-    for (const SkinPrediction &s : skin_predictions_)
-      {
-        const auto &[w, v]  = link_velocities_[s.link];
-        skin_change[s.link] = -(s.gamma + s.u.head<3>().dot(w) + s.u.tail<3>().dot(v)) / s.D;
-      }
+    link_twists(d, twists_);
     bool changed = false;
     for (std::size_t c = 0; c < active.size(); ++c)
       {
-        const ChainContact::Touch &point = near_[c];
-        const auto &[wb, vb]              = link_velocities_[point.link];
-        const double skin                 = alignment_[c] * skin_change[point.link];
-        const bool inside = gaps[c] + point.normal.dot(vb + wb.cross(point.position)) + skin < 0.0;
+        const int  b      = near_[c].link;
+        const bool inside = gaps_[c] + near_rows_[c].dot(twists_[b]) + alignment_[c] * ds[b] < 0.0;
         if (inside != bool(active[c]))
           {
             active[c] = inside;
@@ -367,13 +464,14 @@ namespace softchain::chain
   // (or below 1, which needs no cut) is skipped.
   void ChainEquilibrium::limit_surface_motion()
   {
-    update_link_velocities();
+    link_twists(direction_, twists_);
     const std::vector<CollisionSurface::Node> &nodes = model_.collision_surface()->nodes();
     double ratio = 1.0; // the largest motion over what a cluster may move, where above 1
     for (std::size_t i = 0; i < nodes.size();)
       {
         const CollisionSurface::Node &node = nodes[i];
-        const auto &[w, v]                 = link_velocities_[node.link];
+        const Eigen::Vector3d         w    = twists_[node.link].head<3>();
+        const Eigen::Vector3d         v    = twists_[node.link].tail<3>();
         const Eigen::Vector3d centre = pose_.joint_positions[node.link] + pose_.link_rotations[node.link] * node.centre;
         const double motion = (v + w.cross(centre)).norm() + w.norm() * node.radius;
         const double bound  = motion / std::max(contact_margin_, contact_.clearance(pose_, node));
@@ -392,8 +490,7 @@ namespace softchain::chain
 
   // direction_ = -(H + C + k V_A^T V_A)^-1 (r_f + k V_A^T g_A) (above), with
   // the rows and forces of the pass gathered link by link.
-  void ChainEquilibrium::contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
-                                      const Eigen::VectorXd &free_residual, const bool curvature)
+  void ChainEquilibrium::contact_step(const std::vector<char> &active, const bool curvature)
   {
     const double k = contact_.stiffness();
     link_model_.reset(chain_.n_joints());
@@ -401,15 +498,15 @@ namespace softchain::chain
       if (active[c]) // the model's force k g_c of a point in A
         {
           link_model_.add_row(near_[c].link, near_rows_[c], k);
-          link_model_.add_force(near_[c].link, near_rows_[c], k * gaps[c]);
+          link_model_.add_force(near_[c].link, near_rows_[c], k * gaps_[c]);
         }
     if (curvature)
       for (const ChainContact::LinkRow &row : curvature_rows_)
         link_model_.add_row(row.link, row.row, row.weight);
     for (const ChainContact::LinkRow &row : friction_rows_)
       link_model_.add_row(row.link, row.row, row.weight);
-    add_skin_rows(active, gaps);
-    Eigen::VectorXd b = free_residual;
+    add_skin_rows(active);
+    Eigen::VectorXd b = free_residual_;
     link_model_.add_generalised_force(pose_, b);
     dense_solve(b);
   }
@@ -424,7 +521,7 @@ namespace softchain::chain
   // joins the right side (equal to the exact tangent's where A holds the
   // touching points). A skin has a row where a point touches (t_b != 0) or a
   // point of A gives (a_c != 0).
-  void ChainEquilibrium::add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps)
+  void ChainEquilibrium::add_skin_rows(const std::vector<char> &active)
   {
     skin_predictions_.clear();
     if (skins_.empty())
@@ -445,7 +542,7 @@ namespace softchain::chain
           SkinPrediction &s = skin_predictions_[j];
           const double    a = alignment_[c];
           s.u += k * a * near_rows_[c];
-          s.gamma += k * a * gaps[c];
+          s.gamma += k * a * gaps_[c];
           s.D += k * a * a;
           has_row[j] = 1;
         }

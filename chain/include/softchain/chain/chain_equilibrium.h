@@ -137,12 +137,14 @@ namespace softchain::chain
     double relative_residual() const;
     void   newton_direction();
     void   contact_direction();
-    void   contact_step(const std::vector<char> &active, const Eigen::VectorXd &gaps,
-                        const Eigen::VectorXd &free_residual, bool curvature);
+    void   settle_active_set(bool curvature, std::vector<char> &active);
+    double model_step(const Eigen::VectorXd &d, const std::vector<double> &ds, const Eigen::VectorXd &dd,
+                      const std::vector<double> &dds, bool curvature);
+    void   contact_step(const std::vector<char> &active, bool curvature);
     void   dense_solve(const Eigen::VectorXd &b);
-    void   add_skin_rows(const std::vector<char> &active, const Eigen::VectorXd &gaps);
-    void   update_link_velocities();
-    bool   update_active_set(const Eigen::VectorXd &gaps, std::vector<char> &active);
+    void   add_skin_rows(const std::vector<char> &active);
+    void   link_twists(const Eigen::VectorXd &d, std::vector<LinkWrenchStiffness::Vector6d> &twists) const;
+    bool   predict_active_set(const Eigen::VectorXd &d, const std::vector<double> &ds, std::vector<char> &active);
     void   limit_surface_motion();
     bool   line_search(Eigen::VectorXd &q);
     std::string range_violation(const Eigen::VectorXd &q) const;
@@ -165,7 +167,11 @@ namespace softchain::chain
     double                    contact_margin_ = 0.0;
     std::vector<ChainContact::Touch> near_;     // the step's active-set candidates
     std::vector<LinkWrenchStiffness::Vector6d> near_rows_; // their normal rows g_c (LinkWrenchStiffness)
-    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> link_velocities_; // (w_b, v_b) under a step
+    Eigen::VectorXd           gaps_;            // their gaps g_c
+    Eigen::VectorXd           free_residual_;   // r_f of the step's model
+    std::vector<LinkWrenchStiffness::Vector6d> twists_; // each link's twist (w_b, v_b) under a step
+    std::vector<LinkWrenchStiffness::Vector6d> step_twists_; // and under a pass's change of it
+    std::vector<double>       h0_, h1_;         // each candidate's predicted gap along a pass, h0 + t h1
     std::vector<ChainContact::LinkRow> curvature_rows_; // the touching points' curvature rows
     std::vector<ChainContact::LinkRow> friction_rows_;  // the friction's rows
     // The skins of the step's model (ChainContact::Skin), the alignment
