@@ -301,34 +301,40 @@ namespace softchain::chain
   // d = 0 and A = {c : g_c < 0}, each pass solves m's quadratic with the
   // points of A held (contact_step) for (d^, ds^), moves to the minimiser
   // of m on the segment towards it (model_step), and takes A as the points
-  // predicted inside there, g_c + v_c d + a_c ds_b < 0; until A repeats
-  // after a whole step, at most 10 passes. Without the segment's minimum
+  // predicted inside there, g_c + v_c d + a_c ds_b < 0; until the
+  // quadratic's minimiser predicts A itself, at most 10 passes. Without the segment's minimum
   // the passes can cycle between active sets (on P10's grasp and blocked
   // force in a fifth of the Newton steps).
   void ChainEquilibrium::settle_active_set(const bool curvature, std::vector<char> &active)
   {
     const int           n = chain_.n_joints();
     Eigen::VectorXd     d = Eigen::VectorXd::Zero(chain_.n_angles());
-    std::vector<double> ds(n, 0.0), change(n);
+    std::vector<double> ds(n, 0.0), full(n), change(n);
     predict_active_set(d, ds, active);
+    std::vector<char> next;
     for (int pass = 0; pass < 10; ++pass)
       {
         contact_step(active, curvature);
-        const Eigen::VectorXd step = direction_ - d;
         link_twists(direction_, twists_);
-        std::fill(change.begin(), change.end(), 0.0);
+        std::fill(full.begin(), full.end(), 0.0);
         for (const SkinPrediction &s : skin_predictions_)
-          change[s.link] = -(s.gamma + s.u.dot(twists_[s.link])) / s.D;
+          full[s.link] = -(s.gamma + s.u.dot(twists_[s.link])) / s.D;
+        next = active;
+        if (!predict_active_set(direction_, full, next))
+          return; // A holds at the quadratic's minimiser: it is m's
+        const Eigen::VectorXd step = direction_ - d;
         for (int b = 0; b < n; ++b)
-          change[b] -= ds[b];
+          change[b] = full[b] - ds[b];
         const double t = model_step(d, ds, step, change, curvature);
         if (t == 0.0)
           break;
         d += t * step;
         for (int b = 0; b < n; ++b)
           ds[b] += t * change[b];
-        if (!predict_active_set(d, ds, active) && t == 1.0)
-          break;
+        if (t == 1.0)
+          active.swap(next);
+        else
+          predict_active_set(d, ds, active);
       }
     direction_ = d;
   }
