@@ -50,6 +50,9 @@ namespace softchain::chain
       section.declare("Friction load steps", "20",
                       "equal steps of the load path along which a contact sample with friction "
                       "is solved from rest (its stick anchors carried from step to step)");
+      section.declare("Timed solves", "1",
+                      "how often each validation sample is solved: its solve_time_us in "
+                      "validation.csv is the median (1: the one cold solve; benchmarks take more)");
       section.declare("Baseline Young's modulus", "2.6e5", "Pa, for k_phi = E I_z / a");
       section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
       section.declare("Maximum Newton iterations", "50", "per equilibrium");
@@ -103,6 +106,8 @@ namespace softchain::chain
       }
     p.surface_subdivisions = section.get_integer("Surface subdivisions");
     section.require(p.surface_subdivisions >= 1, "Surface subdivisions", "must be >= 1");
+    p.timed_solves = section.get_integer("Timed solves");
+    section.require(p.timed_solves >= 1, "Timed solves", "must be >= 1");
     p.friction_path.steps = section.get_integer("Friction load steps");
     section.require(p.friction_path.steps >= 1, "Friction load steps", "must be >= 1");
     p.newton.max_iterations = section.get_integer("Maximum Newton iterations");

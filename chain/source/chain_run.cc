@@ -214,7 +214,7 @@ namespace softchain::chain
       std::vector<std::string> names;
       for (const ChainModel &model : models)
         {
-          validation.compare(model, p.newton, p.friction_path);
+          validation.compare(model, p.newton, p.friction_path, p.timed_solves);
           names.push_back(model.name());
         }
       if (validation.records().empty())

@@ -105,15 +105,21 @@ namespace softchain::chain
   }
 
   void ChainValidation::compare(const ChainModel &model, const EquilibriumSettings &settings,
-                                const FrictionalPathSettings &friction_path)
+                                const FrictionalPathSettings &friction_path, const int timed_solves)
   {
     ChainEquilibrium   solver(model, settings);
     FrictionalLoadPath path(solver, friction_path);
     for (const FemSample &s : samples_)
       {
-        const auto        start = std::chrono::steady_clock::now();
-        const Equilibrium e     = path.solve(s.load);
-        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        Equilibrium         e;
+        std::vector<double> times;
+        for (int solve = 0; solve < std::max(timed_solves, 1); ++solve)
+          {
+            const auto start = std::chrono::steady_clock::now();
+            e                = path.solve(s.load);
+            times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+          }
+        std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
         ValidationRecord  r;
         r.sample     = s.id;
         r.role       = s.role;
@@ -125,7 +131,7 @@ namespace softchain::chain
         r.iterations = e.iterations;
         r.converged  = e.converged;
         r.failure    = e.failure;
-        r.solve_time = elapsed.count();
+        r.solve_time = times[times.size() / 2];
         r.fem_contact_force = s.contact_force;
         if (e.converged)
           {

@@ -349,6 +349,16 @@ TEST_CASE("the Chain subsection is read and checked")
     CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
                       Catch::Contains(prm + ":2") && Catch::Contains("Link geometry") && Catch::Contains("bent"));
   }
+  SECTION("timed solves: how often each sample's solve is timed, at least once")
+  {
+    std::ofstream(prm) << chain_prm;
+    CHECK(ChainParameters::read(data::PrmFile::read(prm)).timed_solves == 1);
+    std::ofstream(prm) << "subsection Chain\n  set Timed solves = 5\nend\n";
+    CHECK(ChainParameters::read(data::PrmFile::read(prm)).timed_solves == 5);
+    std::ofstream(prm) << "subsection Chain\n  set Timed solves = 0\nend\n";
+    CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
+                      Catch::Contains(prm) && Catch::Contains("Timed solves") && Catch::Contains(">= 1"));
+  }
   SECTION("a bad method names file, line and parameter")
   {
     std::ofstream(prm) << "subsection Chain\n  set Stiffness method = M3\nend\n";

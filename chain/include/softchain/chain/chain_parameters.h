@@ -44,6 +44,7 @@ namespace softchain::chain
     EquilibriumSettings      newton;
     FrictionalPathSettings   friction_path; // the load path of a contact sample with friction
     int                      surface_subdivisions = 3; // intervals per edge of the collision surface's mesh faces
+    int                      timed_solves = 1; // solves of each validation sample, solve_time_us their median
 
     static ChainParameters read(const data::PrmFile &file);
   };

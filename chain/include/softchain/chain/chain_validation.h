@@ -41,7 +41,7 @@ namespace softchain::chain
     // reference than this database (benchmarks/p10_error_time):
     Eigen::Vector3d tip_position = Eigen::Vector3d::Constant(NAN); // m
     double          tip_rotation_angle = NAN; // rad, of the last link frame from rest
-    double          solve_time         = NAN; // s, wall time of this equilibrium from rest
+    double          solve_time         = NAN; // s, wall time of this equilibrium from rest (median of the timed solves)
     std::vector<Eigen::Vector3d> joint_positions; // c_i at equilibrium, m (empty if failed)
     // Contact samples: the force the obstacles receive, N, world (NaN otherwise).
     Eigen::Vector3d contact_force     = Eigen::Vector3d::Constant(NAN); // the chain's
@@ -60,9 +60,11 @@ namespace softchain::chain
     ChainValidation(const data::ActuationDatabase &database,
                     const std::vector<std::string> &roles, double finger_length);
 
-    // Solves every sample with `model` and records the errors.
+    // Solves every sample with `model` and records the errors; each sample
+    // `timed_solves` times, its solve time the median (1: the first solve,
+    // with the caches and allocations of a cold start).
     void compare(const ChainModel &model, const EquilibriumSettings &settings,
-                 const FrictionalPathSettings &friction_path = {});
+                 const FrictionalPathSettings &friction_path = {}, int timed_solves = 1);
 
     const std::vector<ValidationRecord> &records() const { return records_; }
     int                                  n_failed(const std::string &model) const;
