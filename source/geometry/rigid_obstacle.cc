@@ -30,8 +30,9 @@ namespace softchain::geometry
       const double r = w.norm();
       if (r == 0)
         return {-radius, P.col(0).normalized(), Eigen::Matrix3d::Zero()};
-      const Eigen::Vector3d n = w / r;
-      return {r - radius, n, (P - n * n.transpose()) / r};
+      const double          inverse = 1.0 / r; // one division (a contact search calls this per point)
+      const Eigen::Vector3d n       = inverse * w;
+      return {r - radius, n, inverse * (P - n * n.transpose())};
     }
   } // namespace
 

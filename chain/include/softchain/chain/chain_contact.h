@@ -167,6 +167,8 @@ namespace softchain::chain
     // The touch of surface point k of `link` against obstacle o at x, or
     // false if x is outside.
     bool touch_at(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
+    // The same for a point inside only: false, and `touch` untouched, outside.
+    bool touch_inside(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
     // Appends the points of `cluster` within `margin` of an obstacle to `near`.
     void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster, double margin,
                         std::vector<Touch> &near) const;
