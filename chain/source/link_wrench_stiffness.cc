@@ -37,8 +37,10 @@ namespace softchain::chain
         }
   }
 
-  // Row block j, columns of the joints up to j: (S_j Xi_j)^T Xi_{0..j}.
-  void LinkWrenchStiffness::add_to_lower(const ChainPose &pose, Eigen::MatrixXd &dense) const
+  // Row block j, columns of the joints up to j: (S_j Xi_j)^T Xi_{0..j};
+  // mirrored, the blocks left of the diagonal also above it (the diagonal
+  // blocks Xi_j^T S_j Xi_j are symmetric).
+  void LinkWrenchStiffness::add_blocks(const ChainPose &pose, Eigen::MatrixXd &dense, const bool mirror) const
   {
     if (last_stiff_ < 0)
       return;
@@ -49,25 +51,19 @@ namespace softchain::chain
         S += stiffness_[j];
         const Eigen::Matrix<double, 6, 3> W = S * twists_.middleCols<3>(3 * j);
         dense.block(3 * j, 0, 3, 3 * j + 3).noalias() += W.transpose() * twists_.leftCols(3 * j + 3);
+        if (mirror)
+          dense.block(0, 3 * j, 3 * j, 3).noalias() += twists_.leftCols(3 * j).transpose() * W;
       }
   }
 
-  // The lower triangle's blocks, and those left of the diagonal mirrored
-  // (the diagonal blocks Xi_j^T S_j Xi_j are symmetric).
+  void LinkWrenchStiffness::add_to_lower(const ChainPose &pose, Eigen::MatrixXd &dense) const
+  {
+    add_blocks(pose, dense, false);
+  }
+
   void LinkWrenchStiffness::add_to(const ChainPose &pose, Eigen::MatrixXd &dense) const
   {
-    if (last_stiff_ < 0)
-      return;
-    joint_twists(pose);
-    Matrix6d S = Matrix6d::Zero();
-    for (int j = last_stiff_; j >= 0; --j)
-      {
-        S += stiffness_[j];
-        const Eigen::Matrix<double, 6, 3> W     = S * twists_.middleCols<3>(3 * j);
-        const Eigen::MatrixXd             block = W.transpose() * twists_.leftCols(3 * j + 3);
-        dense.block(3 * j, 0, 3, 3 * j + 3) += block;
-        dense.block(0, 3 * j, 3 * j, 3) += block.leftCols(3 * j).transpose();
-      }
+    add_blocks(pose, dense, true);
   }
 
   void LinkWrenchStiffness::add_generalised_force(const ChainPose &pose, Eigen::VectorXd &generalised) const

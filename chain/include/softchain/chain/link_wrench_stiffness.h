@@ -61,6 +61,8 @@ namespace softchain::chain
   private:
     // Xi_i of every joint at `pose` into twists_ (6 x n_angles).
     void joint_twists(const ChainPose &pose) const;
+    // The lower triangle's blocks into `dense`, and if `mirror` the upper's too.
+    void add_blocks(const ChainPose &pose, Eigen::MatrixXd &dense, bool mirror) const;
 
     std::vector<Matrix6d>   stiffness_; // G_b
     std::vector<Vector6d>   force_;     // h_b
