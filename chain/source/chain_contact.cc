@@ -37,6 +37,7 @@ namespace softchain::chain
       }
     friction_.set(coefficients, stiffness, std::move(anchors));
     surface->offsets_at(pressure, offsets_);
+    spheres_ = &surface->spheres_at(pressure);
     for (const double c : skin_compliance)
       if (!(c >= 0.0) || !std::isfinite(c))
         throw std::invalid_argument("chain contact: a skin compliance is negative or not finite");
@@ -324,30 +325,31 @@ namespace softchain::chain
     for (std::size_t i = 0; i < nodes.size();)
       {
         const CollisionSurface::Node &node = nodes[i];
-        if (clearance(pose, node) > margin)
+        if (clearance(pose, static_cast<int>(i)) > margin)
           i = node.skip;
         else if (node.cluster < 0)
           ++i;
         else
           {
-            add_candidates(pose, surface_->clusters()[node.cluster], margin, near);
+            add_candidates(pose, surface_->clusters()[node.cluster], (*spheres_)[i], margin, near);
             i = node.skip;
           }
       }
   }
 
   void ChainContact::add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
-                                    const double margin, std::vector<Touch> &near) const
+                                    const CollisionSurface::Sphere &sphere, const double margin,
+                                    std::vector<Touch> &near) const
   {
     const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
     const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
     const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
     const Eigen::Vector3d  skin(0.0, s, 0.0);
-    const Eigen::Vector3d  centre = c + R * cluster.centre;
+    const Eigen::Vector3d  centre = c + R * sphere.centre;
     for (std::size_t o = 0; o < obstacles_.size(); ++o)
       {
         const geometry::Obstacle &obstacle = obstacles_[o];
-        if (obstacle.body->gap(centre, poses_[o]) > cluster.radius + std::abs(s) + margin)
+        if (obstacle.body->gap(centre, poses_[o]) > sphere.radius + std::abs(s) + margin)
           continue;
         for (int k = cluster.begin; k < cluster.end; ++k)
           {
@@ -360,13 +362,15 @@ namespace softchain::chain
       }
   }
 
-  double ChainContact::clearance(const ChainPose &pose, const CollisionSurface::Node &node) const
+  double ChainContact::clearance(const ChainPose &pose, const int node) const
   {
-    const Eigen::Vector3d centre = pose.joint_positions[node.link] + pose.link_rotations[node.link] * node.centre;
-    double nearest = std::numeric_limits<double>::infinity();
+    const int                       link   = surface_->nodes()[node].link;
+    const CollisionSurface::Sphere &sphere = (*spheres_)[node];
+    const Eigen::Vector3d centre  = pose.joint_positions[link] + pose.link_rotations[link] * sphere.centre;
+    double                nearest = std::numeric_limits<double>::infinity();
     for (std::size_t o = 0; o < obstacles_.size(); ++o)
       nearest = std::min(nearest, obstacles_[o].body->gap(centre, poses_[o]));
-    return nearest - node.radius - (has_skin() ? std::abs(skin_shift_[node.link]) : 0.0);
+    return nearest - sphere.radius - (has_skin() ? std::abs(skin_shift_[link]) : 0.0);
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

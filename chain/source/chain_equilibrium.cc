@@ -475,12 +475,13 @@ namespace softchain::chain
     double ratio = 1.0; // the largest motion over what a cluster may move, where above 1
     for (std::size_t i = 0; i < nodes.size();)
       {
-        const CollisionSurface::Node &node = nodes[i];
-        const Eigen::Vector3d         w    = twists_[node.link].head<3>();
-        const Eigen::Vector3d         v    = twists_[node.link].tail<3>();
-        const Eigen::Vector3d centre = pose_.joint_positions[node.link] + pose_.link_rotations[node.link] * node.centre;
-        const double motion = (v + w.cross(centre)).norm() + w.norm() * node.radius;
-        const double bound  = motion / std::max(contact_margin_, contact_.clearance(pose_, node));
+        const CollisionSurface::Node   &node   = nodes[i];
+        const CollisionSurface::Sphere &sphere = contact_.spheres()[i];
+        const Eigen::Vector3d           w      = twists_[node.link].head<3>();
+        const Eigen::Vector3d           v      = twists_[node.link].tail<3>();
+        const Eigen::Vector3d centre = pose_.joint_positions[node.link] + pose_.link_rotations[node.link] * sphere.centre;
+        const double motion = (v + w.cross(centre)).norm() + w.norm() * sphere.radius;
+        const double bound  = motion / std::max(contact_margin_, contact_.clearance(pose_, static_cast<int>(i)));
         if (bound <= ratio)
           i = node.skip;
         else if (node.cluster < 0)

@@ -28,22 +28,18 @@ namespace softchain::chain
     for (int b = 0; b < n_links; ++b)
       if (link_begin_[b] < link_begin_[b + 1])
         split(b, link_begin_[b], link_begin_[b + 1]);
+    for (std::size_t r = 0; r + 1 < std::max<std::size_t>(rows_.size(), 2); ++r)
+      spheres_.push_back(spheres_between(rows_[r], rows_[std::min(r + 1, rows_.size() - 1)]));
   }
 
   // Halves [begin, end) at the median of the rest offsets along their
-  // longest extent until a run has at most 8 points, a cluster; its sphere:
-  // the rest points' mean as centre, the farthest point at any pressure as
-  // radius. A node above clusters: the mean as centre, the radius that
-  // holds both children's spheres (so that it bounds everything they bound).
-  // Nodes in pre-order, each with the index past its subtree.
+  // longest extent until a run has at most 8 points, a cluster. Nodes in
+  // pre-order, each with the index past its subtree.
   int CollisionSurface::split(const int link, const int begin, const int end)
   {
     const std::vector<Eigen::Vector3d> &rest  = rows_.front().offsets;
     const int                           index = static_cast<int>(nodes_.size());
-    nodes_.emplace_back();
-    Node node{link, -1, 0, Eigen::Vector3d::Zero(), 0.0};
-    for (int k = begin; k < end; ++k)
-      node.centre += rest[k] / (end - begin);
+    nodes_.push_back({link, -1, begin, end, 0});
     if (end - begin > 8)
       {
         Eigen::Vector3d low = rest[begin], high = rest[begin];
@@ -61,22 +57,51 @@ namespace softchain::chain
                          [&](int a, int b) { return rest[a][axis] < rest[b][axis]; });
         reorder(order);
         const int middle = (begin + end) / 2;
-        for (const int child : {split(link, begin, middle), split(link, middle, end)})
-          node.radius = std::max(node.radius, (nodes_[child].centre - node.centre).norm() + nodes_[child].radius);
+        split(link, begin, middle);
+        split(link, middle, end);
       }
     else
       {
-        Cluster cluster{link, begin, end, node.centre, 0.0};
-        for (const Row &row : rows_)
-          for (int k = begin; k < end; ++k)
-            cluster.radius = std::max(cluster.radius, (row.offsets[k] - cluster.centre).norm());
-        node.cluster = static_cast<int>(clusters_.size());
-        node.radius  = cluster.radius;
-        clusters_.push_back(cluster);
+        nodes_[index].cluster = static_cast<int>(clusters_.size());
+        clusters_.push_back({link, begin, end});
       }
-    node.skip      = static_cast<int>(nodes_.size());
-    nodes_[index] = node;
+    nodes_[index].skip = static_cast<int>(nodes_.size());
     return index;
+  }
+
+  // Children before parents (reverse pre-order). A cluster's sphere: the
+  // mean of its points at both rows as centre, the farthest of them as
+  // radius; a node above: the mean likewise, the radius that holds both
+  // children's spheres (so that it bounds everything they bound).
+  std::vector<CollisionSurface::Sphere> CollisionSurface::spheres_between(const Row &r0, const Row &r1) const
+  {
+    std::vector<Sphere> spheres(nodes_.size());
+    for (int n = static_cast<int>(nodes_.size()) - 1; n >= 0; --n)
+      {
+        const Node &node   = nodes_[n];
+        Sphere     &sphere = spheres[n];
+        for (int k = node.begin; k < node.end; ++k)
+          sphere.centre += (r0.offsets[k] + r1.offsets[k]) / (2.0 * (node.end - node.begin));
+        if (node.cluster >= 0)
+          for (int k = node.begin; k < node.end; ++k)
+            sphere.radius = std::max({sphere.radius, (r0.offsets[k] - sphere.centre).norm(),
+                                      (r1.offsets[k] - sphere.centre).norm()});
+        else
+          for (const int child : {n + 1, nodes_[n + 1].skip})
+            sphere.radius =
+              std::max(sphere.radius, (spheres[child].centre - sphere.centre).norm() + spheres[child].radius);
+      }
+    return spheres;
+  }
+
+  // The interval [p_i, p_i+1] that holds p; below 0 the first (its start is
+  // the rest row that offsets_at takes there), beyond the table the last.
+  const std::vector<CollisionSurface::Sphere> &CollisionSurface::spheres_at(const double pressure) const
+  {
+    const auto above = std::upper_bound(rows_.begin(), rows_.end(), pressure,
+                                        [](double p, const Row &row) { return p < row.pressure; });
+    const auto row   = static_cast<std::size_t>(above - rows_.begin());
+    return spheres_[std::min(row == 0 ? 0 : row - 1, spheres_.size() - 1)];
   }
 
   // Point k becomes point order[k]'s in every row.

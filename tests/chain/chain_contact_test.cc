@@ -16,6 +16,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace softchain::chain;
@@ -275,52 +276,64 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond; outer
   CHECK(offsets[1].y() == Approx(4.0));
   CHECK(surface.link_begin() == std::vector<int>{0, 1, 2});
   REQUIRE(surface.clusters().size() == 2);
-  CHECK(surface.clusters()[1].radius == Approx(4.0));
-  // Twenty points on one link: clusters of at most eight that cover them,
-  // each sphere holding its points at every pressure.
-  std::vector<Eigen::Vector3d> rest, inflated;
+  // The one-point cluster of link 1 moves by 4 along y from 0 to 10 kPa:
+  // its sphere spans that at any pressure of the table, and beyond it
+  // shrinks to the held point.
+  CHECK(surface.spheres_at(5e3)[1].radius == Approx(2.0));
+  CHECK(surface.spheres_at(5e3)[1].centre.y() == Approx(2.0));
+  CHECK(surface.spheres_at(1e4)[1].radius == Approx(2.0));
+  // Twenty points on one link, inflated unevenly over three rows: clusters
+  // of at most eight that cover them, in a tree whose every sphere holds its
+  // points at every pressure of its interval and its children's spheres.
+  std::vector<Eigen::Vector3d> rest, inflated, more;
   for (int k = 0; k < 20; ++k)
     {
       rest.emplace_back(0.001 * k, 0.002 * (k % 3), 0.003 * (k % 2));
       inflated.push_back(rest.back() + Eigen::Vector3d(0.0, 0.0005 * k, 0.0));
+      more.push_back(inflated.back() + Eigen::Vector3d(0.0002 * (k % 4), 0.0, -0.0003 * k));
     }
-  const CollisionSurface many(std::vector<int>(20, 0), {{0.0, rest}, {2e4, inflated}}, 1);
+  const CollisionSurface many(std::vector<int>(20, 0), {{0.0, rest}, {2e4, inflated}, {4e4, more}}, 1);
   int covered = 0;
   for (const auto &cluster : many.clusters())
     {
       CHECK(cluster.end - cluster.begin <= 8);
       CHECK(cluster.begin == covered);
       covered = cluster.end;
-      for (const double p : {0.0, 1e4, 2e4})
-        {
-          many.offsets_at(p, offsets);
-          for (int k = cluster.begin; k < cluster.end; ++k)
-            CHECK((offsets[k] - cluster.centre).norm() <= cluster.radius * (1 + 1e-12));
-        }
     }
-  // The tree above the clusters: pre-order, each node's sphere holding its
-  // children's (so a skipped branch hides no point near an obstacle), the
-  // leaves being the clusters in order.
   const auto &nodes = many.nodes();
   REQUIRE(nodes.size() == 2 * many.clusters().size() - 1);
-  int leaves = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
+  for (const double p : {-1e3, 0.0, 1e4, 2e4, 3e4, 4e4, 6e4})
     {
-      const auto &node = nodes[i];
-      if (node.cluster >= 0)
+      INFO("pressure " << p);
+      const auto &spheres = many.spheres_at(p);
+      REQUIRE(spheres.size() == nodes.size());
+      many.offsets_at(p, offsets);
+      int leaves = 0;
+      for (std::size_t i = 0; i < nodes.size(); ++i)
         {
-          CHECK(node.cluster == leaves++);
-          CHECK(node.skip == static_cast<int>(i) + 1);
-          CHECK(node.radius == many.clusters()[node.cluster].radius);
-          continue;
+          const auto &node = nodes[i];
+          for (int k = node.begin; k < node.end; ++k)
+            CHECK((offsets[k] - spheres[i].centre).norm() <= spheres[i].radius * (1 + 1e-12));
+          if (node.cluster >= 0)
+            {
+              CHECK(node.cluster == leaves++);
+              CHECK(node.skip == static_cast<int>(i) + 1);
+              CHECK(node.begin == many.clusters()[node.cluster].begin);
+              continue;
+            }
+          const std::size_t left = i + 1, right = static_cast<std::size_t>(nodes[left].skip);
+          CHECK(nodes[right].skip == node.skip);
+          for (const std::size_t child : {left, right})
+            CHECK((spheres[child].centre - spheres[i].centre).norm() + spheres[child].radius <=
+                  spheres[i].radius * (1 + 1e-12));
         }
-      const auto &left  = nodes[i + 1];
-      const auto &right = nodes[left.skip];
-      CHECK(right.skip == node.skip);
-      for (const auto *child : {&left, &right})
-        CHECK((child->centre - node.centre).norm() + child->radius <= node.radius * (1 + 1e-12));
+      CHECK(leaves == static_cast<int>(many.clusters().size()));
     }
-  CHECK(leaves == static_cast<int>(many.clusters().size()));
+  // Per interval, not over the whole table: some point at 40 kPa lies
+  // outside the root's sphere of the first interval (0 to 20 kPa).
+  const auto &first = many.spheres_at(1e4).front();
+  CHECK(std::any_of(more.begin(), more.end(),
+                    [&](const Eigen::Vector3d &x) { return (x - first.centre).norm() > first.radius; }));
   CHECK(nodes.front().skip == static_cast<int>(nodes.size()));
   CHECK(covered == 20);
   CHECK_THROWS_AS(CollisionSurface({1, 0}, {{0.0, {{0, 0, 0}, {0, 0, 0}}}}, 2), std::invalid_argument);

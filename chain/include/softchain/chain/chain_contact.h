@@ -122,9 +122,12 @@ namespace softchain::chain
     // point within `margin` of an obstacle (g < margin, the touching ones
     // among them).
     void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near) const;
-    // A lower bound of every point's distance to the obstacles in `node`'s
-    // sphere at `pose`: min over obstacles of g(centre) - radius - |s_b|.
-    double clearance(const ChainPose &pose, const CollisionSurface::Node &node) const;
+    // A lower bound of the distance to the obstacles of every point of the
+    // surface's node `node` (CollisionSurface::nodes) at `pose`: min over
+    // obstacles of g(centre) - radius - |s_b|, its sphere at the load's pressure.
+    double clearance(const ChainPose &pose, int node) const;
+    // The surface's spheres at the load's pressure (CollisionSurface::spheres_at).
+    const std::vector<CollisionSurface::Sphere> &spheres() const { return *spheres_; }
     // A touching link's skin at the last update: its displacement s_b, the
     // direction d_b (world), k_s, and the parts of u_b and D_b (header) that
     // the touching points' penetrations g_k carry (t_b, e_b), which a Newton
@@ -170,12 +173,13 @@ namespace softchain::chain
     // The same for a point inside only: false, and `touch` untouched, outside.
     bool touch_inside(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
     // Appends the points of `cluster` within `margin` of an obstacle to `near`.
-    void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster, double margin,
-                        std::vector<Touch> &near) const;
+    void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
+                        const CollisionSurface::Sphere &sphere, double margin, std::vector<Touch> &near) const;
     // Appends the rows of `touch`, with or without its normal row.
     void append_rows(const Touch &touch, bool normal, std::vector<LinkRow> &rows) const;
 
     const CollisionSurface        *surface_ = nullptr;
+    const std::vector<CollisionSurface::Sphere> *spheres_ = nullptr; // the surface's at the load's pressure
     std::vector<geometry::Obstacle> obstacles_;
     std::vector<geometry::RigidTransform> poses_; // each obstacle at the end of its motion (path parameter 1)
     std::vector<Eigen::Vector3d>    offsets_; // L_k(p)
