@@ -26,8 +26,8 @@
 // A contact search skips a whole branch far from an obstacle (most of a
 // finger, most of the time) with one test, and tests a point only where its
 // cluster's sphere reaches into the obstacle. Spheres over all pressures
-// at once, which the inflation of the cavity widens, let a search on P10
-// test about 15 % more. The surface is built from a database by
+// at once, which the inflation of the cavity widens, made P10's contact
+// equilibria about 10 % slower (a median of 313 against 282 us). The surface is built from a database by
 // finger_collision_surface.h.
 #include <Eigen/Core>
 
