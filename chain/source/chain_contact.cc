@@ -125,7 +125,7 @@ namespace softchain::chain
   bool ChainContact::touch_inside(const Eigen::Vector3d &x, const int link, const int k, const int o,
                                   Touch &touch) const
   {
-    return obstacles_[o].body->gap(x, poses_[o]) < 0.0 && touch_at(x, link, k, o, touch);
+    return obstacles_[o].body->closer_than(x, 0.0, poses_[o]) && touch_at(x, link, k, o, touch);
   }
 
   // E'(s) = k_s s + sum_k k_c min(g_k(s), 0) a_k(s) is increasing where the
@@ -354,7 +354,7 @@ namespace softchain::chain
         for (int k = cluster.begin; k < cluster.end; ++k)
           {
             const Eigen::Vector3d x = c + R * (surface_->gives(k) ? offsets_[k] + skin : offsets_[k]);
-            if (!(obstacle.body->gap(x, poses_[o]) < margin))
+            if (!obstacle.body->closer_than(x, margin, poses_[o]))
               continue;
             near.emplace_back();
             touch_at(x, cluster.link, k, static_cast<int>(o), near.back());

@@ -71,6 +71,13 @@ namespace softchain::geometry
 
   double SphereObstacle::gap_at_rest(const Eigen::Vector3d &x) const { return (x - center).norm() - radius; }
 
+  // |x - c| - R < d  <=>  |x - c|^2 < (R + d)^2 where R + d > 0, never otherwise.
+  bool SphereObstacle::closer_than_at_rest(const Eigen::Vector3d &x, const double distance) const
+  {
+    const double reach = radius + distance;
+    return reach > 0.0 && (x - center).squaredNorm() < reach * reach;
+  }
+
   CylinderObstacle::CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis,
                                      const double radius)
     : point(point)
@@ -90,6 +97,14 @@ namespace softchain::geometry
   {
     const Eigen::Vector3d d = x - point;
     return (d - d.dot(axis) * axis).norm() - radius;
+  }
+
+  // |w| - R < d  <=>  |w|^2 < (R + d)^2 where R + d > 0, never otherwise.
+  bool CylinderObstacle::closer_than_at_rest(const Eigen::Vector3d &x, const double distance) const
+  {
+    const double          reach = radius + distance;
+    const Eigen::Vector3d d     = x - point;
+    return reach > 0.0 && (d - d.dot(axis) * axis).squaredNorm() < reach * reach;
   }
 
   BoxObstacle::BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes,

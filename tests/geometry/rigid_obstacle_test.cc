@@ -108,6 +108,12 @@ TEST_CASE("the gap alone is the signed distance's gap, outside and inside every 
       {
         const RigidTransform moved(R, Vector3d(0.1, 0, 0), Vector3d(0.01, 0.02, 0.03));
         CHECK(o->gap(x, moved) == Approx(o->distance(x, moved).gap).margin(1e-15));
+        // closer_than is gap < d, for distances that put x inside and
+        // outside the reach, and for one the reach of a round obstacle
+        // cannot meet (R + d < 0).
+        const double g = o->gap(x, moved);
+        for (const double d : {g - 0.05, g + 0.05, -1.0, 0.0, 0.3})
+          CHECK(o->closer_than(x, d, moved) == (g < d));
       }
 }
 

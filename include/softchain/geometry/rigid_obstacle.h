@@ -41,6 +41,17 @@ namespace softchain::geometry
       return gap_at_rest(pose.to_rest(x));
     }
     virtual double gap_at_rest(const Eigen::Vector3d &x) const { return distance_at_rest(x).gap; }
+    // Whether g(x) < `distance`, without g's square root where it has one
+    // (round obstacles compare squares): the test a contact search makes of
+    // every point near an obstacle.
+    bool closer_than(const Eigen::Vector3d &x, const double distance, const RigidTransform &pose = RigidTransform()) const
+    {
+      return closer_than_at_rest(pose.to_rest(x), distance);
+    }
+    virtual bool closer_than_at_rest(const Eigen::Vector3d &x, const double distance) const
+    {
+      return gap_at_rest(x) < distance;
+    }
     // "plane", "sphere", "cylinder", "box" or "stl".
     virtual std::string shape() const = 0;
   };
@@ -66,6 +77,7 @@ namespace softchain::geometry
     SphereObstacle(const Eigen::Vector3d &center, double radius);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
+    bool           closer_than_at_rest(const Eigen::Vector3d &x, double distance) const override;
     std::string    shape() const override { return "sphere"; }
 
   private:
@@ -82,6 +94,7 @@ namespace softchain::geometry
     CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis, double radius);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
+    bool           closer_than_at_rest(const Eigen::Vector3d &x, double distance) const override;
     std::string    shape() const override { return "cylinder"; }
 
   private:
