@@ -134,7 +134,7 @@ TEST_CASE("An MJCF without the pressure tables is an input error, not a crash")
 TEST_CASE("Tables whose rows do not match the hinges are an input error naming the field")
 {
   softchain::testing::ScratchDirectory dir("mujoco_pressure_bad_rows");
-  std::string xml = MjcfExport(tapered_finger_in_pressure(p_max), {0.005, 1070, 0.01, p_max, p_max}).text();
+  std::string xml = MjcfExport(tapered_finger_in_pressure(p_max), {0.005, 1070, 0.01, p_max, p_max, {}, 0.0}).text();
   // One stiffness value too few: not a whole row per pressure.
   const auto at = xml.find("\"", xml.find("data=\"", xml.find(PressureTables::stiffness_name)) + 6);
   xml.erase(xml.rfind(' ', at), at - xml.rfind(' ', at));
@@ -151,7 +151,7 @@ TEST_CASE("A skin joint without its compliance table is an input error naming th
   softchain::testing::ScratchDirectory dir("mujoco_pressure_skin_without_table");
   ChainModel model = tapered_finger_in_pressure(p_max);
   model.set_skin_compliance(PiecewiseLinear({0.0, p_max}, {2e-3, 1e-3}));
-  MjcfOptions options{0.005, 1070, 0.01, p_max, p_max};
+  MjcfOptions options{0.005, 1070, 0.01, p_max, p_max, {}, 0.0};
   options.skin_links.assign(model.chain().n_joints(), 1);
   std::string xml = MjcfExport(model, options).text();
   REQUIRE(xml.find("<joint name=\"skin3\" type=\"slide\"") != std::string::npos);
@@ -171,7 +171,7 @@ TEST_CASE("Two capsules per link sit side by side along the link at every pressu
 {
   softchain::testing::ScratchDirectory dir("mujoco_pressure_two_capsules");
   const ChainModel model = tapered_finger_in_pressure(p_max);
-  MjcfOptions      options{0.002, 1070, 0.01, p_max, p_max};
+  MjcfOptions      options{0.002, 1070, 0.01, p_max, p_max, {}, 0.0};
   options.capsule_offset = 0.004;
   MjcfExport(model, options).write(dir.file("finger.xml"));
   mjModel *m = mj_loadXML(dir.file("finger.xml").c_str(), nullptr, nullptr, 0);

@@ -33,7 +33,7 @@ namespace
 
   std::string export_finger(const softchain::testing::ScratchDirectory &dir, const ChainModel &model)
   {
-    MjcfExport(model, {0.005, 1070, 0.01, p_max, p_max}).write(dir.file("finger.xml"));
+    MjcfExport(model, {0.005, 1070, 0.01, p_max, p_max, {}, 0.0}).write(dir.file("finger.xml"));
     return dir.file("finger.xml");
   }
 
@@ -119,7 +119,7 @@ TEST_CASE("MuJoCo's skins give as the chain's: each slide joint at rest holds c_
   ChainModel model = finger_bending_down();
   // c_s from 2 mm/N at rest to 1 mm/N at p*: set from the tables at p.
   model.set_skin_compliance(PiecewiseLinear({0.0, p_max}, {2e-3, 1e-3}));
-  MjcfOptions options{0.005, 1070, 0.01, p_max, p_max};
+  MjcfOptions options{0.005, 1070, 0.01, p_max, p_max, {}, 0.0};
   options.skin_links.assign(model.chain().n_joints(), 1);
   options.skin_links[0] = 0; // the first link stays rigid
   MjcfExport(model, options).write(dir.file("finger.xml"));
