@@ -364,13 +364,51 @@ namespace softchain::chain
 
   double ChainContact::clearance(const ChainPose &pose, const int node) const
   {
+    const int link = surface_->nodes()[node].link;
+    return clearance_at_rest(pose, node) - (has_skin() ? std::abs(skin_shift_[link]) : 0.0);
+  }
+
+  double ChainContact::clearance_at_rest(const ChainPose &pose, const int node) const
+  {
     const int                       link   = surface_->nodes()[node].link;
     const CollisionSurface::Sphere &sphere = (*spheres_)[node];
     const Eigen::Vector3d centre  = pose.joint_positions[link] + pose.link_rotations[link] * sphere.centre;
     double                nearest = std::numeric_limits<double>::infinity();
     for (std::size_t o = 0; o < obstacles_.size(); ++o)
       nearest = std::min(nearest, obstacles_[o].body->gap(centre, poses_[o]));
-    return nearest - sphere.radius - (has_skin() ? std::abs(skin_shift_[link]) : 0.0);
+    return nearest - sphere.radius;
+  }
+
+  // With the skins at rest (s_b = 0). A point inside then is still inside
+  // once the skins have given: a skin gives only as far as the force of its
+  // points that still push holds it (ChainContact::skin_shift).
+  bool ChainContact::penetrates(const ChainPose &pose) const
+  {
+    if (obstacles_.empty())
+      return false;
+    const std::vector<CollisionSurface::Node> &nodes = surface_->nodes();
+    for (std::size_t i = 0; i < nodes.size();)
+      {
+        const CollisionSurface::Node &node = nodes[i];
+        if (clearance_at_rest(pose, static_cast<int>(i)) > 0.0)
+          {
+            i = node.skip;
+            continue;
+          }
+        if (node.cluster < 0)
+          {
+            ++i;
+            continue;
+          }
+        const Eigen::Matrix3d &R = pose.link_rotations[node.link];
+        const Eigen::Vector3d &c = pose.joint_positions[node.link];
+        for (int k = node.begin; k < node.end; ++k)
+          for (std::size_t o = 0; o < obstacles_.size(); ++o)
+            if (obstacles_[o].body->closer_than(c + R * offsets_[k], 0.0, poses_[o]))
+              return true;
+        i = node.skip;
+      }
+    return false;
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

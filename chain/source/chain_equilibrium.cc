@@ -676,8 +676,7 @@ namespace softchain::chain
   {
     const auto penetrates = [&](double t) {
       chain_.update_pose(t * free, pose_);
-      contact_.update(pose_);
-      return !contact_.touches().empty();
+      return contact_.penetrates(pose_);
     };
     if (penetrates(0.0))
       return free;

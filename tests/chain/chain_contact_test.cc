@@ -196,6 +196,35 @@ TEST_CASE("contact on a plane and a cylinder: residual = energy gradient, tangen
     }
 }
 
+TEST_CASE("the quick test for a penetrating point agrees with the touches an update finds, with and "
+          "without sections that give")
+{
+  const int n = 4;
+  for (const double skin : {0.0, 0.01})
+    for (const auto &obstacles : {std::vector{plane(-0.012)}, std::vector{cylinder({0.05, -0.016, 0.0}, 0.008)}})
+      {
+        INFO("skin compliance " << skin << " m/N, " << obstacles.front().shape);
+        ChainModel model = uniform_finger(n, 0.02, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
+        model.set_collision_surface(palm_points(n, 0.02, 3, 0.004, 0.006, skin > 0.0));
+        if (skin > 0.0)
+          model.set_skin_compliance(PiecewiseLinear({0.0}, {skin}));
+        ChainEquilibrium  solver(model);
+        const Equilibrium e = solver.solve(ChainLoad{1e4, {}, obstacles});
+        REQUIRE(e.converged);
+        int touching = 0;
+        for (int step = 0; step <= 12; ++step)
+          {
+            solver.residual(0.1 * step * e.angles);
+            const bool touches = !solver.contact().touches().empty();
+            CHECK(solver.contact().penetrates(solver.pose()) == touches);
+            touching += touches;
+          }
+        // Both answers occur along the way.
+        CHECK(touching > 0);
+        CHECK(touching < 13);
+      }
+}
+
 TEST_CASE("a finger pressed on a table converges, pushes only where it penetrates, and the table "
           "takes the joints' torque")
 {

@@ -126,6 +126,10 @@ namespace softchain::chain
     // surface's node `node` (CollisionSurface::nodes) at `pose`: min over
     // obstacles of g(centre) - radius - |s_b|, its sphere at the load's pressure.
     double clearance(const ChainPose &pose, int node) const;
+    // Whether a surface point lies inside an obstacle at `pose` (touches()
+    // would not be empty after update(pose)), found without the touches or
+    // the skins: the search stops at the first such point.
+    bool penetrates(const ChainPose &pose) const;
     // The surface's spheres at the load's pressure (CollisionSurface::spheres_at).
     const std::vector<CollisionSurface::Sphere> &spheres() const { return *spheres_; }
     // A touching link's skin at the last update: its displacement s_b, the
@@ -172,6 +176,8 @@ namespace softchain::chain
     bool touch_at(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
     // The same for a point inside only: false, and `touch` untouched, outside.
     bool touch_inside(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
+    // clearance with the skins at rest (s_b = 0).
+    double clearance_at_rest(const ChainPose &pose, int node) const;
     // Appends the points of `cluster` within `margin` of an obstacle to `near`.
     void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
                         const CollisionSurface::Sphere &sphere, double margin, std::vector<Touch> &near) const;
