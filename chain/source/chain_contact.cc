@@ -316,7 +316,8 @@ namespace softchain::chain
   // `margin` from every obstacle (clearance > margin, g being 1-Lipschitz)
   // has no point within it, and in a cluster only the obstacles its sphere
   // reaches are tested. A point inside (g < 0) carries f = -k_c g n.
-  void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near) const
+  void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near,
+                                const bool with_curvature) const
   {
     near.clear();
     if (obstacles_.empty())
@@ -331,7 +332,7 @@ namespace softchain::chain
           ++i;
         else
           {
-            add_candidates(pose, surface_->clusters()[node.cluster], (*spheres_)[i], margin, near);
+            add_candidates(pose, surface_->clusters()[node.cluster], (*spheres_)[i], margin, with_curvature, near);
             i = node.skip;
           }
       }
@@ -339,7 +340,7 @@ namespace softchain::chain
 
   void ChainContact::add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
                                     const CollisionSurface::Sphere &sphere, const double margin,
-                                    std::vector<Touch> &near) const
+                                    const bool with_curvature, std::vector<Touch> &near) const
   {
     const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
     const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
@@ -356,8 +357,16 @@ namespace softchain::chain
             const Eigen::Vector3d x = c + R * (surface_->gives(k) ? offsets_[k] + skin : offsets_[k]);
             if (!obstacle.body->closer_than(x, margin, poses_[o]))
               continue;
-            near.emplace_back();
-            touch_at(x, cluster.link, k, static_cast<int>(o), near.back());
+            if (with_curvature)
+              {
+                near.emplace_back();
+                touch_at(x, cluster.link, k, static_cast<int>(o), near.back());
+                continue;
+              }
+            Eigen::Vector3d n;
+            const double    g = obstacle.body->gap_and_normal(x, n, poses_[o]);
+            near.push_back({cluster.link, k, static_cast<int>(o), x, n,
+                            Eigen::Vector3d(-stiffness_ * std::min(g, 0.0) * n), g, Eigen::Matrix3d::Zero()});
           }
       }
   }

@@ -256,7 +256,7 @@ namespace softchain::chain
   // is taken without them (the friction's, positive, stay).
   void ChainEquilibrium::contact_direction()
   {
-    contact_.candidates(pose_, contact_margin_, near_);
+    contact_.candidates(pose_, contact_margin_, near_, false); // the touches' curvature rows come from update
     const double       k = contact_.stiffness();
     const Eigen::Index m = static_cast<Eigen::Index>(near_.size());
     gaps_.resize(m);

@@ -25,6 +25,14 @@ namespace softchain::geometry
     // point: n = w / |w| and H = (P - n n^T) / |w|, P the projection onto
     // the directions w may take. At |w| = 0 (on the axis or at the centre)
     // the normal is undefined; a fixed direction keeps g finite there.
+    // The gap and normal of `radial` alone.
+    double radial_gap(const Eigen::Vector3d &w, const double radius, const Eigen::Matrix3d &P, Eigen::Vector3d &n)
+    {
+      const double r = w.norm();
+      n              = r == 0 ? Eigen::Vector3d(P.col(0).normalized()) : Eigen::Vector3d((1.0 / r) * w);
+      return r - radius;
+    }
+
     SignedDistance radial(const Eigen::Vector3d &w, const double radius, const Eigen::Matrix3d &P)
     {
       const double r = w.norm();
@@ -35,6 +43,15 @@ namespace softchain::geometry
       return {r - radius, n, inverse * (P - n * n.transpose())};
     }
   } // namespace
+
+  double RigidObstacle::gap_and_normal(const Eigen::Vector3d &x, Eigen::Vector3d &normal,
+                                       const RigidTransform &pose) const
+  {
+    const double gap = gap_and_normal_at_rest(pose.to_rest(x), normal);
+    if (pose.is_turned())
+      normal = pose.rotation() * normal;
+    return gap;
+  }
 
   SignedDistance RigidObstacle::distance(const Eigen::Vector3d &x, const RigidTransform &pose) const
   {
@@ -57,6 +74,12 @@ namespace softchain::geometry
 
   double PlaneObstacle::gap_at_rest(const Eigen::Vector3d &x) const { return (x - point).dot(normal); }
 
+  double PlaneObstacle::gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &n) const
+  {
+    n = normal;
+    return gap_at_rest(x);
+  }
+
   SphereObstacle::SphereObstacle(const Eigen::Vector3d &center, const double radius)
     : center(center)
     , radius(radius)
@@ -70,6 +93,11 @@ namespace softchain::geometry
   }
 
   double SphereObstacle::gap_at_rest(const Eigen::Vector3d &x) const { return (x - center).norm() - radius; }
+
+  double SphereObstacle::gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &n) const
+  {
+    return radial_gap(x - center, radius, Eigen::Matrix3d::Identity(), n);
+  }
 
   // |x - c| - R < d  <=>  |x - c|^2 < (R + d)^2 where R + d > 0, never otherwise.
   bool SphereObstacle::closer_than_at_rest(const Eigen::Vector3d &x, const double distance) const
@@ -97,6 +125,11 @@ namespace softchain::geometry
   {
     const Eigen::Vector3d d = x - point;
     return (d - d.dot(axis) * axis).norm() - radius;
+  }
+
+  double CylinderObstacle::gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &n) const
+  {
+    return radial_gap(normal_projection * (x - point), radius, normal_projection, n);
   }
 
   // |w| - R < d  <=>  |w|^2 < (R + d)^2 where R + d > 0, never otherwise.

@@ -94,7 +94,7 @@ TEST_CASE("a turned box is the unturned box seen in its own axes", "[geometry][c
     check_derivatives(turned, c + R * y);
 }
 
-TEST_CASE("the gap alone is the signed distance's gap, outside and inside every shape",
+TEST_CASE("the gap alone, and the gap with the normal, are the signed distance's, outside and inside every shape",
           "[geometry][contact]")
 {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vector3d(0, 0.6, 0.8)).toRotationMatrix();
@@ -108,6 +108,9 @@ TEST_CASE("the gap alone is the signed distance's gap, outside and inside every 
       {
         const RigidTransform moved(R, Vector3d(0.1, 0, 0), Vector3d(0.01, 0.02, 0.03));
         CHECK(o->gap(x, moved) == Approx(o->distance(x, moved).gap).margin(1e-15));
+        Vector3d n;
+        CHECK(o->gap_and_normal(x, n, moved) == Approx(o->distance(x, moved).gap).margin(1e-15));
+        CHECK((n - o->distance(x, moved).normal).norm() < 1e-15);
         // closer_than is gap < d, for distances that put x inside and
         // outside the reach, and for one the reach of a round obstacle
         // cannot meet (R + d < 0).

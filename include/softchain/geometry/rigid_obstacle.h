@@ -41,6 +41,15 @@ namespace softchain::geometry
       return gap_at_rest(pose.to_rest(x));
     }
     virtual double gap_at_rest(const Eigen::Vector3d &x) const { return distance_at_rest(x).gap; }
+    // g and n alone (no curvature): what a contact search's candidates need.
+    double gap_and_normal(const Eigen::Vector3d &x, Eigen::Vector3d &normal,
+                          const RigidTransform &pose = RigidTransform()) const;
+    virtual double gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const
+    {
+      const SignedDistance d = distance_at_rest(x);
+      normal                 = d.normal;
+      return d.gap;
+    }
     // Whether g(x) < `distance`, without g's square root where it has one
     // (round obstacles compare squares): the test a contact search makes of
     // every point near an obstacle.
@@ -64,6 +73,7 @@ namespace softchain::geometry
     PlaneObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &normal);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const override;
     std::string    shape() const override { return "plane"; }
 
   private:
@@ -77,6 +87,7 @@ namespace softchain::geometry
     SphereObstacle(const Eigen::Vector3d &center, double radius);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const override;
     bool           closer_than_at_rest(const Eigen::Vector3d &x, double distance) const override;
     std::string    shape() const override { return "sphere"; }
 
@@ -94,6 +105,7 @@ namespace softchain::geometry
     CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis, double radius);
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
+    double         gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const override;
     bool           closer_than_at_rest(const Eigen::Vector3d &x, double distance) const override;
     std::string    shape() const override { return "cylinder"; }
 

@@ -120,8 +120,9 @@ namespace softchain::chain
 
     // The candidates of a Newton step's active set at `pose`: every surface
     // point within `margin` of an obstacle (g < margin, the touching ones
-    // among them).
-    void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near) const;
+    // among them); without their curvature (H_g = 0 in each) unless asked.
+    void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near,
+                    bool with_curvature = true) const;
     // A lower bound of the distance to the obstacles of every point of the
     // surface's node `node` (CollisionSurface::nodes) at `pose`: min over
     // obstacles of g(centre) - radius - |s_b|, its sphere at the load's pressure.
@@ -180,7 +181,8 @@ namespace softchain::chain
     double clearance_at_rest(const ChainPose &pose, int node) const;
     // Appends the points of `cluster` within `margin` of an obstacle to `near`.
     void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
-                        const CollisionSurface::Sphere &sphere, double margin, std::vector<Touch> &near) const;
+                        const CollisionSurface::Sphere &sphere, double margin, bool with_curvature,
+                        std::vector<Touch> &near) const;
     // Appends the rows of `touch`, with or without its normal row.
     void append_rows(const Touch &touch, bool normal, std::vector<LinkRow> &rows) const;
 
