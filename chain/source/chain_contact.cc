@@ -316,6 +316,8 @@ namespace softchain::chain
   // `margin` from every obstacle (clearance > margin, g being 1-Lipschitz)
   // has no point within it, and in a cluster only the obstacles its sphere
   // reaches are tested. A point inside (g < 0) carries f = -k_c g n.
+  // (CollisionSurface::walk's loop, written out: the hottest of the walks,
+  // it measured 7 % slower through walk's closures on P10's contact samples.)
   void ChainContact::candidates(const ChainPose &pose, const double margin, std::vector<Touch> &near,
                                 const bool with_curvature) const
   {
@@ -395,29 +397,17 @@ namespace softchain::chain
   {
     if (obstacles_.empty())
       return false;
-    const std::vector<CollisionSurface::Node> &nodes = surface_->nodes();
-    for (std::size_t i = 0; i < nodes.size();)
-      {
-        const CollisionSurface::Node &node = nodes[i];
-        if (clearance_at_rest(pose, static_cast<int>(i)) > 0.0)
-          {
-            i = node.skip;
-            continue;
-          }
-        if (node.cluster < 0)
-          {
-            ++i;
-            continue;
-          }
-        const Eigen::Matrix3d &R = pose.link_rotations[node.link];
-        const Eigen::Vector3d &c = pose.joint_positions[node.link];
-        for (int k = node.begin; k < node.end; ++k)
-          for (std::size_t o = 0; o < obstacles_.size(); ++o)
-            if (obstacles_[o].body->closer_than(c + R * offsets_[k], 0.0, poses_[o]))
-              return true;
-        i = node.skip;
-      }
-    return false;
+    return surface_->walk([&](const int node) { return clearance_at_rest(pose, node) > 0.0; },
+                          [&](const int n) {
+                            const CollisionSurface::Node &node = surface_->nodes()[n];
+                            const Eigen::Matrix3d        &R    = pose.link_rotations[node.link];
+                            const Eigen::Vector3d        &c    = pose.joint_positions[node.link];
+                            for (int k = node.begin; k < node.end; ++k)
+                              for (std::size_t o = 0; o < obstacles_.size(); ++o)
+                                if (obstacles_[o].body->closer_than(c + R * offsets_[k], 0.0, poses_[o]))
+                                  return true;
+                            return false;
+                          });
   }
 
   std::vector<data::ObstacleWrench> ChainContact::obstacle_wrenches() const

@@ -310,7 +310,8 @@ namespace softchain::chain
     const int           n = chain_.n_joints();
     Eigen::VectorXd     d = Eigen::VectorXd::Zero(chain_.n_angles());
     std::vector<double> ds(n, 0.0), full(n), change(n);
-    predict_active_set(d, ds, active);
+    for (std::size_t c = 0; c < active.size(); ++c) // predicted at d = 0: the points inside
+      active[c] = gaps_[c] < 0.0;
     std::vector<char> next;
     for (int pass = 0; pass < 10; ++pass)
       {
@@ -320,7 +321,7 @@ namespace softchain::chain
         for (const SkinPrediction &s : skin_predictions_)
           full[s.link] = -(s.gamma + s.u.dot(twists_[s.link])) / s.D;
         next = active;
-        if (!predict_active_set(direction_, full, next))
+        if (!predict_active_set(twists_, full, next))
           return; // A holds at the quadratic's minimiser: it is m's
         const Eigen::VectorXd step = direction_ - d;
         for (int b = 0; b < n; ++b)
@@ -334,7 +335,10 @@ namespace softchain::chain
         if (t == 1.0)
           active.swap(next);
         else
-          predict_active_set(d, ds, active);
+          {
+            link_twists(d, twists_);
+            predict_active_set(twists_, ds, active);
+          }
       }
     direction_ = d;
   }
@@ -438,17 +442,17 @@ namespace softchain::chain
       }
   }
 
-  // The candidates predicted inside at (d, ds), g_c + v_c d + a_c ds_b < 0.
+  // The candidates predicted inside at (d, ds), g_c + v_c d + a_c ds_b < 0,
+  // with the links' twists under d.
   // Returns whether the set changed.
-  bool ChainEquilibrium::predict_active_set(const Eigen::VectorXd &d, const std::vector<double> &ds,
-                                            std::vector<char> &active)
+  bool ChainEquilibrium::predict_active_set(const std::vector<LinkWrenchStiffness::Vector6d> &twists,
+                                            const std::vector<double> &ds, std::vector<char> &active) const
   {
-    link_twists(d, twists_);
     bool changed = false;
     for (std::size_t c = 0; c < active.size(); ++c)
       {
         const int  b      = near_[c].link;
-        const bool inside = gaps_[c] + near_rows_[c].dot(twists_[b]) + alignment_[c] * ds[b] < 0.0;
+        const bool inside = gaps_[c] + near_rows_[c].dot(twists[b]) + alignment_[c] * ds[b] < 0.0;
         if (inside != bool(active[c]))
           {
             active[c] = inside;
@@ -471,27 +475,23 @@ namespace softchain::chain
   void ChainEquilibrium::limit_surface_motion()
   {
     link_twists(direction_, twists_);
-    const std::vector<CollisionSurface::Node> &nodes = model_.collision_surface()->nodes();
-    double ratio = 1.0; // the largest motion over what a cluster may move, where above 1
-    for (std::size_t i = 0; i < nodes.size();)
-      {
-        const CollisionSurface::Node   &node   = nodes[i];
+    const CollisionSurface &surface = *model_.collision_surface();
+    double ratio = 1.0, bound = 0.0; // the largest motion over what a cluster may move, where above 1
+    surface.walk(
+      [&](const int i) {
+        const int                       link   = surface.nodes()[i].link;
         const CollisionSurface::Sphere &sphere = contact_.spheres()[i];
-        const Eigen::Vector3d           w      = twists_[node.link].head<3>();
-        const Eigen::Vector3d           v      = twists_[node.link].tail<3>();
-        const Eigen::Vector3d centre = pose_.joint_positions[node.link] + pose_.link_rotations[node.link] * sphere.centre;
+        const Eigen::Vector3d           w      = twists_[link].head<3>();
+        const Eigen::Vector3d           v      = twists_[link].tail<3>();
+        const Eigen::Vector3d centre = pose_.joint_positions[link] + pose_.link_rotations[link] * sphere.centre;
         const double motion = (v + w.cross(centre)).norm() + w.norm() * sphere.radius;
-        const double bound  = motion / std::max(contact_margin_, contact_.clearance(pose_, static_cast<int>(i)));
-        if (bound <= ratio)
-          i = node.skip;
-        else if (node.cluster < 0)
-          ++i;
-        else
-          {
-            ratio = bound;
-            i     = node.skip;
-          }
-      }
+        bound               = motion / std::max(contact_margin_, contact_.clearance(pose_, i));
+        return bound <= ratio;
+      },
+      [&](int) {
+        ratio = bound; // the cluster's own, just computed
+        return false;
+      });
     direction_ /= ratio;
   }
 

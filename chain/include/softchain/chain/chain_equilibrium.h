@@ -144,7 +144,8 @@ namespace softchain::chain
     void   dense_solve(const Eigen::VectorXd &b);
     void   add_skin_rows(const std::vector<char> &active);
     void   link_twists(const Eigen::VectorXd &d, std::vector<LinkWrenchStiffness::Vector6d> &twists) const;
-    bool   predict_active_set(const Eigen::VectorXd &d, const std::vector<double> &ds, std::vector<char> &active);
+    bool   predict_active_set(const std::vector<LinkWrenchStiffness::Vector6d> &twists, const std::vector<double> &ds,
+                              std::vector<char> &active) const;
     void   limit_surface_motion();
     bool   line_search(Eigen::VectorXd &q);
     std::string range_violation(const Eigen::VectorXd &q) const;

@@ -83,6 +83,26 @@ namespace softchain::chain
     // node 0, stepping to node + 1 to descend and to `skip` past a far
     // branch, and meets the clusters in their order.
     const std::vector<Node> &nodes() const { return nodes_; }
+    // Walks the trees: skips the subtree of every node i for which far(i)
+    // holds, calls reached(i) for every cluster's node it comes to, and
+    // stops at the first for which that returns true (then returns true).
+    template <class Far, class Reached>
+    bool walk(const Far &far, const Reached &reached) const
+    {
+      for (std::size_t i = 0; i < nodes_.size();)
+        {
+          const int node = static_cast<int>(i);
+          if (far(node))
+            i = nodes_[i].skip;
+          else if (nodes_[i].cluster < 0)
+            ++i;
+          else if (reached(node))
+            return true;
+          else
+            i = nodes_[i].skip;
+        }
+      return false;
+    }
     // Each node's sphere, holding its points at every pressure of the
     // interval of tabulated pressures that holds `pressure` (beyond the
     // table: of its end).
