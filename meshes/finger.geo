@@ -13,7 +13,8 @@
 // The body is split into 3 x 3 x 3 blocks by the stations
 //   x: 0, fill, L - cap, L      y: 0, bottom, h - d, h      z: -w/2, -w/2 + d, w/2 - d, w/2
 // and the centre block of the middle section is the cavity. hex = 1 meshes
-// every block as a transfinite, recombined hexahedral grid; hex = 0 fills the
+// every block as a transfinite, recombined hexahedral grid (cells of size
+// along x, default size, and size across); hex = 0 fills the
 // same blocks with unstructured tetrahedra (gmsh's HXT mesher) of size at
 // most size.
 
@@ -29,7 +30,8 @@ DefineConstant[
   cap    = {0.0025, Name "tip cap thickness"},
   size   = {0.004,  Name "element size"},
   hex    = {0,      Name "hexahedra"},
-  layers = {1,      Name "elements across the walls"}
+  layers = {1,      Name "elements across the walls"},
+  along  = {0,      Name "hexahedra: element size along the finger (0: size)"}
 ];
 
 sx[] = {0, fill, L - cap, L};
@@ -122,9 +124,11 @@ Physical Volume("silicone") = {silicone[]};
 
 If (hex)
   // One node count per interval and direction (opposite block edges must
-  // match), from the longest edge of that interval.
+  // match), from the longest edge of that interval; along the finger of
+  // size `along` where that is given.
+  size_x = along > 0 ? along : size;
   For i In {0:2}
-    Transfinite Curve{1001 + 16 * i : 1016 + 16 * i} = Ceil((sx[i + 1] - sx[i]) / size) + 1;
+    Transfinite Curve{1001 + 16 * i : 1016 + 16 * i} = Ceil((sx[i + 1] - sx[i]) / size_x) + 1;
   EndFor
   hmax = h_base > h_tip ? h_base : h_tip;
   wmax = w_base > w_tip ? w_base : w_tip;

@@ -38,6 +38,7 @@ namespace softchain::app
     {
       std::string name;
       double      mesh_size;
+      double      mesh_size_along; // along the finger (0: mesh_size)
       int         wall_layers;
       bool        sheets;
     };
@@ -54,7 +55,8 @@ namespace softchain::app
     Solved solve(const Parameters &prm, const Discretisation &d, ConditionalOStream &out)
     {
       Parameters variant = prm;
-      variant.finger_design->mesh_sizes[variant.finger_design->resolution] = d.mesh_size;
+      variant.finger_design->mesh_sizes[variant.finger_design->resolution]       = d.mesh_size;
+      variant.finger_design->mesh_sizes_along[variant.finger_design->resolution] = d.mesh_size_along;
       variant.finger_design->wall_layers  = d.wall_layers;
       variant.finger_design->fibre_sheets = d.sheets;
       FingerMesh mesh;
@@ -66,7 +68,10 @@ namespace softchain::app
       const Solved solved{d, static_cast<unsigned int>(solver.space().dof_handler.n_dofs()),
                           result.wall_time, result.converged,
                           mean_boundary_displacement(solver.space(), solver.displacement(), boundary::tip)};
-      out << "  " << d.name << ": " << 1e3 * d.mesh_size << " mm, " << d.wall_layers
+      out << "  " << d.name << ": " << 1e3 * d.mesh_size << " mm";
+      if (d.mesh_size_along > 0)
+        out << " (" << 1e3 * d.mesh_size_along << " mm along the finger)";
+      out << ", " << d.wall_layers
           << " across the walls, " << solved.dofs << " DoFs, "
           << (result.converged ? "converged" : "FAILED: " + result.reason) << ", " << result.wall_time
           << " s, tip displacement [mm] " << 1e3 * solved.tip << '\n';
@@ -159,9 +164,12 @@ namespace softchain::app
         << "on three finer ones with fibre sheets:\n";
 
     std::vector<Solved> runs;
-    runs.push_back(solve(prm, {"design", h, design.wall_layers, design.fibre_sheets}, out));
+    // A design with a size of its own along the finger is refined in both
+    // directions by the same ratio.
+    const double along = design.mesh_sizes_along[design.resolution];
+    runs.push_back(solve(prm, {"design", h, along, design.wall_layers, design.fibre_sheets}, out));
     for (const double refinement : {1.0, std::sqrt(0.5), 0.5})
-      runs.push_back(solve(prm, {"sheets", refinement * h, 2, true}, out));
+      runs.push_back(solve(prm, {"sheets", refinement * h, refinement * along, 2, true}, out));
     for (const Solved &run : runs)
       if (!run.converged)
         {

@@ -50,6 +50,9 @@ namespace softchain::geometry
       section.declare("Mesh sizes",
                       number(sizes[0]) + ", " + number(sizes[1]) + ", " + number(sizes[2]),
                       "largest element size (m) at resolution 0, 1, 2");
+      section.declare("Mesh sizes along the finger", "",
+                      "hex: element size (m) along the finger at resolution 0, 1, 2; "
+                      "empty: Mesh sizes");
       section.declare("Wall layers", "1",
                       "hex: at least this many elements across the walls and the bottom layer");
       for (const auto &[name, member] : dimension_entries)
@@ -100,6 +103,13 @@ namespace softchain::geometry
       require(sizes.size() == 3 && *std::min_element(sizes.begin(), sizes.end()) > 0.0, section,
               "Mesh sizes", "expected three positive sizes (resolution 0, 1, 2)");
       std::copy(sizes.begin(), sizes.end(), design.mesh_sizes.begin());
+      const std::vector<double> along = section.get_double_list("Mesh sizes along the finger");
+      require(along.empty() || (along.size() == 3 && *std::min_element(along.begin(), along.end()) > 0.0),
+              section, "Mesh sizes along the finger",
+              "expected nothing or three positive sizes (resolution 0, 1, 2)");
+      require(along.empty() || design.hexahedra, section, "Mesh sizes along the finger",
+              "a size along the finger needs Element shape = hex");
+      std::copy(along.begin(), along.end(), design.mesh_sizes_along.begin());
       design.wall_layers = section.get_integer("Wall layers");
       require(design.wall_layers >= 1 && design.wall_layers <= 8, section, "Wall layers",
               "expected 1 to 8 elements across a wall");

@@ -22,10 +22,13 @@ namespace softchain::geometry
                      {"w_tip", d.tip_width},   {"h_tip", d.tip_height},  {"d", d.wall},
                      {"bottom", d.bottom},     {"fill", d.base_fill},    {"cap", d.tip_cap},
                      {"size", design.mesh_size()}, {"hex", design.hexahedra ? 1.0 : 0.0}};
-      // Named only when it changes the mesh, so that the meshes (and the
-      // databases keyed by them) of one-layer designs keep their names.
+      // Named only when they change the mesh (layers across the walls, a size
+      // along the finger of its own), so that the job of an isotropic
+      // one-layer design lists the numbers it always did.
       if (design.wall_layers > 1)
         job.numbers.push_back({"layers", static_cast<double>(design.wall_layers)});
+      if (design.mesh_size_along() != design.mesh_size())
+        job.numbers.push_back({"along", design.mesh_size_along()});
       return job;
     }
 

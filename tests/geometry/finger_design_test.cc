@@ -43,6 +43,21 @@ TEST_CASE("the resolution picks the mesh size", "[geometry][prm]")
   CHECK(size_at("2") == 0.002);
 }
 
+TEST_CASE("the size along the finger is the mesh size unless given", "[geometry][prm]")
+{
+  const std::string dir  = scratch_directory("prm_size_along");
+  const auto        read = [&](const std::string &along) {
+    return FingerDesign::read(design_variant("p10", dir, {{"Resolution", "1"},
+                                                          {"Mesh sizes", "0.01, 0.005, 0.002"},
+                                                          {"Mesh sizes along the finger", along}}));
+  };
+  const FingerDesign isotropic = read("");
+  CHECK(isotropic.mesh_size_along() == isotropic.mesh_size());
+  const FingerDesign anisotropic = read("0.02, 0.01, 0.004");
+  CHECK(anisotropic.mesh_size() == 0.005);
+  CHECK(anisotropic.mesh_size_along() == 0.01);
+}
+
 TEST_CASE("bad design parameters are named", "[geometry][prm][errors]")
 {
   const std::string dir = scratch_directory("prm_errors");
@@ -58,6 +73,10 @@ TEST_CASE("bad design parameters are named", "[geometry][prm][errors]")
   CHECK_THROWS_WITH(read("Element shape", "prism"), Contains("'Element shape'"));
   CHECK_THROWS_WITH(read("Mesh sizes", "0.01, 0.005"), Contains("'Mesh sizes'"));
   CHECK_THROWS_WITH(read("Wall layers", "0"), Contains("'Wall layers'"));
+  CHECK_THROWS_WITH(read("Mesh sizes along the finger", "0.008, 0.004"),
+                    Contains("'Mesh sizes along the finger'"));
+  CHECK_THROWS_WITH(read("Mesh sizes along the finger", "0.008, 0, 0.002"),
+                    Contains("'Mesh sizes along the finger'"));
   CHECK_THROWS_WITH(read("Reinforcement", "rope"), Contains("'Reinforcement'"));
   CHECK_THROWS_AS(read("Length", "ninety"), InputError);
 }
@@ -71,6 +90,10 @@ TEST_CASE("a parallelepiped must not taper, an STL design has no hexahedra", "[g
   CHECK_THROWS_WITH(FingerDesign::read(design_variant(
                       "p10", dir, {{"Shape", "stl"}, {"Element shape", "hex"}})),
                     Contains("'Element shape'"));
+  CHECK_THROWS_WITH(FingerDesign::read(design_variant(
+                      "p10", dir,
+                      {{"Element shape", "tet"}, {"Mesh sizes along the finger", "0.008, 0.004, 0.002"}})),
+                    Contains("'Mesh sizes along the finger'"));
   CHECK_THROWS_WITH(FingerDesign::read(design_variant(
                       "p10", dir, {{"Shape", "stl"}, {"Element shape", "tet"}})),
                     Contains("'Outer surface file'"));

@@ -40,13 +40,15 @@ namespace
 
   // `test` keeps the scratch directories of test cases apart (ctest -j).
   Meshed mesh_design(const std::string &test, const std::string &name,
-                     const std::string &element_shape, const std::string &wall_layers = "1")
+                     const std::string &element_shape, const std::string &wall_layers = "1",
+                     const std::vector<std::pair<std::string, std::string>> &p10_changes = {})
   {
     const std::string dir = scratch_directory(test + "_" + name + "_" + element_shape);
     std::vector<std::pair<std::string, std::string>> changes{{"Resolution", "0"},
                                                              {"Element shape", element_shape}};
     if (wall_layers != "1") // only p10.prm names the entry
       changes.push_back({"Wall layers", wall_layers});
+    changes.insert(changes.end(), p10_changes.begin(), p10_changes.end());
     const std::string prm = design_variant(name, dir, changes);
     GmshMesher mesher(dir + "/cache");
     Meshed     m{FingerDesign::read(prm), {}, {}};
@@ -113,6 +115,39 @@ TEST_CASE("Wall layers puts that many hexahedra across each wall", "[geometry][m
       for (auto z = z_at_base.begin(); std::next(z) != z_at_base.end(); ++z)
         CHECK(std::abs((*std::next(z) - *z) * 1e-9 - d.wall / (z_at_base.size() - 1)) <= 2e-9);
     }
+}
+
+// `Mesh sizes along the finger` changes the cells along x only: P10 with
+// 4 mm across and 8 mm along has the 8 mm mesh's 2 + 10 + 1 cells along x
+// and the 4 mm mesh's section, and its nodes along the top edge are
+// (L - fill - cap) / 10 apart over the cavity.
+TEST_CASE("a size along the finger sets the cells along it alone", "[geometry][mesh]")
+{
+  const Meshed m = mesh_design("size_along", "p10", "hex", "2",
+                               {{"Mesh sizes", "0.004, 0.004, 0.004"},
+                                {"Mesh sizes along the finger", "0.008, 0.008, 0.008"}});
+  const FingerDimensions &d = m.design.dimensions;
+  const auto cells = [](double length, double size) { return static_cast<int>(std::ceil(length / size - 1e-12)); };
+  const int  n_x      = cells(d.base_fill, 0.008) + cells(d.length - d.base_fill - d.tip_cap, 0.008) +
+                   cells(d.tip_cap, 0.008);
+  const int  n_cavity = cells(d.length - d.base_fill - d.tip_cap, 0.008);
+  const int  across_y = cells(std::max(d.base_height, d.tip_height) - d.wall - d.bottom, 0.004);
+  const int  across_z = cells(std::max(d.base_width, d.tip_width) - 2 * d.wall, 0.004);
+  const int  ny       = std::max(2, cells(d.bottom, 0.004)) + across_y + std::max(2, cells(d.wall, 0.004));
+  const int  nz       = 2 * std::max(2, cells(d.wall, 0.004)) + across_z;
+  REQUIRE(n_x == 13);
+  CHECK(static_cast<int>(m.mesh.cells.size()) == n_x * ny * nz - n_cavity * across_y * across_z);
+  // The base's bottom edge (y = 0, z = -w/2): nodes at x = fill + k (L - fill - cap) / 10 over
+  // the cavity (to 1 nm, gmsh's transfinite interpolation).
+  std::set<long> x_on_edge;
+  for (const auto &p : m.mesh.nodes)
+    if (p.y() == 0.0 && std::abs(p.z() + 0.5 * (d.base_width + (d.tip_width - d.base_width) * p.x() / d.length)) < 1e-9 &&
+        p.x() > d.base_fill - 1e-9 && p.x() < d.length - d.tip_cap + 1e-9)
+      x_on_edge.insert(std::lround(p.x() * 1e9));
+  REQUIRE(static_cast<int>(x_on_edge.size()) == n_cavity + 1);
+  const double step = (d.length - d.base_fill - d.tip_cap) / n_cavity;
+  for (auto x = x_on_edge.begin(); std::next(x) != x_on_edge.end(); ++x)
+    CHECK(std::abs((*std::next(x) - *x) * 1e-9 - step) <= 2e-9);
 }
 
 TEST_CASE("parametric meshes carry the physical groups", "[geometry][mesh]")

@@ -59,6 +59,11 @@ namespace softchain::geometry
     int              resolution = 1; // 0 coarse, 1 default, 2 fine
     bool             hexahedra  = false;
     std::array<double, 3> mesh_sizes{{0.008, 0.004, 0.0018}}; // m, per resolution
+    // Hexahedra: the element size along the finger (x) per resolution, where
+    // it differs from mesh_sizes (0: the same); the walls' bending is resolved
+    // across the section, so an accurate mesh needs finer sections than
+    // intervals along the finger (docs/fem_accuracy.md).
+    std::array<double, 3> mesh_sizes_along{{0.0, 0.0, 0.0}};
     // Hexahedra: at least this many elements across each wall and the bottom
     // layer, however large the elements along the finger.
     int              wall_layers = 1;
@@ -71,6 +76,11 @@ namespace softchain::geometry
 
     bool   parametric() const { return shape != Shape::stl; }
     double mesh_size() const { return mesh_sizes.at(resolution); } // m
+    // m, along the finger: mesh_size() unless Mesh sizes along the finger sets it
+    double mesh_size_along() const
+    {
+      return mesh_sizes_along.at(resolution) > 0.0 ? mesh_sizes_along.at(resolution) : mesh_size();
+    }
     double length() const; // tip abscissa minus base abscissa
   };
 } // namespace softchain::geometry
