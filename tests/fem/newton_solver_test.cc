@@ -63,6 +63,8 @@ namespace
       factor_taken *= factor;
     }
     bool energy_line_search() const override { return true; }
+    bool backtracks = false;
+    bool backtrack_when_stalled() const override { return backtracks; }
 
     NewtonSystem &begin_step(double s) override
     {
@@ -115,6 +117,52 @@ TEST_CASE("Newton converges quadratically to the closed-form root", "[fem][newto
     if (history[i - 1] < 0.1)
       CHECK(history[i] <= history[i - 1] * history[i - 1]);
   CHECK(outcome.iterations == history.size() - 1);
+}
+
+namespace
+{
+  // R(x) = atan(x - 1), root x = 1: the textbook case of full Newton steps
+  // that overshoot further each time from |x0 - 1| > 1.39 (Dennis and
+  // Schnabel 1996, Ch. 6), as friction's stick and slip make a finger's
+  // steps overshoot.
+  class ArctanLaw : public HardeningSpring
+  {
+  public:
+    bool assemble(bool) override
+    {
+      ++assemblies;
+      r = std::atan(x - 1);
+      k = 1 / (1 + (x - 1) * (x - 1));
+      return true;
+    }
+    bool residual_converged(double residual, double tolerance) const override
+    {
+      return residual <= tolerance;
+    }
+    double residual_scale() const override { return 1; }
+    // Like friction, no energy: no energy line search.
+    bool energy_line_search() const override { return false; }
+  };
+} // namespace
+
+TEST_CASE("a stalled Newton backtracks on |R| where the system asks for it", "[fem][newton]")
+{
+  std::ostringstream log;
+  NewtonSolver       newton(solver_parameters(), false, log);
+  ArctanLaw          law;
+  law.s_target = 1;
+  law.x        = 2.5;
+  SECTION("full steps diverge")
+  {
+    CHECK_FALSE(newton.solve(law, true).converged());
+  }
+  SECTION("steps shortened once two iterations have not halved |R| converge")
+  {
+    law.backtracks     = true;
+    const auto outcome = newton.solve(law, true);
+    REQUIRE(outcome.converged());
+    CHECK(law.x == Approx(1.0).epsilon(1e-10));
+  }
 }
 
 TEST_CASE("Newton halves a step that inverts an element and classifies its failures",

@@ -78,6 +78,7 @@ namespace softchain::fem
     // The energy along du ignores the constraint: only a step that inverts
     // an element is shortened.
     bool   energy_line_search() const override { return false; }
+    bool   backtrack_when_stalled() const override { return solver.backtrack_when_stalled(); }
     double admissible_fraction() override { return solver.admissible_fraction(du, obstacle_motion); }
 
     // The control's path steps.

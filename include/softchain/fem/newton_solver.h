@@ -70,6 +70,10 @@ namespace softchain::fem
     // Whether the energy line search applies (else only a step that inverts
     // an element is shortened).
     virtual bool   energy_line_search() const = 0;
+    // Whether a stalled Newton shortens its steps until |R| falls
+    // (NewtonSolver::backtrack): where friction switches points between
+    // stick and slip, full steps can cycle.
+    virtual bool   backtrack_when_stalled() const = 0;
   };
 
   class NewtonSolver
@@ -109,6 +113,12 @@ namespace softchain::fem
     // inverts an element (`valid` false) is halved, at most six times.
     // Returns whether an admissible x was found (assembled, K included).
     bool line_search(NewtonSystem &system, double s0, bool valid);
+    // After a step taken where Newton had stalled: halves it, at most four
+    // times, until |R| falls below `before` (the residual it started from),
+    // and keeps the step of the smallest |R| (assembled, K included).
+    // Returns that |R|.
+    double backtrack(NewtonSystem &system, double residual, double before);
+    static bool stalled(const std::vector<double> &residuals);
     // The forcing term eta of the correction at residual |R| in the path's
     // last step (`final_state`) or a stepping stone.
     double forcing(const NewtonSystem &system, double residual, bool final_state) const;
