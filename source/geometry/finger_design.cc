@@ -5,6 +5,9 @@
 #include <softchain/geometry/text_lines.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -146,6 +149,23 @@ namespace softchain::geometry
               section, "Tip width", "a parallelepiped has Tip width/height = Base width/height");
     }
 
+    void check_cell_count(const PrmSection &section, const FingerDesign &design)
+    {
+      const double cells = design.estimated_cells();
+      if (cells <= FingerDesign::max_cells)
+        return;
+      const bool        along = design.mesh_size_along() != design.mesh_size();
+      const std::string name  = along && design.mesh_size_along() < design.mesh_size() ?
+                                  "Mesh sizes along the finger" :
+                                  "Mesh sizes";
+      std::ostringstream what;
+      what << (design.hexahedra ? "" : "at least ") << std::setprecision(2) << cells
+           << (design.hexahedra ? " hexahedra" : " tetrahedra")
+           << " at Resolution " << design.resolution << ", more than the "
+           << static_cast<long>(FingerDesign::max_cells) << " a design may have (sizes are in metres)";
+      require(false, section, name, what.str());
+    }
+
     void read_surface(const PrmSection &section, FingerDesign &design)
     {
       SurfaceDesign &s = design.surface;
@@ -172,7 +192,10 @@ namespace softchain::geometry
     design.source = file.path();
     read_mesh_choice(section, design);
     if (design.parametric())
-      read_parametric(section, design);
+      {
+        read_parametric(section, design);
+        check_cell_count(section, design);
+      }
     else
       read_surface(section, design);
     return design;
@@ -181,6 +204,25 @@ namespace softchain::geometry
   FingerDesign FingerDesign::read(const std::string &prm_path)
   {
     return read(data::PrmFile::read(prm_path));
+  }
+
+  double FingerDesign::estimated_cells() const
+  {
+    const FingerDimensions &d = dimensions;
+    const double            s = mesh_size();
+    if (!hexahedra)
+      return 6.0 * std::sqrt(2.0) * d.material_volume() / (s * s * s);
+    // meshes/finger.geo: ceil(block length / size) cells per block and
+    // direction, at least `layers` across the walls and the bottom layer.
+    const auto   cells = [](double length, double size) { return std::ceil(length / size - 1e-12); };
+    const double a = mesh_size_along(), layers = wall_layers;
+    const double cavity = cells(d.length - d.base_fill - d.tip_cap, a);
+    const double nx     = cells(d.base_fill, a) + cavity + cells(d.tip_cap, a);
+    const double across_y = cells(std::max(d.base_height, d.tip_height) - d.wall - d.bottom, s);
+    const double across_z = cells(std::max(d.base_width, d.tip_width) - 2 * d.wall, s);
+    const double ny = std::max(layers, cells(d.bottom, s)) + across_y + std::max(layers, cells(d.wall, s));
+    const double nz = 2 * std::max(layers, cells(d.wall, s)) + across_z;
+    return nx * ny * nz - cavity * across_y * across_z;
   }
 
   double FingerDesign::length() const

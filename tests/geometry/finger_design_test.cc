@@ -77,6 +77,12 @@ TEST_CASE("bad design parameters are named", "[geometry][prm][errors]")
                     Contains("'Mesh sizes along the finger'"));
   CHECK_THROWS_WITH(read("Mesh sizes along the finger", "0.008, 0, 0.002"),
                     Contains("'Mesh sizes along the finger'"));
+  // Sizes typed in millimetres instead of metres, or a slip of the exponent:
+  // refused before gmsh meshes for hours (P10's hexahedra at 8e-6 m: 7e14).
+  CHECK_THROWS_WITH(read("Mesh sizes", "8e-6, 4e-6, 1.8e-6"),
+                    Contains("'Mesh sizes'") && Contains("hexahedra"));
+  CHECK_THROWS_WITH(read("Mesh sizes along the finger", "1e-7, 1e-7, 1e-7"),
+                    Contains("'Mesh sizes along the finger'"));
   CHECK_THROWS_WITH(read("Reinforcement", "rope"), Contains("'Reinforcement'"));
   CHECK_THROWS_AS(read("Length", "ninety"), InputError);
 }
@@ -94,6 +100,9 @@ TEST_CASE("a parallelepiped must not taper, an STL design has no hexahedra", "[g
                       "p10", dir,
                       {{"Element shape", "tet"}, {"Mesh sizes along the finger", "0.008, 0.004, 0.002"}})),
                     Contains("'Mesh sizes along the finger'"));
+  CHECK_THROWS_WITH(FingerDesign::read(design_variant(
+                      "p10", dir, {{"Element shape", "tet"}, {"Mesh sizes", "1e-4, 1e-4, 1e-4"}})),
+                    Contains("'Mesh sizes'") && Contains("tetrahedra"));
   CHECK_THROWS_WITH(FingerDesign::read(design_variant(
                       "p10", dir, {{"Shape", "stl"}, {"Element shape", "tet"}})),
                     Contains("'Outer surface file'"));
