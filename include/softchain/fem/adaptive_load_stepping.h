@@ -8,7 +8,8 @@
 //    I_d = 5 desired iterations: an easy step lets the next grow, a hard one
 //    shrinks it before it fails;
 //  - a step that failed is retried from the last converged state with a
-//    quarter of the increment, until it falls below Minimum load step.
+//    quarter of the increment, until it falls below Minimum load step (or
+//    a path's own smallest step).
 // Measured against growing by 1.5 after at most 8 of 12 iterations and
 // never shrinking: docs/results.md, "The load step sized for five Newton
 // iterations".
@@ -23,6 +24,8 @@ namespace softchain::fem
   public:
     // `first_step` is the first increment of s (e.g. Solver/Initial load step).
     AdaptiveLoadStepping(const SolverParameters &prm, double first_step);
+    // The same, given up once a cut step falls below `min_step` instead.
+    AdaptiveLoadStepping(const SolverParameters &prm, double first_step, double min_step);
 
     bool   finished() const { return s >= 1.0; }
     // The path parameter of the last converged state (0 before any).
@@ -35,12 +38,13 @@ namespace softchain::fem
     // The attempt at next() converged in `newton_iterations`: s moves there.
     void converged(unsigned int newton_iterations);
     // The attempt at next() failed: the step is cut. Returns false when the
-    // cut step is below Minimum load step (the path is given up).
+    // cut step is below the smallest step (the path is given up).
     bool failed();
 
   private:
     static constexpr double desired_iterations = 5;
     const SolverParameters &prm;
+    const double            min_step;
     double                  s = 0.0;
     double                  increment;
   };

@@ -12,7 +12,7 @@
 // The path ends when s reaches 1, when the problem has reached its goal
 // before (goal_reached(): displacement control stops where the forces
 // reach theirs), when a cut step falls below
-// Solver/Minimum load step, or after Solver/Maximum load step attempts
+// Solver/Minimum load step (or the path's own smallest step), or after Solver/Maximum load step attempts
 // (converged and failed steps together): every input ends in bounded time.
 #include <softchain/fem/newton_solver.h>
 #include <softchain/fem/parameters.h>
@@ -64,8 +64,12 @@ namespace softchain::fem
       bool                 finished() const { return stop == Stop::finished; }
     };
 
-    // `name` names s in the log ("load factor", "volume factor").
+    // `name` names s in the log ("load factor", "volume factor"); the path
+    // is given up once a cut step falls below `min_step` (default: Solver/
+    // Minimum load step).
     LoadPath(const Parameters &prm, double first_step, std::string name, std::ostream &log);
+    LoadPath(const Parameters &prm, double first_step, double min_step, std::string name,
+             std::ostream &log);
 
     // From s = 0 to 1; appends every Newton iterate's |R| to `history`.
     Result follow(LoadPathProblem &problem, std::vector<double> *history = nullptr);
@@ -73,6 +77,7 @@ namespace softchain::fem
   private:
     const Parameters &prm;
     const double      first_step;
+    const double      min_step;
     const std::string name;
     std::ostream     &log;
   };

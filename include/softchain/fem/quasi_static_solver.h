@@ -71,9 +71,12 @@ namespace softchain::fem
 
     // Moves the current state (rest, or the last converged state) to
     // `target` along the straight load path between them, the first load
-    // step `first_step` of the path (default: Solver/Initial load step).
+    // step `first_step` of the path (default: Solver/Initial load step),
+    // given up once a cut step falls below `min_step` (default: Solver/
+    // Minimum load step).
     Result solve(const LoadState &target);
     Result solve(const LoadState &target, double first_step);
+    Result solve(const LoadState &target, double first_step, double min_step);
     // Back to the undeformed state with no load.
     void reset();
 
@@ -271,6 +274,6 @@ namespace softchain::fem
     bool          predict_tip_motion(const LoadState &state);
     // Sets result.failure and result.reason of a solve that stalled.
     void          classify_failure(const std::vector<std::pair<double, double>> &pv,
-                                   const LoadPath::Result &path, Result &result) const;
+                                   const LoadPath::Result &path, double min_step, Result &result) const;
   };
 } // namespace softchain::fem

@@ -61,6 +61,9 @@ namespace softchain::fem
     // initial load step scaled so that the first increment is as large as
     // that of a solve from rest (a continued sample often needs one step).
     double first_step(const data::Actuation *start, const data::Actuation &target) const;
+    // The smallest load step of load control from the current state to
+    // `target`: larger where displacement control can take over.
+    double smallest_load_step(const LoadState &target) const;
     // A volume-controlled sample: the cavity inflated to volume `target`
     // from the current state; `pressure` receives the pressure reached.
     QuasiStaticSolver::Result inflate(double target, double &pressure);

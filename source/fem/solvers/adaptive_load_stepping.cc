@@ -6,7 +6,13 @@
 namespace softchain::fem
 {
   AdaptiveLoadStepping::AdaptiveLoadStepping(const SolverParameters &prm, const double first_step)
+    : AdaptiveLoadStepping(prm, first_step, prm.min_load_step)
+  {}
+
+  AdaptiveLoadStepping::AdaptiveLoadStepping(const SolverParameters &prm, const double first_step,
+                                             const double min_step)
     : prm(prm)
+    , min_step(min_step)
     , increment(first_step)
   {}
 
@@ -33,6 +39,6 @@ namespace softchain::fem
   bool AdaptiveLoadStepping::failed()
   {
     increment *= 0.25;
-    return increment >= prm.min_load_step;
+    return increment >= min_step;
   }
 } // namespace softchain::fem

@@ -5,8 +5,14 @@ namespace softchain::fem
 {
   LoadPath::LoadPath(const Parameters &prm, const double first_step, std::string name,
                      std::ostream &log)
+    : LoadPath(prm, first_step, prm.solver.min_load_step, std::move(name), log)
+  {}
+
+  LoadPath::LoadPath(const Parameters &prm, const double first_step, const double min_step,
+                     std::string name, std::ostream &log)
     : prm(prm)
     , first_step(first_step)
+    , min_step(min_step)
     , name(std::move(name))
     , log(log)
   {}
@@ -14,7 +20,7 @@ namespace softchain::fem
   LoadPath::Result LoadPath::follow(LoadPathProblem &problem, std::vector<double> *history)
   {
     Result               result;
-    AdaptiveLoadStepping path(prm.solver, first_step);
+    AdaptiveLoadStepping path(prm.solver, first_step, min_step);
     NewtonSolver         newton(prm.solver, prm.output.verbose, log);
     while (!path.finished())
       {

@@ -627,6 +627,12 @@ namespace softchain::fem
 
   QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target, const double first_step)
   {
+    return solve(target, first_step, prm.solver.min_load_step);
+  }
+
+  QuasiStaticSolver::Result QuasiStaticSolver::solve(const LoadState &target, const double first_step,
+                                                     const double min_step)
+  {
     if (target.pressure != 0.0 && !pressure->has_cavity())
       throw data::InputError("a pressure of " + std::to_string(target.pressure) +
                              " Pa needs the mesh's physical group 'cavity'; this mesh has none");
@@ -634,13 +640,14 @@ namespace softchain::fem
     prepare_tip_motion(target);
     Result       result;
     StraightPath problem(*this, target);
-    const auto   path = LoadPath(prm, first_step, "load factor", log).follow(problem, &result.residual_history);
+    const auto   path = LoadPath(prm, first_step, min_step, "load factor", log)
+                           .follow(problem, &result.residual_history);
     result.converged           = path.finished();
     result.load_factor_reached = path.reached;
     result.newton_iterations   = path.newton_iterations;
     result.load_steps          = path.load_steps;
     if (!path.finished())
-      classify_failure(problem.pressure_volume(), path, result);
+      classify_failure(problem.pressure_volume(), path, min_step, result);
     result.wall_time = seconds_since(start_time);
     return result;
   }
@@ -649,7 +656,8 @@ namespace softchain::fem
   // reached a limit point (balloon instability, dp/dV -> 0): a physical end
   // of pressure control, not a numerical failure.
   void QuasiStaticSolver::classify_failure(const std::vector<std::pair<double, double>> &pv,
-                                           const LoadPath::Result &path, Result &result) const
+                                           const LoadPath::Result &path, const double min_step,
+                                           Result &result) const
   {
     std::ostringstream why;
     const double       p_last = pv.back().first;
@@ -680,7 +688,7 @@ namespace softchain::fem
           }
       }
     why << (inverted ? "elements inverted (J <= 0)" : "Newton did not converge")
-        << " even with load steps below " << prm.solver.min_load_step << " (last converged pressure "
+        << " even with load steps below " << min_step << " (last converged pressure "
         << p_last << " Pa)";
     result.failure = inverted ? Failure::inverted : Failure::not_converged;
     result.reason  = why.str();
