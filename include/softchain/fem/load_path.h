@@ -11,8 +11,8 @@
 //
 // The path ends when s reaches 1, when the problem has reached its goal
 // before (goal_reached(): displacement control stops where the forces
-// reach theirs), when a cut step falls below
-// Solver/Minimum load step (or the path's own smallest step), or after Solver/Maximum load step attempts
+// reach theirs), when a cut step falls below Solver/Minimum load step (or
+// the path's own smallest step), or after Solver/Maximum load step attempts
 // (converged and failed steps together): every input ends in bounded time.
 #include <softchain/fem/newton_solver.h>
 #include <softchain/fem/parameters.h>
