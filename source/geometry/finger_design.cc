@@ -154,10 +154,8 @@ namespace softchain::geometry
       const double cells = design.estimated_cells();
       if (cells <= FingerDesign::max_cells)
         return;
-      const bool        along = design.mesh_size_along() != design.mesh_size();
-      const std::string name  = along && design.mesh_size_along() < design.mesh_size() ?
-                                  "Mesh sizes along the finger" :
-                                  "Mesh sizes";
+      const std::string name = design.mesh_size_along() < design.mesh_size() ? "Mesh sizes along the finger" :
+                                                                                "Mesh sizes";
       std::ostringstream what;
       what << (design.hexahedra ? "" : "at least ") << std::setprecision(2) << cells
            << (design.hexahedra ? " hexahedra" : " tetrahedra")
