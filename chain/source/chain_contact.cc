@@ -63,8 +63,8 @@ namespace softchain::chain
     else
       {
         std::fill(skin_shift_.begin(), skin_shift_.end(), 0.0);
-        std::vector<Touch> &near = near_at_rest_;
-        candidates(pose, 0.0, near);
+        std::vector<Touch> &near = near_at_rest_; // their gaps and normals (their curvature: touch_inside below)
+        candidates(pose, 0.0, near, false);
         double reach = 0.0;
         for (const Touch &t : near)
           {
@@ -73,22 +73,21 @@ namespace softchain::chain
               reach = std::max(reach, -t.gap / a);
           }
         if (reach > 0.0)
-          candidates(pose, reach, near);
+          candidates(pose, reach, near, false);
         touches_.clear();
         for (auto first = near.begin(); first != near.end();)
           {
             const int  link = first->link;
             const auto last = std::find_if(first, near.end(), [&](const Touch &t) { return t.link != link; });
             const Points group{&*first, static_cast<std::size_t>(last - first)};
-            const double s = skin_compliance_[link] > 0.0 ? skin_shift(pose, link, group) : 0.0;
+            const double s = skin_compliance_[link] > 0.0 ? skin_shift(link, group) : 0.0;
             skin_shift_[link] = s;
             energy += skin_compliance_[link] > 0.0 ? 0.5 * s * s / skin_compliance_[link] : 0.0;
             const Eigen::Vector3d shift = s * skin_direction(pose, link);
             for (const Touch &point : group)
               {
                 Touch touch;
-                if (touch_inside(point.position + (gives(point) ? shift : Eigen::Vector3d::Zero()), link,
-                             point.point, point.obstacle, touch))
+                if (gives(point) ? touch_inside(point, s, shift, touch) : touch_inside(point, 0.0, {0, 0, 0}, touch))
                   touches_.push_back(touch);
               }
             first = last;
@@ -120,36 +119,46 @@ namespace softchain::chain
     return d.gap < 0.0;
   }
 
-  // The gap alone first: most points tested lie outside, and the distance's
-  // normal and curvature cost several times as much.
-  bool ChainContact::touch_inside(const Eigen::Vector3d &x, const int link, const int k, const int o,
+  // The gap alone first, seen from the link: most points tested lie
+  // outside, and the distance's normal and curvature cost several times as much.
+  bool ChainContact::touch_inside(const Touch &point, const double s, const Eigen::Vector3d &shift,
                                   Touch &touch) const
   {
-    return obstacles_[o].body->closer_than(x, 0.0, poses_[o]) && touch_at(x, link, k, o, touch);
+    const Eigen::Vector3d L = offsets_[point.point] + Eigen::Vector3d(0.0, s, 0.0);
+    return framed(point.link, point.obstacle).closer_than(L, 0.0) &&
+           touch_at(point.position + shift, point.link, point.point, point.obstacle, touch);
   }
 
   // E'(s) = k_s s + sum_k k_c min(g_k(s), 0) a_k(s) is increasing where the
   // points' normals lie along d (a_k >= 0, plane and round obstacles alike
   // to first order), so the root is bracketed from s = 0 towards -E'(0) and
   // found by Newton's method, bisecting where a step leaves the bracket.
-  double ChainContact::skin_shift(const ChainPose &pose, const int link, const Points near) const
+  double ChainContact::skin_shift(const int link, const Points near) const
   {
-    const Eigen::Vector3d d   = skin_direction(pose, link);
-    const double          k_s = 1.0 / skin_compliance_[link];
-    double                scale = 0.0;
+    const double k_s = 1.0 / skin_compliance_[link];
+    double       scale = 0.0;
+    // In the link's frame (the pose's, frame_obstacles): the point at
+    // L_k + s e_y, d = e_y, a = n . e_y.
+    const Eigen::Vector3d e_y = Eigen::Vector3d::UnitY();
     const auto            slope = [&](const double s, double &curvature) {
       double value = k_s * s;
       curvature    = k_s;
       scale        = std::abs(value);
       for (const Touch &point : near)
         {
-          Touch t;
-          if (!gives(point) || !touch_inside(point.position + s * d, link, point.point, point.obstacle, t))
+          if (!gives(point))
             continue;
-          const double a = t.normal.dot(d);
-          value += stiffness_ * t.gap * a;
-          scale += std::abs(stiffness_ * t.gap * a);
-          curvature += stiffness_ * (a * a + t.gap * d.dot(t.curvature * d));
+          const geometry::ObstacleInFrame &seen = framed(link, point.obstacle);
+          const Eigen::Vector3d            L    = offsets_[point.point] + s * e_y;
+          if (!seen.closer_than(L, 0.0))
+            continue;
+          Eigen::Vector3d n;
+          double          bending = 0.0;
+          const double    g       = seen.gap_normal_and_curvature(L, e_y, n, bending);
+          const double    a       = n.y();
+          value += stiffness_ * g * a;
+          scale += std::abs(stiffness_ * g * a);
+          curvature += stiffness_ * (a * a + g * bending);
         }
       return value;
     };
@@ -324,11 +333,12 @@ namespace softchain::chain
     near.clear();
     if (obstacles_.empty())
       return;
+    frame_obstacles(pose);
     const std::vector<CollisionSurface::Node> &nodes = surface_->nodes();
     for (std::size_t i = 0; i < nodes.size();)
       {
         const CollisionSurface::Node &node = nodes[i];
-        if (clearance(pose, static_cast<int>(i)) > margin)
+        if (framed_clearance(static_cast<int>(i)) - skin_reach(node.link) > margin)
           i = node.skip;
         else if (node.cluster < 0)
           ++i;
@@ -348,17 +358,17 @@ namespace softchain::chain
     const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
     const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
     const Eigen::Vector3d  skin(0.0, s, 0.0);
-    const Eigen::Vector3d  centre = c + R * sphere.centre;
     for (std::size_t o = 0; o < obstacles_.size(); ++o)
       {
-        const geometry::Obstacle &obstacle = obstacles_[o];
-        if (obstacle.body->gap(centre, poses_[o]) > sphere.radius + std::abs(s) + margin)
+        const geometry::ObstacleInFrame &seen = framed(cluster.link, static_cast<int>(o));
+        if (seen.gap(sphere.centre) > sphere.radius + std::abs(s) + margin)
           continue;
         for (int k = cluster.begin; k < cluster.end; ++k)
           {
-            const Eigen::Vector3d x = c + R * (surface_->gives(k) ? offsets_[k] + skin : offsets_[k]);
-            if (!obstacle.body->closer_than(x, margin, poses_[o]))
+            const Eigen::Vector3d L = surface_->gives(k) ? Eigen::Vector3d(offsets_[k] + skin) : offsets_[k];
+            if (!seen.closer_than(L, margin))
               continue;
+            const Eigen::Vector3d x = c + R * L;
             if (with_curvature)
               {
                 near.emplace_back();
@@ -366,7 +376,8 @@ namespace softchain::chain
                 continue;
               }
             Eigen::Vector3d n;
-            const double    g = obstacle.body->gap_and_normal(x, n, poses_[o]);
+            const double    g = seen.gap_and_normal(L, n);
+            n                 = R * n;
             near.push_back({cluster.link, k, static_cast<int>(o), x, n,
                             Eigen::Vector3d(-stiffness_ * std::min(g, 0.0) * n), g, Eigen::Matrix3d::Zero()});
           }
@@ -376,7 +387,32 @@ namespace softchain::chain
   double ChainContact::clearance(const ChainPose &pose, const int node) const
   {
     const int link = surface_->nodes()[node].link;
-    return clearance_at_rest(pose, node) - (has_skin() ? std::abs(skin_shift_[link]) : 0.0);
+    return clearance_at_rest(pose, node) - skin_reach(link);
+  }
+
+  void ChainContact::frame_obstacles(const ChainPose &pose) const
+  {
+    const std::size_t n_links = pose.link_rotations.size();
+    framed_.resize(n_links * obstacles_.size());
+    for (std::size_t b = 0; b < n_links; ++b)
+      for (std::size_t o = 0; o < obstacles_.size(); ++o)
+        framed_[b * obstacles_.size() + o] =
+          obstacles_[o].body->seen_from(pose.link_rotations[b], pose.joint_positions[b], poses_[o]);
+  }
+
+  double ChainContact::framed_clearance(const int node) const
+  {
+    const int                       link   = surface_->nodes()[node].link;
+    const CollisionSurface::Sphere &sphere = (*spheres_)[node];
+    double                          nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+      nearest = std::min(nearest, framed(link, static_cast<int>(o)).gap(sphere.centre));
+    return nearest - sphere.radius;
+  }
+
+  double ChainContact::skin_reach(const int link) const
+  {
+    return has_skin() ? std::abs(skin_shift_[link]) : 0.0;
   }
 
   double ChainContact::clearance_at_rest(const ChainPose &pose, const int node) const
@@ -397,14 +433,13 @@ namespace softchain::chain
   {
     if (obstacles_.empty())
       return false;
-    return surface_->walk([&](const int node) { return clearance_at_rest(pose, node) > 0.0; },
+    frame_obstacles(pose);
+    return surface_->walk([&](const int node) { return framed_clearance(node) > 0.0; },
                           [&](const int n) {
                             const CollisionSurface::Node &node = surface_->nodes()[n];
-                            const Eigen::Matrix3d        &R    = pose.link_rotations[node.link];
-                            const Eigen::Vector3d        &c    = pose.joint_positions[node.link];
                             for (int k = node.begin; k < node.end; ++k)
                               for (std::size_t o = 0; o < obstacles_.size(); ++o)
-                                if (obstacles_[o].body->closer_than(c + R * offsets_[k], 0.0, poses_[o]))
+                                if (framed(node.link, static_cast<int>(o)).closer_than(offsets_[k], 0.0))
                                   return true;
                             return false;
                           });

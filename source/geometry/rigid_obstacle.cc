@@ -80,6 +80,12 @@ namespace softchain::geometry
     return gap_at_rest(x);
   }
 
+  // (y - point) . n with y = A L + b: (L - A^T (point - b)) . A^T n.
+  ObstacleInFrame PlaneObstacle::in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const
+  {
+    return {ObstacleInFrame::Kind::plane, A.transpose() * (point - b), A.transpose() * normal, 0.0};
+  }
+
   SphereObstacle::SphereObstacle(const Eigen::Vector3d &center, const double radius)
     : center(center)
     , radius(radius)
@@ -104,6 +110,11 @@ namespace softchain::geometry
   {
     const double reach = radius + distance;
     return reach > 0.0 && (x - center).squaredNorm() < reach * reach;
+  }
+
+  ObstacleInFrame SphereObstacle::in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const
+  {
+    return {ObstacleInFrame::Kind::sphere, A.transpose() * (center - b), Eigen::Vector3d::Zero(), radius};
   }
 
   CylinderObstacle::CylinderObstacle(const Eigen::Vector3d &point, const Eigen::Vector3d &axis,
@@ -138,6 +149,11 @@ namespace softchain::geometry
     const double          reach = radius + distance;
     const Eigen::Vector3d d     = x - point;
     return reach > 0.0 && (d - d.dot(axis) * axis).squaredNorm() < reach * reach;
+  }
+
+  ObstacleInFrame CylinderObstacle::in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const
+  {
+    return {ObstacleInFrame::Kind::cylinder, A.transpose() * (point - b), A.transpose() * axis, radius};
   }
 
   BoxObstacle::BoxObstacle(const Eigen::Vector3d &center, const Eigen::Vector3d &half_sizes,

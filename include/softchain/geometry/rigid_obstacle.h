@@ -12,6 +12,7 @@
 // g and n for its residual and H for its consistent tangent. The shapes are
 // analytic (Hart, "Sphere tracing", The Visual Computer 12, 1996, lists the
 // distance functions); TriangulatedObstacle is a closed triangle mesh.
+#include <softchain/geometry/obstacle_in_frame.h>
 #include <softchain/geometry/rigid_transform.h>
 
 #include <Eigen/Dense>
@@ -61,6 +62,19 @@ namespace softchain::geometry
     {
       return gap_at_rest(x) < distance;
     }
+    // The obstacle at `pose` seen from the frame whose points lie at
+    // x = c + R L (ObstacleInFrame: A = R_o^T R, b = to_rest(c)).
+    ObstacleInFrame seen_from(const Eigen::Matrix3d &R, const Eigen::Vector3d &c,
+                              const RigidTransform &pose = RigidTransform()) const
+    {
+      return in_frame(pose.is_turned() ? Eigen::Matrix3d(pose.rotation().transpose() * R) : R, pose.to_rest(c));
+    }
+    // The same from the map y = A L + b to the rest coordinates: the shape
+    // itself where it maps onto one, otherwise the general form.
+    virtual ObstacleInFrame in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const
+    {
+      return ObstacleInFrame(*this, A, b);
+    }
     // "plane", "sphere", "cylinder", "box" or "stl".
     virtual std::string shape() const = 0;
   };
@@ -74,6 +88,7 @@ namespace softchain::geometry
     SignedDistance distance_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const override;
+    ObstacleInFrame in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const override;
     std::string    shape() const override { return "plane"; }
 
   private:
@@ -89,6 +104,7 @@ namespace softchain::geometry
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const override;
     bool           closer_than_at_rest(const Eigen::Vector3d &x, double distance) const override;
+    ObstacleInFrame in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const override;
     std::string    shape() const override { return "sphere"; }
 
   private:
@@ -107,6 +123,7 @@ namespace softchain::geometry
     double         gap_at_rest(const Eigen::Vector3d &x) const override;
     double         gap_and_normal_at_rest(const Eigen::Vector3d &x, Eigen::Vector3d &normal) const override;
     bool           closer_than_at_rest(const Eigen::Vector3d &x, double distance) const override;
+    ObstacleInFrame in_frame(const Eigen::Matrix3d &A, const Eigen::Vector3d &b) const override;
     std::string    shape() const override { return "cylinder"; }
 
   private:

@@ -171,14 +171,30 @@ namespace softchain::chain
     };
     // s_b of one link from its points near the obstacles (at s = 0):
     // E'(s) = k_s s + sum k_c <g_k(s)>- a_k(s) = 0, safeguarded Newton.
-    double skin_shift(const ChainPose &pose, int link, Points near) const;
+    double skin_shift(int link, Points near) const;
     // The touch of surface point k of `link` against obstacle o at x, or
     // false if x is outside.
     bool touch_at(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
-    // The same for a point inside only: false, and `touch` untouched, outside.
-    bool touch_inside(const Eigen::Vector3d &x, int link, int k, int o, Touch &touch) const;
+    // The same for a candidate `point` (at its position with the skins at
+    // rest) whose skin has moved it by s along the link's e_y (`shift` =
+    // s d_b in the world), if inside only: false, and `touch` untouched,
+    // outside. At the pose of the last frame_obstacles.
+    bool touch_inside(const Touch &point, double s, const Eigen::Vector3d &shift, Touch &touch) const;
     // clearance with the skins at rest (s_b = 0).
     double clearance_at_rest(const ChainPose &pose, int node) const;
+    // The obstacles seen from every link's frame at `pose` (framed_): a
+    // search then tests the points' offsets L_k and the spheres' centres
+    // as they are, without mapping each to the world and on to the
+    // obstacle's rest frame.
+    void frame_obstacles(const ChainPose &pose) const;
+    const geometry::ObstacleInFrame &framed(int link, int obstacle) const
+    {
+      return framed_[link * obstacles_.size() + obstacle];
+    }
+    // clearance_at_rest at the pose of the last frame_obstacles.
+    double framed_clearance(int node) const;
+    // |s_b|: how far link b's skin has moved its points (0 without skins).
+    double skin_reach(int link) const;
     // Appends the points of `cluster` within `margin` of an obstacle to `near`.
     void add_candidates(const ChainPose &pose, const CollisionSurface::Cluster &cluster,
                         const CollisionSurface::Sphere &sphere, double margin, bool with_curvature,
@@ -196,6 +212,7 @@ namespace softchain::chain
     std::vector<double>             skin_compliance_; // c_b, m/N (empty: no skin)
     std::vector<double>             skin_shift_;      // s_b at the last update
     std::vector<Touch>              near_at_rest_;    // update's points near the obstacles at s = 0
+    mutable std::vector<geometry::ObstacleInFrame> framed_; // obstacle o seen from link b at [b * n_obstacles + o]
     CoulombFriction                 friction_;
   };
 } // namespace softchain::chain

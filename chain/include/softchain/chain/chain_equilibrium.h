@@ -137,6 +137,8 @@ namespace softchain::chain
     double relative_residual() const;
     void   newton_direction();
     void   contact_direction();
+    // The step of the quadratic model with the candidates within search_margin_.
+    void   model_direction();
     void   settle_active_set(bool curvature, std::vector<char> &active);
     double model_step(const Eigen::VectorXd &d, const std::vector<double> &ds, const Eigen::VectorXd &dd,
                       const std::vector<double> &dds, bool curvature);
@@ -144,6 +146,12 @@ namespace softchain::chain
     void   dense_solve(const Eigen::VectorXd &b);
     void   add_skin_rows(const std::vector<char> &active);
     void   link_twists(const Eigen::VectorXd &d, std::vector<LinkWrenchStiffness::Vector6d> &twists) const;
+    // A bound of the distance any surface point moved in the step `step`
+    // (to first order): over the links, |v_b + w_b x c| + |w_b| r of the
+    // sphere (c, r) that holds all the link's points.
+    double surface_motion(const Eigen::VectorXd &step);
+    double sphere_motion(int node) const;
+    void   next_search_margin(const Eigen::VectorXd &step);
     bool   predict_active_set(const std::vector<LinkWrenchStiffness::Vector6d> &twists, const std::vector<double> &ds,
                               std::vector<char> &active) const;
     void   limit_surface_motion();
@@ -163,9 +171,17 @@ namespace softchain::chain
     std::vector<AttachedLoad> loads_;           // sorted by link
     ChainContact              contact_;         // the load's obstacles
     LinkWrenchStiffness       link_model_;      // a contact step's rows and forces, per link
-    // Candidates of the active set: points closer than 5 % of the chain's
-    // length (on P10 the fastest of 2, 5 and 10 % at the same iterations).
+    // The widest reach of the active set's candidates: 5 % of the chain's
+    // length (on P10 the fastest of 2, 5 and 10 % at the same iterations,
+    // with every point within it a candidate at every step).
     double                    contact_margin_ = 0.0;
+    // The reach of the step's candidates (contact_direction): a few times
+    // the surface's motion in the last step (next_search_margin), so that
+    // the steps that settle an equilibrium (a fraction of a millimetre,
+    // then microns) carry the points that can touch in them, not every
+    // point within 5 % of the length; widened up to contact_margin_ where
+    // the step moves farther.
+    double                    search_margin_ = 0.0;
     std::vector<ChainContact::Touch> near_;     // the step's active-set candidates
     std::vector<LinkWrenchStiffness::Vector6d> near_rows_; // their normal rows g_c (LinkWrenchStiffness)
     Eigen::VectorXd           gaps_;            // their gaps g_c
