@@ -491,13 +491,15 @@ namespace softchain::chain
     return changed;
   }
 
-  // Four times the last step's motion: a Newton step near an equilibrium
-  // is shorter than the one before it. At least a thousandth of
-  // contact_margin_ (4.5 um on P10), at most all of it.
-  void ChainEquilibrium::next_search_margin(const Eigen::VectorXd &step)
+  // Four times the motion the next step is expected to make: the last
+  // step's, scaled by the fall of the residual over it (`fall` < 1; Newton's
+  // steps shrink with the residual as it converges). At least a thousandth
+  // of contact_margin_ (4.5 um on P10), at most all of it.
+  void ChainEquilibrium::next_search_margin(const Eigen::VectorXd &step, const double fall)
   {
-    search_margin_ = std::clamp(margin_per_motion * surface_motion(step), smallest_margin * contact_margin_,
-                                contact_margin_);
+    const double scale = std::isfinite(fall) ? std::min(fall, 1.0) : 1.0;
+    search_margin_     = std::clamp(margin_per_motion * surface_motion(step) * scale,
+                                    smallest_margin * contact_margin_, contact_margin_);
   }
 
   double ChainEquilibrium::surface_motion(const Eigen::VectorXd &step)
@@ -760,13 +762,14 @@ namespace softchain::chain
                            " Newton iterations";
         else
           {
+            const double before = relative_residual();
             prepare_tangent();
             newton_direction();
             ++result.iterations;
             if (!line_search(result.angles))
               result.failure = "line search found no decrease of the energy";
             if (!contact_.empty())
-              next_search_margin(result.angles - line_start_);
+              next_search_margin(result.angles - line_start_, relative_residual() / before);
           }
       }
     if (result.failure.empty())

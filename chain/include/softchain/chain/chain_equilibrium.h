@@ -151,7 +151,7 @@ namespace softchain::chain
     // sphere (c, r) that holds all the link's points.
     double surface_motion(const Eigen::VectorXd &step);
     double sphere_motion(int node) const;
-    void   next_search_margin(const Eigen::VectorXd &step);
+    void   next_search_margin(const Eigen::VectorXd &step, double fall);
     bool   predict_active_set(const std::vector<LinkWrenchStiffness::Vector6d> &twists, const std::vector<double> &ds,
                               std::vector<char> &active) const;
     void   limit_surface_motion();
