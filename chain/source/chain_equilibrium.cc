@@ -72,7 +72,7 @@ namespace softchain::chain
     std::stable_sort(loads_.begin(), loads_.end(),
                      [](const AttachedLoad &a, const AttachedLoad &b) { return a.link < b.link; });
     contact_margin_ = 0.05 * (chain_.link_tip() - chain_.link_joint(0)).norm();
-    search_margin_  = smallest_margin * contact_margin_;
+    search_margin_  = contact_margin_;
     const double              skin_compliance = model_.skin_compliance(load.pressure);
     const std::vector<double> skin(skin_compliance > 0.0 ? chain_.n_joints() : 0, skin_compliance);
     contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness, skin,
@@ -266,9 +266,10 @@ namespace softchain::chain
   // step), so the step is the one every point within contact_margin_ would
   // give (the model's minimiser is unique where it is convex); otherwise the
   // margin grows to four times the step's motion, up to contact_margin_,
-  // and the step is solved again. On P10's contact samples the first step
-  // from rest is solved twice, the steps that settle an equilibrium once,
-  // with a few candidates instead of about 400.
+  // and the step is solved again. A load's first step takes every point
+  // within contact_margin_ (it starts from a pose whose step is unknown);
+  // on P10's contact samples the steps that settle an equilibrium then
+  // take a few candidates instead of about 400.
   void ChainEquilibrium::contact_direction()
   {
     for (;;)

@@ -175,8 +175,9 @@ namespace softchain::chain
     // length (on P10 the fastest of 2, 5 and 10 % at the same iterations,
     // with every point within it a candidate at every step).
     double                    contact_margin_ = 0.0;
-    // The reach of the step's candidates (contact_direction): a few times
-    // the surface's motion in the last step (next_search_margin), so that
+    // The reach of the step's candidates (contact_direction): all of
+    // contact_margin_ at a load's first step, then a few times the surface's
+    // motion expected of the next (next_search_margin), so that
     // the steps that settle an equilibrium (a fraction of a millimetre,
     // then microns) carry the points that can touch in them, not every
     // point within 5 % of the length; widened up to contact_margin_ where
