@@ -86,8 +86,9 @@ namespace softchain::chain
             const Eigen::Vector3d shift = s * skin_direction(pose, link);
             for (const Touch &point : group)
               {
-                Touch touch;
-                if (gives(point) ? touch_inside(point, s, shift, touch) : touch_inside(point, 0.0, {0, 0, 0}, touch))
+                Touch      touch;
+                const bool moves = gives(point);
+                if (touch_inside(point, moves ? s : 0.0, moves ? shift : Eigen::Vector3d::Zero(), touch))
                   touches_.push_back(touch);
               }
             first = last;
@@ -338,7 +339,7 @@ namespace softchain::chain
     for (std::size_t i = 0; i < nodes.size();)
       {
         const CollisionSurface::Node &node = nodes[i];
-        if (framed_clearance(static_cast<int>(i)) - skin_reach(node.link) > margin)
+        if (clearance(static_cast<int>(i)) > margin)
           i = node.skip;
         else if (node.cluster < 0)
           ++i;
@@ -384,10 +385,9 @@ namespace softchain::chain
       }
   }
 
-  double ChainContact::clearance(const ChainPose &pose, const int node) const
+  double ChainContact::clearance(const int node) const
   {
-    const int link = surface_->nodes()[node].link;
-    return clearance_at_rest(pose, node) - skin_reach(link);
+    return clearance_at_rest(node) - skin_reach(surface_->nodes()[node].link);
   }
 
   void ChainContact::frame_obstacles(const ChainPose &pose) const
@@ -400,7 +400,7 @@ namespace softchain::chain
           obstacles_[o].body->seen_from(pose.link_rotations[b], pose.joint_positions[b], poses_[o]);
   }
 
-  double ChainContact::framed_clearance(const int node) const
+  double ChainContact::clearance_at_rest(const int node) const
   {
     const int                       link   = surface_->nodes()[node].link;
     const CollisionSurface::Sphere &sphere = (*spheres_)[node];
@@ -415,17 +415,6 @@ namespace softchain::chain
     return has_skin() ? std::abs(skin_shift_[link]) : 0.0;
   }
 
-  double ChainContact::clearance_at_rest(const ChainPose &pose, const int node) const
-  {
-    const int                       link   = surface_->nodes()[node].link;
-    const CollisionSurface::Sphere &sphere = (*spheres_)[node];
-    const Eigen::Vector3d centre  = pose.joint_positions[link] + pose.link_rotations[link] * sphere.centre;
-    double                nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t o = 0; o < obstacles_.size(); ++o)
-      nearest = std::min(nearest, obstacles_[o].body->gap(centre, poses_[o]));
-    return nearest - sphere.radius;
-  }
-
   // With the skins at rest (s_b = 0). A point inside then is still inside
   // once the skins have given: a skin gives only as far as the force of its
   // points that still push holds it (ChainContact::skin_shift).
@@ -434,7 +423,7 @@ namespace softchain::chain
     if (obstacles_.empty())
       return false;
     frame_obstacles(pose);
-    return surface_->walk([&](const int node) { return framed_clearance(node) > 0.0; },
+    return surface_->walk([&](const int node) { return clearance_at_rest(node) > 0.0; },
                           [&](const int n) {
                             const CollisionSurface::Node &node = surface_->nodes()[n];
                             for (int k = node.begin; k < node.end; ++k)

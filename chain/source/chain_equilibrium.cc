@@ -541,7 +541,7 @@ namespace softchain::chain
     double ratio = 1.0, bound = 0.0; // the largest motion over what a cluster may move, where above 1
     surface.walk(
       [&](const int i) {
-        bound = sphere_motion(i) / std::max(search_margin_, contact_.clearance(pose_, i));
+        bound = sphere_motion(i) / std::max(search_margin_, contact_.clearance(i)); // at pose_: model_direction's search
         return bound <= ratio;
       },
       [&](int) {

@@ -124,9 +124,10 @@ namespace softchain::chain
     void candidates(const ChainPose &pose, double margin, std::vector<Touch> &near,
                     bool with_curvature = true) const;
     // A lower bound of the distance to the obstacles of every point of the
-    // surface's node `node` (CollisionSurface::nodes) at `pose`: min over
-    // obstacles of g(centre) - radius - |s_b|, its sphere at the load's pressure.
-    double clearance(const ChainPose &pose, int node) const;
+    // surface's node `node` (CollisionSurface::nodes) at the pose of the
+    // last search (candidates, penetrates): min over obstacles of
+    // g(centre) - radius - |s_b|, its sphere at the load's pressure.
+    double clearance(int node) const;
     // Whether a surface point lies inside an obstacle at `pose` (touches()
     // would not be empty after update(pose)), found without the touches or
     // the skins: the search stops at the first such point.
@@ -180,8 +181,6 @@ namespace softchain::chain
     // s d_b in the world), if inside only: false, and `touch` untouched,
     // outside. At the pose of the last frame_obstacles.
     bool touch_inside(const Touch &point, double s, const Eigen::Vector3d &shift, Touch &touch) const;
-    // clearance with the skins at rest (s_b = 0).
-    double clearance_at_rest(const ChainPose &pose, int node) const;
     // The obstacles seen from every link's frame at `pose` (framed_): a
     // search then tests the points' offsets L_k and the spheres' centres
     // as they are, without mapping each to the world and on to the
@@ -191,8 +190,8 @@ namespace softchain::chain
     {
       return framed_[link * obstacles_.size() + obstacle];
     }
-    // clearance_at_rest at the pose of the last frame_obstacles.
-    double framed_clearance(int node) const;
+    // clearance with the skins at rest (s_b = 0).
+    double clearance_at_rest(int node) const;
     // |s_b|: how far link b's skin has moved its points (0 without skins).
     double skin_reach(int link) const;
     // Appends the points of `cluster` within `margin` of an obstacle to `near`.
