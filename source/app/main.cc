@@ -12,6 +12,7 @@
 #include <softchain/report/report_run.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <unistd.h>
 
@@ -193,6 +194,7 @@ int main(int argc, char **argv)
   // deal.II's thread pool (the cell assembly's WorkStream) gets the cores
   // not taken by other MPI ranks on this node; Solver/Threads may lower it.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+  softchain::fem::use_blas_threads(dealii::MultithreadInfo::n_threads());
   std::signal(SIGINT, on_interrupt);
   const std::string command = argc > 1 ? argv[1] : "help";
   const bool        help    = command == "help" || command == "--help" || command == "-h";

@@ -1,5 +1,6 @@
 // `softchain solve FILE.prm`: one quasi-static solve of the .prm's Loads,
 // written as VTU for ParaView, with a timing summary.
+#include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/base_reaction.h>
 #include <softchain/fem/boundary_average.h>
 #include <softchain/fem/boundary_ids.h>
@@ -99,7 +100,10 @@ namespace softchain::app
     Parameters         prm = Parameters::read(prm_file);
     prm.contact            = prm.contact.solve_scene(); // the obstacles of Obstacles in solve
     if (prm.solver.threads > 0)
-      MultithreadInfo::set_thread_limit(prm.solver.threads);
+      {
+        MultithreadInfo::set_thread_limit(prm.solver.threads);
+        use_blas_threads(MultithreadInfo::n_threads());
+      }
 
     FingerMesh mesh;
     FingerMesh::build(prm, mesh);

@@ -626,10 +626,12 @@ TEST_CASE("a sweep on a database that another writer holds stops at once on ever
 TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
 {
   // With a volume chain: its pressures, found by one group, reach rank 0.
+  // By default each rank is a sample group: the chains at 0 Pa and the
+  // volume chain are solved beside the inflations, the rest after them,
+  // and each group's records reach rank 0 while it solves its own.
   const std::string with_volume = samples + "\nset Volume sweep = 1.5, 2";
-  const std::string two_groups  = with_volume + "\nset Sample groups = 2";
-  TinyDesign        serial("sweep_serial", two_groups);
-  TinyDesign        parallel("sweep_parallel", two_groups);
+  TinyDesign        serial("sweep_serial", with_volume);
+  TinyDesign        parallel("sweep_parallel", with_volume);
   sweep_on_one_and_two_ranks(serial, parallel);
   const auto a = ActuationDatabase::open(serial.database());
   const auto b = ActuationDatabase::open(parallel.database());
@@ -638,7 +640,7 @@ TEST_CASE("the sweep gives the same database on 1 and 2 MPI ranks")
 
   // One group of two ranks: the mesh is partitioned, yet the node numbering
   // and the reference positions are the same bits.
-  TinyDesign split("sweep_split", with_volume);
+  TinyDesign split("sweep_split", with_volume + "\nset Sample groups = 1");
   REQUIRE(split.run("sweep", 2).status == 0);
   const auto c = ActuationDatabase::open(split.database());
   CHECK(c.mesh().X == a.mesh().X);
@@ -668,8 +670,9 @@ TEST_CASE("the validation protocol's tip motions give the same samples on 1 and 
   const std::string protocol = "subsection Protocol\n  set Tip angle = 10\n  set Lateral amplitude = 0.002\n"
                                "  set Bending amplitude = 0.001\n  set Twist amplitude = 5\n"
                                "  set Steps = 1\nend\n";
-  TinyDesign serial("protocol_serial", "set Pressure sweep = 10e3", springs + protocol);
-  TinyDesign split("protocol_split", "set Pressure sweep = 10e3", springs + protocol);
+  const std::string one_group = "set Pressure sweep = 10e3\nset Sample groups = 1";
+  TinyDesign        serial("protocol_serial", one_group, springs + protocol);
+  TinyDesign        split("protocol_split", one_group, springs + protocol);
   sweep_on_one_and_two_ranks(serial, split);
   // The protocol's samples in the same order (protocol_samples.csv); their
   // ids differ, since the inflation's pressure and tip frame, which the

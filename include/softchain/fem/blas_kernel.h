@@ -21,4 +21,11 @@ namespace softchain::fem
   // does not know, replaces the process by itself (same arguments) with
   // OPENBLAS_CORETYPE set; otherwise (or if that fails) returns.
   void use_the_cpus_blas_kernel(char **argv);
+
+  // OpenBLAS starts a thread per core whatever the MPI ranks beside it: two
+  // ranks on two cores ran four BLAS threads, which took turns in a busy
+  // wait. Gives OpenBLAS `n` threads, the same as deal.II's thread pool
+  // (call after MPI starts and after any thread limit); does nothing with
+  // another BLAS.
+  void use_blas_threads(unsigned int n);
 } // namespace softchain::fem

@@ -32,7 +32,8 @@
 //                            # obstacle : pressures ; ... role contact: the
 //                            # finger inflated against the obstacle of
 //                            # subsection Contact by that name
-//     set Sample groups      = 1     # MPI sample groups (1: all ranks per solve)
+//     set Sample groups      = 0     # MPI sample groups (0: one per rank, each
+//                                    # sample on one rank; 1: all ranks per solve)
 //     set Continuation       = true  # start from the converged neighbour
 //   end
 //
@@ -123,7 +124,7 @@ namespace softchain::fem
     std::vector<Sample>                   samples; // chain after chain
     std::vector<std::vector<std::size_t>> chains;  // indices into samples
     std::vector<MeasuredForceRequest>     measured_requests; // in the order listed
-    unsigned int                          sample_groups = 1;
+    unsigned int                          sample_groups = 0; // 0: one per rank
     bool                                  continuation  = true;
   };
 } // namespace softchain::fem

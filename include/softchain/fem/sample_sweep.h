@@ -71,6 +71,7 @@ namespace softchain::fem
     void solve_missing(const std::vector<std::size_t> &indices, Records &known, Summary &summary,
                        bool inflations_first = false);
     void start_chains_from_inflations(const std::vector<std::size_t> &indices, Records &known);
+    static bool                may_start_inflated(const data::Actuation &first);
     std::optional<std::size_t> inflated_start(const std::vector<std::size_t> &chain,
                                               const std::vector<std::size_t> &indices,
                                               const Records                  &known) const;
@@ -94,9 +95,11 @@ namespace softchain::fem
     void share_record(std::size_t i, Records &known) const;
     void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
                                            SweepProgress &progress, unsigned int n_groups) const;
-    void                     solve_rounds(SampleGroup &group, const std::vector<std::size_t> &mine,
-                                          std::optional<data::ActuationDatabase> &database,
-                                          Records &known, SweepProgress &progress) const;
+    void solve_share(SampleGroup &group, const std::vector<std::size_t> &mine, std::size_t n_pending,
+                     std::optional<data::ActuationDatabase> &database, Records &known,
+                     SweepProgress &progress) const;
+    static constexpr int              record_tag = 1; // a solved record on its way to rank 0
+    std::optional<data::SampleRecord> receive_record(bool wait) const;
     std::vector<std::size_t> share_of(const std::vector<std::size_t> &pending, unsigned int group,
                                       unsigned int n_groups) const;
     std::vector<const data::SampleRecord *> known_before(std::size_t sample, const Records &known) const;

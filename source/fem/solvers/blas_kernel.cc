@@ -48,4 +48,11 @@ namespace softchain::fem
     setenv("OPENBLAS_CORETYPE", kernel.c_str(), 1);
     execv("/proc/self/exe", argv);
   }
+
+  void use_blas_threads(const unsigned int n)
+  {
+    using SetThreads = void (*)(int);
+    if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set(static_cast<int>(n));
+  }
 } // namespace softchain::fem

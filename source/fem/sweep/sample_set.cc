@@ -51,7 +51,8 @@ namespace softchain::fem
                       "pressure against the obstacle of subsection Contact named (a blocked "
                       "force on a plane, a grasp of a cylinder); frictionless ones continue "
                       "along the pressure, with friction each from rest");
-      section.declare("Sample groups", "1", "MPI sample groups solving samples in parallel");
+      section.declare("Sample groups", "0",
+                      "MPI sample groups solving samples in parallel; 0: one per rank");
       section.declare("Continuation", "true", "start each sample from its converged neighbour");
     }
 
@@ -340,8 +341,8 @@ namespace softchain::fem
     SampleSet set;
     set.continuation  = section.get_bool("Continuation");
     const int groups  = section.get_integer("Sample groups");
-    if (groups < 1)
-      throw data::InputError(section.describe("Sample groups") + ": must be at least 1");
+    if (groups < 0)
+      throw data::InputError(section.describe("Sample groups") + ": must be 0 (one per rank) or more");
     set.sample_groups = groups;
 
     // Chains in order of first appearance, each by increasing load.
