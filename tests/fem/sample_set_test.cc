@@ -262,3 +262,11 @@ TEST_CASE("a contact sample naming no obstacle of subsection Contact is an Input
       CHECK(what.find("'wall' is no obstacle") != std::string::npos);
     }
 }
+
+TEST_CASE("sample groups default to one per MPI rank, and a negative count is an InputError naming it")
+{
+  CHECK(read_samples("groups_default", "  set Pressure sweep = 1e4\n").sample_groups == 0);
+  CHECK(read_samples("groups_two", "  set Pressure sweep = 1e4\n  set Sample groups = 2\n").sample_groups == 2);
+  CHECK_THROWS_WITH(read_samples("groups_negative", "  set Pressure sweep = 1e4\n  set Sample groups = -1\n"),
+                    Catch::Contains("Sample groups") && Catch::Contains("0 (one per rank) or more"));
+}

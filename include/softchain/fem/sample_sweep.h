@@ -6,9 +6,11 @@
 // from the nearest converged sample of its chain, and stores the sample
 // atomically (converged or failed). The pressure-only samples come first:
 // a chain of forces at pressure p then starts from the converged one at the
-// highest pressure not above p instead of from rest. Samples are spread over
-// MPI sample groups (whole chains per group, so the results do not depend on
-// the rank count); world rank 0 writes the database and prints one progress
+// highest pressure not above p instead of from rest; the chains that cannot
+// start from an inflation are solved beside the inflations. Samples are
+// spread over MPI sample groups (whole chains per group, so the results do
+// not depend on the rank count), which solve on their own; world rank 0
+// writes each record to the database as it arrives and prints one progress
 // line per sample.
 // Then, if subsection Protocol asks for it, the samples of the paper's
 // validation experiment (TipMotionProtocol): the inflation to a tip angle,
@@ -95,7 +97,7 @@ namespace softchain::fem
     void share_record(std::size_t i, Records &known) const;
     void                     solve_pending(const std::vector<std::size_t> &pending, Records &known,
                                            SweepProgress &progress, unsigned int n_groups) const;
-    void solve_share(SampleGroup &group, const std::vector<std::size_t> &mine, std::size_t n_pending,
+    void solve_share(SampleGroup &group, const std::vector<std::size_t> &mine, std::size_t n_records,
                      std::optional<data::ActuationDatabase> &database, Records &known,
                      SweepProgress &progress) const;
     static constexpr int              record_tag = 1; // a solved record on its way to rank 0

@@ -1,10 +1,10 @@
-#include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/boundary_ids.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/output_files.h>
 #include <softchain/data/base_face_centroid.h>
 #include <softchain/data/content_hash.h>
+#include <softchain/fem/blas_kernel.h>
 #include <softchain/fem/design_hash.h>
 #include <softchain/fem/sample_group.h>
 #include <softchain/fem/sample_sweep.h>
@@ -596,14 +596,15 @@ namespace softchain::fem
       open_error = Utilities::MPI::broadcast(MPI_COMM_WORLD, open_error, 0);
       if (!open_error.empty())
         throw data::InputError(open_error);
-      solve_share(group, share_of(pending, color, n_groups), pending.size(), database, known, progress);
+      std::size_t n_records = 0; // the records rank 0 stores: every group's share
+      for (unsigned int g = 0; g < n_groups; ++g)
+        n_records += share_of(pending, g, n_groups).size();
+      solve_share(group, share_of(pending, color, n_groups), n_records, database, known, progress);
       group.print_timing();
     }
     MPI_Comm_free(&group_comm);
   }
 
-  // Rounds: each group solves its next sample, then world rank 0 stores the
-  // round's results (in group order) and prints their progress lines.
   // Each group solves its share on its own, and the records reach rank 0,
   // which writes them, as they come: the group leaders send each record as
   // it is solved, and rank 0 takes the records that have arrived after each
@@ -613,7 +614,7 @@ namespace softchain::fem
   // 4 mm across and 8 mm along, the sweep took 560 s on two groups against
   // 714 s on one rank, where the samples' solves added up to 783 s.)
   void SampleSweep::solve_share(SampleGroup &group, const std::vector<std::size_t> &mine,
-                                const std::size_t n_pending,
+                                const std::size_t n_records,
                                 std::optional<data::ActuationDatabase> &database, Records &known,
                                 SweepProgress &progress) const
   {
@@ -651,7 +652,7 @@ namespace softchain::fem
           }
       }
     if (world_rank() == 0)
-      while (n_stored < n_pending)
+      while (n_stored < n_records)
         store(*receive_record(true));
     MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
   }
