@@ -12,7 +12,6 @@
 #include <softchain/report/report_run.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/multithread_info.h>
 
 #include <unistd.h>
 
@@ -192,9 +191,10 @@ int main(int argc, char **argv)
   softchain::fem::use_the_cpus_blas_kernel(argv);
   softchain::fem::use_no_network_transport_when_alone();
   // deal.II's thread pool (the cell assembly's WorkStream) gets the cores
-  // not taken by other MPI ranks on this node; Solver/Threads may lower it.
+  // not taken by other MPI ranks on this node, and OpenBLAS as many;
+  // Solver/Threads may lower both.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
-  softchain::fem::use_blas_threads(dealii::MultithreadInfo::n_threads());
+  softchain::fem::limit_threads(0);
   std::signal(SIGINT, on_interrupt);
   const std::string command = argc > 1 ? argv[1] : "help";
   const bool        help    = command == "help" || command == "--help" || command == "-h";

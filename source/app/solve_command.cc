@@ -15,7 +15,6 @@
 #include <softchain/fem/volume_controlled_inflation.h>
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/multithread_info.h>
 
 #include <chrono>
 #include <iostream>
@@ -99,11 +98,7 @@ namespace softchain::app
     ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
     Parameters         prm = Parameters::read(prm_file);
     prm.contact            = prm.contact.solve_scene(); // the obstacles of Obstacles in solve
-    if (prm.solver.threads > 0)
-      {
-        MultithreadInfo::set_thread_limit(prm.solver.threads);
-        use_blas_threads(MultithreadInfo::n_threads());
-      }
+    limit_threads(prm.solver.threads);
 
     FingerMesh mesh;
     FingerMesh::build(prm, mesh);

@@ -22,10 +22,11 @@ namespace softchain::fem
   // OPENBLAS_CORETYPE set; otherwise (or if that fails) returns.
   void use_the_cpus_blas_kernel(char **argv);
 
-  // OpenBLAS starts a thread per core whatever the MPI ranks beside it: two
-  // ranks on two cores ran four BLAS threads, which took turns in a busy
-  // wait. Gives OpenBLAS `n` threads, the same as deal.II's thread pool
-  // (call after MPI starts and after any thread limit); does nothing with
+  // Limits deal.II's thread pool to `limit` threads (0: leaves the count
+  // MPI_InitFinalize chose, the cores not taken by other ranks on the node)
+  // and gives OpenBLAS as many. OpenBLAS starts a thread per core whatever
+  // the MPI ranks beside it: two ranks on two cores ran four BLAS threads,
+  // which took turns in a busy wait. Call after MPI starts; does nothing to
   // another BLAS.
-  void use_blas_threads(unsigned int n);
+  void limit_threads(unsigned int limit);
 } // namespace softchain::fem

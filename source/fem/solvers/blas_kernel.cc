@@ -1,5 +1,7 @@
 #include <softchain/fem/blas_kernel.h>
 
+#include <deal.II/base/multithread_info.h>
+
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -49,10 +51,12 @@ namespace softchain::fem
     execv("/proc/self/exe", argv);
   }
 
-  void use_blas_threads(const unsigned int n)
+  void limit_threads(const unsigned int limit)
   {
+    if (limit > 0)
+      dealii::MultithreadInfo::set_thread_limit(limit);
     using SetThreads = void (*)(int);
     if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-      set(static_cast<int>(n));
+      set(static_cast<int>(dealii::MultithreadInfo::n_threads()));
   }
 } // namespace softchain::fem

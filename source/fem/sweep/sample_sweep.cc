@@ -12,7 +12,6 @@
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
 #include <Eigen/Core>
@@ -113,11 +112,7 @@ namespace softchain::fem
     , prm_file(file)
     , database_path(prm.design.database_path())
   {
-    if (prm.solver.threads > 0)
-      {
-        MultithreadInfo::set_thread_limit(prm.solver.threads);
-        use_blas_threads(MultithreadInfo::n_threads());
-      }
+    limit_threads(prm.solver.threads);
     FingerMesh::build(prm, mesh);
     hash = design_hash(prm, mesh);
     set  = SampleSet::read(prm_file, tip_face(mesh.triangulation, file.path()), hash, prm.contact);
@@ -596,10 +591,16 @@ namespace softchain::fem
       open_error = Utilities::MPI::broadcast(MPI_COMM_WORLD, open_error, 0);
       if (!open_error.empty())
         throw data::InputError(open_error);
-      std::size_t n_records = 0; // the records rank 0 stores: every group's share
+      std::vector<std::size_t> mine;
+      std::size_t              n_records = 0; // the records rank 0 stores: every group's share
       for (unsigned int g = 0; g < n_groups; ++g)
-        n_records += share_of(pending, g, n_groups).size();
-      solve_share(group, share_of(pending, color, n_groups), n_records, database, known, progress);
+        {
+          auto share = share_of(pending, g, n_groups);
+          n_records += share.size();
+          if (g == color)
+            mine = std::move(share);
+        }
+      solve_share(group, mine, n_records, database, known, progress);
       group.print_timing();
     }
     MPI_Comm_free(&group_comm);
