@@ -102,8 +102,9 @@ namespace softchain::fem
                      SweepProgress &progress) const;
     static constexpr int              record_tag = 1; // a solved record on its way to rank 0
     std::optional<data::SampleRecord> receive_record(bool wait) const;
-    std::vector<std::size_t> share_of(const std::vector<std::size_t> &pending, unsigned int group,
-                                      unsigned int n_groups) const;
+    // Each group's samples of `pending`: whole chains, in chain order.
+    std::vector<std::vector<std::size_t>> shares(const std::vector<std::size_t> &pending,
+                                                 unsigned int n_groups) const;
     std::vector<const data::SampleRecord *> known_before(std::size_t sample, const Records &known) const;
     const data::SampleRecord *start_of(std::size_t sample, const Records &known) const;
     const data::SampleRecord *anchor_of(std::size_t sample, const Records &known) const;

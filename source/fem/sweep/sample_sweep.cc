@@ -591,16 +591,11 @@ namespace softchain::fem
       open_error = Utilities::MPI::broadcast(MPI_COMM_WORLD, open_error, 0);
       if (!open_error.empty())
         throw data::InputError(open_error);
-      std::vector<std::size_t> mine;
-      std::size_t              n_records = 0; // the records rank 0 stores: every group's share
-      for (unsigned int g = 0; g < n_groups; ++g)
-        {
-          auto share = share_of(pending, g, n_groups);
-          n_records += share.size();
-          if (g == color)
-            mine = std::move(share);
-        }
-      solve_share(group, mine, n_records, database, known, progress);
+      const auto  share     = shares(pending, n_groups);
+      std::size_t n_records = 0; // the records rank 0 stores: every group's share
+      for (const auto &s : share)
+        n_records += s.size();
+      solve_share(group, share[color], n_records, database, known, progress);
       group.print_timing();
     }
     MPI_Comm_free(&group_comm);
@@ -680,9 +675,8 @@ namespace softchain::fem
 
   // Whole chains per group (so that every sample continues from the same
   // neighbour whatever the grouping), the largest first to the least loaded.
-  std::vector<std::size_t> SampleSweep::share_of(const std::vector<std::size_t> &pending,
-                                                 const unsigned int              group,
-                                                 const unsigned int              n_groups) const
+  std::vector<std::vector<std::size_t>> SampleSweep::shares(const std::vector<std::size_t> &pending,
+                                                             const unsigned int n_groups) const
   {
     std::vector<std::vector<std::size_t>> work;
     for (const auto &chain : set.chains)
@@ -704,11 +698,14 @@ namespace softchain::fem
         load[g] += work[c].size();
         chains_of[g].push_back(c);
       }
-    std::sort(chains_of[group].begin(), chains_of[group].end());
-    std::vector<std::size_t> mine;
-    for (const auto c : chains_of[group])
-      mine.insert(mine.end(), work[c].begin(), work[c].end());
-    return mine;
+    std::vector<std::vector<std::size_t>> share(n_groups);
+    for (unsigned int g = 0; g < n_groups; ++g)
+      {
+        std::sort(chains_of[g].begin(), chains_of[g].end());
+        for (const auto c : chains_of[g])
+          share[g].insert(share[g].end(), work[c].begin(), work[c].end());
+      }
+    return share;
   }
 
   // The records of the samples before `sample` in its chain, nearest first.
