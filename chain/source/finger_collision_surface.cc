@@ -43,9 +43,13 @@ namespace softchain::chain
             std::vector<std::int64_t> vertices;
             for (const int v : local)
               vertices.push_back(mesh.cells[c + v]);
+            // A face has 3 or 4 vertices (local_faces); its key is them
+            // sorted, padded with -1.
+            std::vector<std::int64_t> sorted = vertices;
+            std::sort(sorted.begin(), sorted.end());
             Face face{-1, -1, -1, -1};
-            std::copy(vertices.begin(), vertices.end(), face.begin());
-            std::sort(face.begin(), face.begin() + vertices.size());
+            for (std::size_t i = 0; i < sorted.size() && i < face.size(); ++i)
+              face[i] = sorted[i];
             FaceUse &use = uses[face];
             if (use.cells++ == 0)
               use.vertices = std::move(vertices);
