@@ -12,7 +12,7 @@ namespace softchain::chain
 {
   namespace
   {
-    using Face = std::array<std::int64_t, 4>; // sorted node indices, -1 padded
+    using Face = std::array<std::int64_t, 4>; // node indices, -1 padded, sorted
 
     // The faces of a cell by its local vertices: a tetrahedron's four
     // triangles, a hexahedron's six quadrilaterals (deal.II's lexicographic
@@ -43,13 +43,9 @@ namespace softchain::chain
             std::vector<std::int64_t> vertices;
             for (const int v : local)
               vertices.push_back(mesh.cells[c + v]);
-            // A face has 3 or 4 vertices (local_faces); its key is them
-            // sorted, padded with -1.
-            std::vector<std::int64_t> sorted = vertices;
-            std::sort(sorted.begin(), sorted.end());
             Face face{-1, -1, -1, -1};
-            for (std::size_t i = 0; i < sorted.size() && i < face.size(); ++i)
-              face[i] = sorted[i];
+            std::copy(vertices.begin(), vertices.end(), face.begin());
+            std::sort(face.begin(), face.end());
             FaceUse &use = uses[face];
             if (use.cells++ == 0)
               use.vertices = std::move(vertices);
