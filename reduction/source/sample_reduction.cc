@@ -28,6 +28,11 @@ namespace softchain::reduction
     const ExternalForceTorque external(sample);
     double                       largest_torque = 0;
     std::vector<Eigen::Vector3d> centres;
+    // Per joint, in its frame: the moments about the twist point S_i (for
+    // psi) and about the centre J_i (for theta, phi), of the loads and per
+    // pascal of the pressure; turned into the angles' generalised torques
+    // once the angles are known (conjugate_torque).
+    std::vector<Eigen::Vector3d> about_twist, pressure_about_twist;
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
         const JointFrame     &frame  = frames[i];
@@ -38,14 +43,15 @@ namespace softchain::reduction
         joint.pressure_torque = pressure_torque.per_pascal(centre, frame.rotation, normal);
         joint.torque = external.about(geometry.x_joint(i), centre, frame.rotation) +
                        joint.pressure_torque * pressure_;
-        if (geometry.twist_offset() != 0.0) // the twisting torque about the twist axis
+        about_twist.push_back(joint.torque);
+        pressure_about_twist.push_back(joint.pressure_torque);
+        if (geometry.twist_offset() != 0.0)
           {
             const Eigen::Vector3d twist_point = geometry.deformed_twist_point(i, frames, sample.x);
-            const Eigen::Vector3d pressure_about_twist =
+            pressure_about_twist.back() =
               pressure_torque.per_pascal_about(twist_point, centre, frame.rotation, normal);
-            joint.pressure_torque.x() = pressure_about_twist.x();
-            joint.torque.x() = external.about(geometry.x_joint(i), twist_point, frame.rotation).x() +
-                               pressure_about_twist.x() * pressure_;
+            about_twist.back() = external.about(geometry.x_joint(i), twist_point, frame.rotation) +
+                                 pressure_about_twist.back() * pressure_;
           }
         joint.stretches = frame.stretches;
         largest_torque  = std::max(largest_torque, joint.torque.norm());
@@ -62,9 +68,13 @@ namespace softchain::reduction
     Eigen::Matrix3d              parent = Eigen::Matrix3d::Identity();
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
-        const bool carries_torque = joints_[i].torque.norm() > 1e-6 * largest_torque;
-        joints_[i].free_angles = data::angles_from_rotation(parent.transpose() * frames[i].rotation);
-        joints_[i].angles      = carries_torque ? joints_[i].free_angles : data::JointAngles{};
+        JointResult &joint          = joints_[i];
+        const bool   carries_torque = joint.torque.norm() > 1e-6 * largest_torque;
+        joint.free_angles = data::angles_from_rotation(parent.transpose() * frames[i].rotation);
+        joint.angles      = carries_torque ? joint.free_angles : data::JointAngles{};
+        joint.torque      = conjugate_torque(joint.free_angles, about_twist[i], joint.torque);
+        joint.pressure_torque =
+          conjugate_torque(joint.free_angles, pressure_about_twist[i], joint.pressure_torque);
         if (carries_torque)
           parent = frames[i].rotation;
         link_rotations.push_back(parent);
@@ -80,6 +90,26 @@ namespace softchain::reduction
         const Eigen::AngleAxisd tip_frame(link_rotations.back().transpose() * tip.rotation);
         tip_frame_ = tip_frame.angle() * tip_frame.axis();
       }
+  }
+
+  // The generalised torques of the Euler angles q = (psi, theta, phi) of
+  // R = Rx(psi) Ry(theta) Rz(phi), from the moments in the joint's (distal)
+  // frame. The angles turn about the axes a_psi = e_x, a_theta = Rx(psi) e_y
+  // and a_phi = Rx(psi) Ry(theta) e_z of the proximal frame, so a moment M
+  // (distal components m = R^T M) does the work M . a dq, and
+  //   Q_psi = (R^T e_x) . m_S,   Q_theta = (Rz(phi)^T e_y) . m_J,   Q_phi = m_J,z
+  // (m_S about the twist point, m_J about the centre): the torques that the
+  // chain's springs balance (chain/README.md, "Equilibrium"). On a joint
+  // bent in its plane by phi they differ from the frame's components at
+  // first order: Q_psi = cos(phi) m_x - sin(phi) m_y at theta = 0, so a
+  // lateral moment twists a bent joint.
+  Eigen::Vector3d SampleReduction::conjugate_torque(const data::JointAngles &q,
+                                                    const Eigen::Vector3d  &about_twist,
+                                                    const Eigen::Vector3d  &about_centre)
+  {
+    const Eigen::Matrix3d R = data::rotation_from_angles(q);
+    return {R.row(0).dot(about_twist), std::sin(q.phi) * about_centre.x() + std::cos(q.phi) * about_centre.y(),
+            about_centre.z()};
   }
 
   // The chain's link geometry at this sample (chain/link_geometry.h): the

@@ -68,6 +68,11 @@ namespace softchain::reduction
     // The deformed chord from joint 1's centre to the tip, sum_i R_i (U_i+1 - U_i).
     Eigen::Vector3d chord() const;
 
+    // The generalised torques of the angles q from the moments about the
+    // twist point and about the centre, both in the joint frame.
+    static Eigen::Vector3d conjugate_torque(const data::JointAngles &q, const Eigen::Vector3d &about_twist,
+                                            const Eigen::Vector3d &about_centre);
+
   private:
     void set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
                            const std::vector<Eigen::Matrix3d> &link_rotations);
