@@ -6,6 +6,7 @@
 #include <softchain/data/output_files.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -130,7 +131,29 @@ namespace softchain::chain
       std::vector<Eigen::Vector3d> joint_centres;
       std::vector<Eigen::Vector3d> twist_points; // S_i; J_i without the S columns
       std::vector<Eigen::Vector3d> stiffness;
+      // Per axis, the joints held rigid for want of a usable value, with
+      // that value ("joint: value"); warned about where the chain uses them.
+      std::array<std::map<int, std::string>, 3> held;
+      std::vector<std::string>                  k_columns; // the columns read, k_psi[_fit], ...
     };
+
+    // The warning for the joints of `axis` that the chain holds rigid.
+    void warn_held_rigid(const std::string &path, const std::string &column,
+                         const std::map<int, std::string> &held)
+    {
+      if (held.empty())
+        return;
+      std::vector<std::string> items;
+      for (const auto &[joint, item] : held)
+        items.push_back(item);
+      warn_once("chain: warning: " + path + ": " + column + " is not a positive stiffness at " +
+                  counted(items, "joint") +
+                  "; held rigid about this axis (nan: no sample turned the joint by the "
+                  "rotation threshold; negative: it turned against its torque, carried by "
+                  "its neighbours or through another axis, as theta with psi on an "
+                  "inflated finger)",
+                std::cerr);
+    }
 
     // A joint axis without a usable stiffness (NaN: no usable sample, e.g. a
     // joint in the solid base fill that transmits no pressure torque; or
@@ -139,8 +162,11 @@ namespace softchain::chain
     // e.g. torsion in a pressure-only sample set) is held rigid at every
     // joint, k = 1e6 x the largest stiffness of any axis: the chain then
     // bends about the loaded axes only. No usable value at all is an error.
+    // The joints held rigid are recorded in `held`, not yet warned about: a
+    // table in pressure may give them a stiffness (read_model).
     void hold_rigid_where_missing(std::vector<Eigen::Vector3d> &stiffness, const std::string &path,
-                                             const std::vector<std::string> &columns, const bool rigid)
+                                  const std::vector<std::string> &columns, const bool rigid,
+                                  std::array<std::map<int, std::string>, 3> &held)
     {
       Eigen::Vector3d rigid_k;
       const auto largest_of = [&](const int axis) {
@@ -168,7 +194,6 @@ namespace softchain::chain
                           " at any joint (no sample loads this axis); the chain is held rigid about it",
                         std::cerr);
             }
-          std::vector<std::string> held; // "joint: value" of the joints held rigid
           for (std::size_t joint = 0; joint < stiffness.size(); ++joint)
             if (!usable(stiffness[joint][axis]))
               {
@@ -178,17 +203,11 @@ namespace softchain::chain
                                    " is not a positive finite stiffness (no usable sample, or "
                                    "a torque opposite to the rotation; Chain/Missing stiffness = "
                                    "rigid holds such joints rigid)");
-                held.push_back(std::to_string(joint + 1) + ": " + number_text(stiffness[joint][axis]));
+                if (largest > 0)
+                  held[axis][static_cast<int>(joint)] =
+                    std::to_string(joint + 1) + ": " + number_text(stiffness[joint][axis]);
                 stiffness[joint][axis] = rigid_k[axis];
               }
-          if (largest > 0 && !held.empty())
-            warn_once("chain: warning: " + path + ": " + columns[axis] + " is not a positive stiffness at " +
-                        counted(held, "joint") +
-                        "; held rigid about this axis (nan: no sample turned the joint by the "
-                        "rotation threshold; negative: it turned against its torque, carried by "
-                        "its neighbours or through another axis, as theta with psi on an "
-                        "inflated finger)",
-                      std::cerr);
         }
     }
 
@@ -228,7 +247,8 @@ namespace softchain::chain
             k[axis] = stiffness_entry(table, path, row, k_columns[axis]);
           result.stiffness.push_back(k);
         }
-      hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing);
+      hold_rigid_where_missing(result.stiffness, path, k_columns, rigid_where_missing, result.held);
+      result.k_columns = k_columns;
       return result;
     }
 
@@ -239,7 +259,8 @@ namespace softchain::chain
     // input error. `n_pressures` returns the number of distinct pressures.
     std::vector<PiecewiseLinear> read_k_in_pressure(const std::string &path, int n, int axis,
                                                     const std::vector<Eigen::Vector3d> &fallback,
-                                                    const bool rigid, std::size_t &n_pressures)
+                                                    const bool rigid, std::size_t &n_pressures,
+                                                    std::vector<bool> &uses_fallback)
     {
       const std::string column = k_columns_of_axis[axis];
       const CsvTable    table  = read_table(path, {"pressure", "joint", column});
@@ -272,6 +293,9 @@ namespace softchain::chain
                   std::cerr);
       n_pressures = pressures.size();
       std::vector<PiecewiseLinear> result;
+      uses_fallback.assign(n, false);
+      for (int i = 0; i < n; ++i)
+        uses_fallback[i] = per_joint[i].empty();
       for (int i = 0; i < n; ++i)
         result.push_back(per_joint[i].empty() ?
                            PiecewiseLinear({0.0}, {fallback[i][axis]}) :
@@ -486,9 +510,18 @@ namespace softchain::chain
     joints.pressure_torque = read_pressure_torque(pressure_torque_path_, n);
     if (in_pressure)
       {
-        std::size_t n_pressures = 0;
+        std::size_t       n_pressures = 0;
+        std::vector<bool> uses_fallback;
+        // A joint held rigid in the stiffness table that a table in
+        // pressure gives a stiffness is not held rigid: no warning for it.
+        const auto covered = [&](const int axis) {
+          for (int joint = 0; joint < n; ++joint)
+            if (!uses_fallback[joint])
+              table.held[axis].erase(joint);
+        };
         joints.k_in_pressure[2] = read_k_in_pressure(bending_in_pressure_path_, n, 2, table.stiffness,
-                                                     rigid_where_missing, n_pressures);
+                                                     rigid_where_missing, n_pressures, uses_fallback);
+        covered(2);
         // k_psi(p), k_theta(p) where the torsion (lateral) samples were made
         // at more than one pressure; otherwise (also without any such
         // sample: a table of no rows) k stays the stiffness table's.
@@ -496,12 +529,17 @@ namespace softchain::chain
           if (std::filesystem::exists(force_in_pressure_paths_[axis]) &&
               CsvTable::read(force_in_pressure_paths_[axis]).n_rows() > 0)
             {
-              auto tables = read_k_in_pressure(force_in_pressure_paths_[axis], n, axis,
-                                               table.stiffness, rigid_where_missing, n_pressures);
+              auto tables = read_k_in_pressure(force_in_pressure_paths_[axis], n, axis, table.stiffness,
+                                               rigid_where_missing, n_pressures, uses_fallback);
               if (n_pressures > 1)
-                joints.k_in_pressure[axis] = std::move(tables);
+                {
+                  joints.k_in_pressure[axis] = std::move(tables);
+                  covered(axis);
+                }
             }
       }
+    for (int axis = 0; axis < 3; ++axis)
+      warn_held_rigid(stiffness_path_, table.k_columns[axis], table.held[axis]);
     if (in_pressure && std::filesystem::exists(link_geometry_path_))
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
     if (in_pressure)

@@ -151,6 +151,30 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
                       Catch::Contains("k_phi = -0.02"));
 }
 
+TEST_CASE("a joint that its table in pressure gives a stiffness is not warned about as held rigid")
+{
+  // E.g. P10's k_psi at joint 7 from the largest torsion sample (50 kPa,
+  // the finger curled past 120 degrees) is negative, while its k_psi(p) from
+  // the lightest sample per pressure is positive: the chain uses the table.
+  softchain::testing::ScratchDirectory dir("chain_table_covers_joint");
+  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
+  const UniformReduction               r;
+  testing::write_reduction(files, r);
+  set_row_field(files.stiffness_path(), "2", 7, "-0.03");
+  std::ostringstream warnings;
+  std::streambuf    *cerr = std::cerr.rdbuf(warnings.rdbuf());
+  const ChainModel   in_pressure = files.read_model("M2", tip, StiffnessColumn::value, true);
+  CHECK(warnings.str().find("is not a positive stiffness") == std::string::npos);
+  // Without the tables in pressure the stiffness table's value is used, and
+  // the joint is held rigid with the warning.
+  const ChainModel at_rest = files.read_model("M2", tip, StiffnessColumn::value, false);
+  std::cerr.rdbuf(cerr);
+  CHECK(warnings.str().find(files.stiffness_path() + ": k_phi is not a positive stiffness at 1 joint (2: -0.03)") !=
+        std::string::npos);
+  CHECK(in_pressure.stiffness().diagonal(r.p_max)[5] < 1e3 * r.k[2]);
+  CHECK(at_rest.stiffness().diagonal(r.p_max)[5] == Approx(1e6 * r.k[2]).epsilon(1e-12));
+}
+
 TEST_CASE("the reduction's files give joints, stiffness and pressure tables")
 {
   softchain::testing::ScratchDirectory dir("chain_stiffness_files");
