@@ -1,8 +1,9 @@
 #pragma once
 // SampleReduction: one database sample reduced to the chain's variables by
 // one method: per joint the relative angles (psi, theta, phi), the torque
-// tau_i = (J^T f)_i + J_p,i p about the deformed joint centre in the joint
-// frame (the distal slab's), J_p,i and the stretches.
+// tau_i = (J^T f)_i + J_p,i p as the angles' generalised forces (the work of
+// the moments about the twist point and the deformed joint centre per unit
+// turn of each angle; conjugate_torque), J_p,i and the stretches.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/joint_angles.h>
 #include <softchain/reduction/reduction_parameters.h>
@@ -21,8 +22,8 @@ namespace softchain::reduction
     // The angles from the last torque-carrying frame even where this joint
     // carries none (`angles` are then 0, passed on to the next joint).
     data::JointAngles free_angles;
-    Eigen::Vector3d   torque;           // N m, joint frame (x: psi, y: theta, z: phi)
-    Eigen::Vector3d   pressure_torque;  // J_p,i: N m per Pa, joint frame
+    Eigen::Vector3d   torque;           // N m, generalised torques of (psi, theta, phi)
+    Eigen::Vector3d   pressure_torque;  // J_p,i: N m per Pa, generalised as `torque`
     Eigen::Vector3d   stretches;        // principal stretches (M2), NaN for M1
   };
 
