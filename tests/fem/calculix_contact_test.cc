@@ -57,100 +57,106 @@ using namespace dealii;
 using namespace softchain;
 using namespace softchain::fem;
 
-namespace
+// Its own namespace, so that the unity batch that compiles this file with
+// others holds each file's constants once.
+namespace calculix_contact_test
 {
-  constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.48;
-  constexpr double gap = 0.005, tip_load = 0.02; // m, N
-  constexpr double penalty_factor = 10;         // SoftChain's default
 
-  // The force the plane receives and the mean tip displacement.
-  struct Landing
+  namespace
   {
-    Tensor<1, 3> force, tip;
-    double       seconds;
-  };
+    constexpr double L = 0.1, h = 0.01, E = 2.6e5, nu = 0.48;
+    constexpr double gap = 0.005, tip_load = 0.02; // m, N
+    constexpr double penalty_factor = 10;         // SoftChain's default
 
-  double seconds_since(const std::chrono::steady_clock::time_point t)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  }
-
-  Landing calculix_landing(const std::string &name, const Triangulation<3> &mesh,
-                           const test::CalculixDeck::RigidPlane &plane)
-  {
-    const auto         start = std::chrono::steady_clock::now();
-    test::CalculixDeck deck;
-    deck.youngs_modulus = E;
-    deck.poissons_ratio = nu;
-    deck.plane          = plane;
-    std::vector<unsigned int> tip;
-    for (const auto &[v, a] : test::tip_area_shares(mesh))
-      tip.push_back(v);
-    deck.write(name + ".inp", mesh, {-tip_load / (h * h), 0}, tip);
-    REQUIRE(std::system(("ccx -i " + name + " > " + name + ".log 2>&1").c_str()) == 0);
-    const auto reaction = test::calculix_total_force(name + ".dat", "PLANE");
-    return {-reaction, test::calculix_mean_tip_displacement(name + ".dat", mesh), seconds_since(start)};
-  }
-
-  Landing softchain_landing(const std::string &name, const Triangulation<3> &mesh)
-  {
-    const auto         start = std::chrono::steady_clock::now();
-    std::ostringstream contact;
-    contact << "subsection Contact\n  set Penalty factor = " << penalty_factor
-            << "\n  subsection table\n    set Shape = plane\n"
-            << "    set Position = 0, " << -gap << ", 0\n    set Normal = 0, 1, 0\n  end\nend\n";
-    test::MeshSolverFixture f(test::parameters_from_text(name, test::solid_prm("Q1", "split", E, nu, contact.str())),
-                              mesh);
-    LoadState load;
-    load.tip_traction[1] = -tip_load / (h * h);
-    REQUIRE(f.solver->solve(load).converged);
-    const auto &u = f.solver->displacement();
-    return {f.solver->obstacle_contact()->obstacle_wrenches(u, 0.0)[0].force,
-            mean_boundary_displacement(f.solver->space(), u, boundary::tip), seconds_since(start)};
-  }
-
-  struct Agreement
-  {
-    double force, tip; // relative differences of F_y and of the tip's u_y
-  };
-
-  // Both codes on the block of `cells`, SoftChain with its default
-  // contact settings, CalculiX's node-to-surface springs as stiff.
-  Agreement compare(const std::string &name, const std::vector<unsigned int> &cells)
-  {
-    Triangulation<3> mesh;
-    test::cantilever_block(mesh, cells, L, h);
-    test::CalculixDeck::RigidPlane plane;
-    plane.y       = -gap;
-    plane.penalty = penalty_factor * E / std::sqrt(L / cells[0] * h / cells[2]);
-    const Landing   ccx  = calculix_landing(name + "_ccx", mesh, plane);
-    const Landing   ours = softchain_landing(name, mesh);
-    const Agreement a{ours.force[1] / ccx.force[1] - 1, ours.tip[1] / ccx.tip[1] - 1};
-    WARN(name << ": plane force F_y SoftChain " << ours.force[1] << " N, CalculiX " << ccx.force[1]
-              << " N, relative difference " << a.force << "; tip u_y SoftChain " << ours.tip[1]
-              << " m, CalculiX " << ccx.tip[1] << " m, relative difference " << a.tip
-              << "; CalculiX K = " << plane.penalty << " Pa/m; wall time SoftChain " << ours.seconds
-              << " s, CalculiX " << ccx.seconds << " s");
-    return a;
-  }
-} // namespace
-
-TEST_CASE("a cantilever landing on a rigid plane agrees with CalculiX", "[fem][calculix][contact]")
-{
-  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-    return;
-  REQUIRE(std::system("command -v ccx > /dev/null 2>&1") == 0); // scripts/setup installs calculix-ccx
-  for (const auto &cells : {std::vector<unsigned int>{20, 2, 2}, {40, 4, 4}})
+    // The force the plane receives and the mean tip displacement.
+    struct Landing
     {
-      const double    dx = L / cells[0];
-      const Agreement a  = compare("landing_" + std::to_string(cells[0]), cells);
-      // SoftChain's edge sinks below the plane and its contact sits inward
-      // of CalculiX's: a deeper tip, a larger force (header).
-      CHECK(a.tip > 0);
-      CHECK(a.force > 0);
-      // Both differences O(dx), the Gauss points' offset: measured 0.33 and
-      // 0.31 dx / L (tip), 0.23 and 0.26 dx / L (force).
-      CHECK(a.tip < 0.45 * dx / L);
-      CHECK(a.force < 0.35 * dx / L);
+      Tensor<1, 3> force, tip;
+      double       seconds;
+    };
+
+    double seconds_since(const std::chrono::steady_clock::time_point t)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     }
-}
+
+    Landing calculix_landing(const std::string &name, const Triangulation<3> &mesh,
+                             const test::CalculixDeck::RigidPlane &plane)
+    {
+      const auto         start = std::chrono::steady_clock::now();
+      test::CalculixDeck deck;
+      deck.youngs_modulus = E;
+      deck.poissons_ratio = nu;
+      deck.plane          = plane;
+      std::vector<unsigned int> tip;
+      for (const auto &[v, a] : test::tip_area_shares(mesh))
+        tip.push_back(v);
+      deck.write(name + ".inp", mesh, {-tip_load / (h * h), 0}, tip);
+      REQUIRE(std::system(("ccx -i " + name + " > " + name + ".log 2>&1").c_str()) == 0);
+      const auto reaction = test::calculix_total_force(name + ".dat", "PLANE");
+      return {-reaction, test::calculix_mean_tip_displacement(name + ".dat", mesh), seconds_since(start)};
+    }
+
+    Landing softchain_landing(const std::string &name, const Triangulation<3> &mesh)
+    {
+      const auto         start = std::chrono::steady_clock::now();
+      std::ostringstream contact;
+      contact << "subsection Contact\n  set Penalty factor = " << penalty_factor
+              << "\n  subsection table\n    set Shape = plane\n"
+              << "    set Position = 0, " << -gap << ", 0\n    set Normal = 0, 1, 0\n  end\nend\n";
+      test::MeshSolverFixture f(test::parameters_from_text(name, test::solid_prm("Q1", "split", E, nu, contact.str())),
+                                mesh);
+      LoadState load;
+      load.tip_traction[1] = -tip_load / (h * h);
+      REQUIRE(f.solver->solve(load).converged);
+      const auto &u = f.solver->displacement();
+      return {f.solver->obstacle_contact()->obstacle_wrenches(u, 0.0)[0].force,
+              mean_boundary_displacement(f.solver->space(), u, boundary::tip), seconds_since(start)};
+    }
+
+    struct Agreement
+    {
+      double force, tip; // relative differences of F_y and of the tip's u_y
+    };
+
+    // Both codes on the block of `cells`, SoftChain with its default
+    // contact settings, CalculiX's node-to-surface springs as stiff.
+    Agreement compare(const std::string &name, const std::vector<unsigned int> &cells)
+    {
+      Triangulation<3> mesh;
+      test::cantilever_block(mesh, cells, L, h);
+      test::CalculixDeck::RigidPlane plane;
+      plane.y       = -gap;
+      plane.penalty = penalty_factor * E / std::sqrt(L / cells[0] * h / cells[2]);
+      const Landing   ccx  = calculix_landing(name + "_ccx", mesh, plane);
+      const Landing   ours = softchain_landing(name, mesh);
+      const Agreement a{ours.force[1] / ccx.force[1] - 1, ours.tip[1] / ccx.tip[1] - 1};
+      WARN(name << ": plane force F_y SoftChain " << ours.force[1] << " N, CalculiX " << ccx.force[1]
+                << " N, relative difference " << a.force << "; tip u_y SoftChain " << ours.tip[1]
+                << " m, CalculiX " << ccx.tip[1] << " m, relative difference " << a.tip
+                << "; CalculiX K = " << plane.penalty << " Pa/m; wall time SoftChain " << ours.seconds
+                << " s, CalculiX " << ccx.seconds << " s");
+      return a;
+    }
+  } // namespace
+
+  TEST_CASE("a cantilever landing on a rigid plane agrees with CalculiX", "[fem][calculix][contact]")
+  {
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      return;
+    REQUIRE(std::system("command -v ccx > /dev/null 2>&1") == 0); // scripts/setup installs calculix-ccx
+    for (const auto &cells : {std::vector<unsigned int>{20, 2, 2}, {40, 4, 4}})
+      {
+        const double    dx = L / cells[0];
+        const Agreement a  = compare("landing_" + std::to_string(cells[0]), cells);
+        // SoftChain's edge sinks below the plane and its contact sits inward
+        // of CalculiX's: a deeper tip, a larger force (header).
+        CHECK(a.tip > 0);
+        CHECK(a.force > 0);
+        // Both differences O(dx), the Gauss points' offset: measured 0.33 and
+        // 0.31 dx / L (tip), 0.23 and 0.26 dx / L (force).
+        CHECK(a.tip < 0.45 * dx / L);
+        CHECK(a.force < 0.35 * dx / L);
+      }
+  }
+} // namespace calculix_contact_test

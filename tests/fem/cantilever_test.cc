@@ -32,54 +32,60 @@ using namespace dealii;
 using namespace softchain;
 using namespace softchain::fem;
 
-namespace
+// Its own namespace, so that the unity batch that compiles this file with
+// others holds each file's constants once.
+namespace cantilever_test
 {
-  constexpr double L = 0.1, h = 0.01; // length and square section edge [m]
-  constexpr double E        = 2.6e5;  // the paper's silicone
-  constexpr double traction = 1.0;    // N/m^2 along y: F = 1e-4 N
 
-  double timoshenko_deflection(const double nu)
+  namespace
   {
-    const double F = traction * h * h, I = h * h * h * h / 12, A = h * h;
-    const double G = E / (2 * (1 + nu)), kappa = 10 * (1 + nu) / (12 + 11 * nu);
-    return F * L * L * L / (3 * E * I) + F * L / (kappa * G * A);
-  }
+    constexpr double L = 0.1, h = 0.01; // length and square section edge [m]
+    constexpr double E        = 2.6e5;  // the paper's silicone
+    constexpr double traction = 1.0;    // N/m^2 along y: F = 1e-4 N
 
-  // Mean tip-face deflection (the centroid's, in beam terms) of a Q2 mesh
-  // with n cells across the section and 10 n along the length.
-  double fem_deflection(const double nu, const unsigned int n)
-  {
-    Triangulation<3> mesh;
-    test::cantilever_block(mesh, {10 * n, n, n}, L, h);
-    test::MeshSolverFixture f(
-      test::parameters_from_text("cantilever",
-                                 test::solid_prm("Q2", "log", E, nu,
-                                                 "subsection Solver\n  set Initial load step = 1\n"
-                                                 "end\n")),
-      mesh);
-    LoadState load;
-    load.tip_traction[1] = traction;
-    REQUIRE(f.solver->solve(load).converged);
-    return mean_boundary_displacement(f.solver->space(), f.solver->displacement(),
-                                      boundary::tip)[1];
-  }
-} // namespace
-
-TEST_CASE("cantilever tip deflection matches Timoshenko beam theory", "[fem][cantilever]")
-{
-  for (const auto &[nu, model_tolerance] : {std::pair{0.3, 0.01}, std::pair{0.48, 0.025}})
+    double timoshenko_deflection(const double nu)
     {
-      const double beam = timoshenko_deflection(nu);
-      double       delta[3];
-      for (const unsigned int k : {0u, 1u, 2u})
-        delta[k] = fem_deflection(nu, 1u << k);
-      const double ratio    = (delta[1] - delta[0]) / (delta[2] - delta[1]);
-      const double limit    = delta[2] + (delta[2] - delta[1]) / (ratio - 1);
-      WARN("cantilever, nu = " << nu << ": Q2 delta = " << delta[0] << ", " << delta[1] << ", "
-                               << delta[2] << " m for n = 1, 2, 4; extrapolated " << limit
-                               << " m; Timoshenko " << beam << " m (relative difference "
-                               << limit / beam - 1 << ")");
-      CHECK(ratio > 2);
-      CHECK(limit == Approx(beam).epsilon(model_tolerance));
+      const double F = traction * h * h, I = h * h * h * h / 12, A = h * h;
+      const double G = E / (2 * (1 + nu)), kappa = 10 * (1 + nu) / (12 + 11 * nu);
+      return F * L * L * L / (3 * E * I) + F * L / (kappa * G * A);
     }
-}
+
+    // Mean tip-face deflection (the centroid's, in beam terms) of a Q2 mesh
+    // with n cells across the section and 10 n along the length.
+    double fem_deflection(const double nu, const unsigned int n)
+    {
+      Triangulation<3> mesh;
+      test::cantilever_block(mesh, {10 * n, n, n}, L, h);
+      test::MeshSolverFixture f(
+        test::parameters_from_text("cantilever",
+                                   test::solid_prm("Q2", "log", E, nu,
+                                                   "subsection Solver\n  set Initial load step = 1\n"
+                                                   "end\n")),
+        mesh);
+      LoadState load;
+      load.tip_traction[1] = traction;
+      REQUIRE(f.solver->solve(load).converged);
+      return mean_boundary_displacement(f.solver->space(), f.solver->displacement(),
+                                        boundary::tip)[1];
+    }
+  } // namespace
+
+  TEST_CASE("cantilever tip deflection matches Timoshenko beam theory", "[fem][cantilever]")
+  {
+    for (const auto &[nu, model_tolerance] : {std::pair{0.3, 0.01}, std::pair{0.48, 0.025}})
+      {
+        const double beam = timoshenko_deflection(nu);
+        double       delta[3];
+        for (const unsigned int k : {0u, 1u, 2u})
+          delta[k] = fem_deflection(nu, 1u << k);
+        const double ratio    = (delta[1] - delta[0]) / (delta[2] - delta[1]);
+        const double limit    = delta[2] + (delta[2] - delta[1]) / (ratio - 1);
+        WARN("cantilever, nu = " << nu << ": Q2 delta = " << delta[0] << ", " << delta[1] << ", "
+                                 << delta[2] << " m for n = 1, 2, 4; extrapolated " << limit
+                                 << " m; Timoshenko " << beam << " m (relative difference "
+                                 << limit / beam - 1 << ")");
+        CHECK(ratio > 2);
+        CHECK(limit == Approx(beam).epsilon(model_tolerance));
+      }
+  }
+} // namespace cantilever_test
