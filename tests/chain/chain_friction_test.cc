@@ -245,7 +245,7 @@ TEST_CASE("friction: residual = energy gradient, tangent = central differences, 
       }
 }
 
-TEST_CASE("a load without friction takes one solve; bad friction input is named")
+TEST_CASE("a load without friction takes one solve, bad friction input is named")
 {
   const ChainModel          model    = one_joint();
   const EquilibriumSettings settings = with_penalty();

@@ -137,7 +137,7 @@ TEST_CASE("the protocol's lateral motions: a straight chain's base torques mirro
   CHECK(trace.number(6, "uniform_Tz") == Approx(trace.number(2, "uniform_Tz")).margin(1e-10));
 }
 
-TEST_CASE("no listing: no protocol; a listed sample missing from the database: an error naming it")
+TEST_CASE("no listing, no protocol, and a listed sample missing from the database is an error naming it")
 {
   SyntheticProtocol protocol("protocol_listing");
   CHECK(ProtocolTorques(protocol.database, protocol.dir.file("none.csv")).empty());

@@ -23,6 +23,33 @@ namespace
 {
   const Eigen::Vector3d tip(0.09, 0.0, 0.0);
 
+  // The uniform reduction's files (M2, b = a/2) in a scratch directory.
+  struct UniformFiles
+  {
+    explicit UniformFiles(const std::string &name)
+      : dir(name)
+      , files(dir.path().string(), data::RotationMethod::affine_fit, 0.5)
+    {
+      testing::write_reduction(files, r);
+    }
+    softchain::testing::ScratchDirectory dir;
+    StiffnessFiles                       files;
+    UniformReduction                     r;
+  };
+
+  // Sends std::cerr to `stream` while it lives.
+  class CerrTo
+  {
+  public:
+    explicit CerrTo(std::ostream &stream)
+      : old_(std::cerr.rdbuf(stream.rdbuf()))
+    {}
+    ~CerrTo() { std::cerr.rdbuf(old_); }
+
+  private:
+    std::streambuf *old_;
+  };
+
   // Rewrites the file `path` with `edit` applied to its text.
   template <typename Edit>
   void rewrite_file(const std::string &path, Edit edit)
@@ -88,10 +115,9 @@ TEST_CASE("a joint without a stiffness (NaN) is held rigid about that axis")
   // E.g. P10's joint 1 lies in the solid base fill: the whole closed cavity
   // is distal to it, so the pressure transmits no torque and the reduction
   // writes no k_phi there.
-  softchain::testing::ScratchDirectory dir("chain_rigid_joint");
-  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
-  const UniformReduction               r;
-  testing::write_reduction(files, r);
+  const UniformFiles      uniform("chain_rigid_joint");
+  const StiffnessFiles   &files = uniform.files;
+  const UniformReduction &r     = uniform.r;
   // Joint 1: k_phi (8th column) nan in the stiffness table, and no k_phi(p).
   set_row_field(files.stiffness_path(), "1", 7, "nan");
   for (const char *pressure : {"40000", "80000"})
@@ -123,10 +149,9 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
   // E.g. P10 reduced from only 5 and 10 kPa: at joint 2, next to the base
   // fill, the pressure torque about the bounding-box centre opposes the
   // bending and the reduction writes k_phi < 0.
-  softchain::testing::ScratchDirectory dir("chain_negative_joint");
-  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
-  const UniformReduction               r;
-  testing::write_reduction(files, r);
+  const UniformFiles      uniform("chain_negative_joint");
+  const StiffnessFiles   &files = uniform.files;
+  const UniformReduction &r     = uniform.r;
   set_row_field(files.stiffness_path(), "1", 7, "-0.02");
   for (const char *pressure : {"40000", "80000"})
     set_row_field(files.bending_in_pressure_path(), std::string(pressure) + ",1", 2, "-0.02");
@@ -135,10 +160,11 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
   // Read twice (as `softchain run`'s stages do): each cause warned once,
   // with its count and values.
   std::ostringstream warnings;
-  std::streambuf    *cerr = std::cerr.rdbuf(warnings.rdbuf());
-  const ChainModel model = files.read_model("M2", tip, StiffnessColumn::value, true);
-  files.read_model("M2", tip, StiffnessColumn::value, true);
-  std::cerr.rdbuf(cerr);
+  const ChainModel   model = [&] {
+    const CerrTo to(warnings);
+    files.read_model("M2", tip, StiffnessColumn::value, true);
+    return files.read_model("M2", tip, StiffnessColumn::value, true);
+  }();
   CHECK(softchain::testing::occurrences(warnings.str(), "\n") == 2);
   CHECK(warnings.str().find(files.stiffness_path() + ": k_phi is not a positive stiffness at 1 joint (1: -0.02)") !=
         std::string::npos);
@@ -156,19 +182,17 @@ TEST_CASE("a joint that its table in pressure gives a stiffness is not warned ab
   // E.g. P10's k_psi at joint 7 from the largest torsion sample (50 kPa,
   // the finger curled past 120 degrees) is negative, while its k_psi(p) from
   // the lightest sample per pressure is positive: the chain uses the table.
-  softchain::testing::ScratchDirectory dir("chain_table_covers_joint");
-  const StiffnessFiles                 files(dir.path().string(), data::RotationMethod::affine_fit, 0.5);
-  const UniformReduction               r;
-  testing::write_reduction(files, r);
+  const UniformFiles      uniform("chain_table_covers_joint");
+  const StiffnessFiles   &files = uniform.files;
+  const UniformReduction &r     = uniform.r;
   set_row_field(files.stiffness_path(), "2", 7, "-0.03");
   std::ostringstream warnings;
-  std::streambuf    *cerr = std::cerr.rdbuf(warnings.rdbuf());
+  const CerrTo       to(warnings);
   const ChainModel   in_pressure = files.read_model("M2", tip, StiffnessColumn::value, true);
   CHECK(warnings.str().find("is not a positive stiffness") == std::string::npos);
   // Without the tables in pressure the stiffness table's value is used, and
   // the joint is held rigid with the warning.
   const ChainModel at_rest = files.read_model("M2", tip, StiffnessColumn::value, false);
-  std::cerr.rdbuf(cerr);
   CHECK(warnings.str().find(files.stiffness_path() + ": k_phi is not a positive stiffness at 1 joint (2: -0.03)") !=
         std::string::npos);
   CHECK(in_pressure.stiffness().diagonal(r.p_max)[5] < 1e3 * r.k[2]);

@@ -86,7 +86,7 @@ namespace tip_motion_protocol_test
     CHECK(std::abs(protocol.reached(trials)->angle - 60 * degree) <= 0.5 * degree);
   }
 
-  TEST_CASE("a tip angle beyond the limit point is not reached; the trials close in on the limit")
+  TEST_CASE("a tip angle beyond the limit point is not reached, the trials close in on the limit")
   {
     // No equilibrium past 42 kPa (a limit point), where the angle is 86.3 deg.
     const auto limited = [](double p) { return p <= 4.2e4 ? saturating(p) : NAN; };

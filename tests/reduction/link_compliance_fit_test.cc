@@ -72,7 +72,7 @@ TEST_CASE("a uniform stretch along a pulling force: c is the tip's stretch over 
   CHECK(fit.table().n_rows() == 1);
 }
 
-TEST_CASE("a force the links give against gives c = 0, no pressure state no row; both warn")
+TEST_CASE("a force the links give against gives c = 0, no pressure state no row, both warn")
 {
   const data::MeshRecord mesh = testing::layer_finger_mesh(false);
   const Eigen::Vector3d  tip  = data::TipPoseFit::of_mesh(mesh, "box").reference_centroid();

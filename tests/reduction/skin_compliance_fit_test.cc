@@ -79,7 +79,7 @@ TEST_CASE("a squeezed and turned section: c_s is the palm's give over the force 
     }
 }
 
-TEST_CASE("a palm that moves against its force gives c_s = 0, no pressure state no row; both warn")
+TEST_CASE("a palm that moves against its force gives c_s = 0, no pressure state no row, both warn")
 {
   const data::MeshRecord mesh = testing::layer_finger_mesh(false);
   SECTION("pushed out against the force")
