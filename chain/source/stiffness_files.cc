@@ -295,11 +295,12 @@ namespace softchain::chain
       std::vector<PiecewiseLinear> result;
       uses_fallback.assign(n, false);
       for (int i = 0; i < n; ++i)
-        uses_fallback[i] = per_joint[i].empty();
-      for (int i = 0; i < n; ++i)
-        result.push_back(per_joint[i].empty() ?
-                           PiecewiseLinear({0.0}, {fallback[i][axis]}) :
-                           in_pressure(per_joint[i], path, column + " for joint " + std::to_string(i + 1)));
+        {
+          uses_fallback[i] = per_joint[i].empty();
+          result.push_back(uses_fallback[i] ?
+                             PiecewiseLinear({0.0}, {fallback[i][axis]}) :
+                             in_pressure(per_joint[i], path, column + " for joint " + std::to_string(i + 1)));
+        }
       return result;
     }
 

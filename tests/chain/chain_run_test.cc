@@ -10,6 +10,7 @@
 
 #include "../data/occurrences.h"
 #include "../data/scratch_directory.h"
+#include "../data/stream_redirect.h"
 #include "box_mesh.h"
 #include "reduction_output.h"
 
@@ -24,19 +25,6 @@ using namespace softchain;
 
 namespace
 {
-  // std::cout into `stream` while it lives.
-  class CoutTo
-  {
-  public:
-    explicit CoutTo(std::ostream &stream)
-      : old_(std::cout.rdbuf(stream.rdbuf()))
-    {}
-    ~CoutTo() { std::cout.rdbuf(old_); }
-
-  private:
-    std::streambuf *old_;
-  };
-
   const char *chain_prm = "subsection Finger design\n  set Length = 0.09\nend\n"
                           "subsection Chain\n"
                           "  set Stiffness method = M2\n"
@@ -285,7 +273,7 @@ TEST_CASE("run_chain compares contact samples in force and pose and writes grasp
   }
   std::ostringstream printed;
   {
-    CoutTo capture(printed);
+    const softchain::testing::StreamRedirect capture(std::cout, printed);
     REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, false) == 0);
   }
   const data::CsvTable table = data::CsvTable::read(out + "/chain/validation.csv");
@@ -402,7 +390,7 @@ TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's twist pivo
   write_database(dir.file("database.h5"), files.read_model("M2", {0.09, 0, 0}, StiffnessColumn::value, true), mesh);
   std::ostringstream printed;
   {
-    const CoutTo to(printed);
+    const softchain::testing::StreamRedirect to(std::cout, printed);
     REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, true) == 0);
   }
   std::ifstream     xml(out + "/chain/finger.xml");

@@ -3,6 +3,7 @@
 #include <softchain/data/input_error.h>
 
 #include "../data/scratch_directory.h"
+#include "../data/stream_redirect.h"
 #include "reduction_output.h"
 
 #include <catch2/catch.hpp>
@@ -35,19 +36,6 @@ namespace
     softchain::testing::ScratchDirectory dir;
     StiffnessFiles                       files;
     UniformReduction                     r;
-  };
-
-  // Sends std::cerr to `stream` while it lives.
-  class CerrTo
-  {
-  public:
-    explicit CerrTo(std::ostream &stream)
-      : old_(std::cerr.rdbuf(stream.rdbuf()))
-    {}
-    ~CerrTo() { std::cerr.rdbuf(old_); }
-
-  private:
-    std::streambuf *old_;
   };
 
   // Rewrites the file `path` with `edit` applied to its text.
@@ -161,7 +149,7 @@ TEST_CASE("a joint with a negative stiffness is held rigid like one without")
   // with its count and values.
   std::ostringstream warnings;
   const ChainModel   model = [&] {
-    const CerrTo to(warnings);
+    const softchain::testing::StreamRedirect to(std::cerr, warnings);
     files.read_model("M2", tip, StiffnessColumn::value, true);
     return files.read_model("M2", tip, StiffnessColumn::value, true);
   }();
@@ -187,7 +175,7 @@ TEST_CASE("a joint that its table in pressure gives a stiffness is not warned ab
   const UniformReduction &r     = uniform.r;
   set_row_field(files.stiffness_path(), "2", 7, "-0.03");
   std::ostringstream warnings;
-  const CerrTo       to(warnings);
+  const softchain::testing::StreamRedirect to(std::cerr, warnings);
   const ChainModel   in_pressure = files.read_model("M2", tip, StiffnessColumn::value, true);
   CHECK(warnings.str().find("is not a positive stiffness") == std::string::npos);
   // Without the tables in pressure the stiffness table's value is used, and
