@@ -24,11 +24,20 @@ namespace softchain::chain
     std::vector<double> pressures = springs.table_pressures();
     for (const Table &table : per_joint_)
       merge_abscissae(table.pressures, pressures);
+    std::vector<double> forced = springs.table_pressures(0); // where force samples were made
+    merge_abscissae(springs.table_pressures(1), forced);
     std::vector<Table> complete(per_joint_.size());
     for (std::size_t i = 0; i < per_joint_.size(); ++i)
       for (const double p : pressures)
         {
           const Table &fitted = per_joint_[i];
+          // Between two laws of this joint, at a pressure without force
+          // samples (a pressure sample's k_phi), the laws blend.
+          const bool between = !fitted.pressures.empty() && fitted.pressures.front() < p &&
+                               p < fitted.pressures.back();
+          if (between && !std::binary_search(forced.begin(), forced.end(), p) &&
+              !std::binary_search(fitted.pressures.begin(), fitted.pressures.end(), p))
+            continue;
           const auto   at     = std::find(fitted.pressures.begin(), fitted.pressures.end(), p);
           data::FabricHinge hinge;
           if (at != fitted.pressures.end())

@@ -35,6 +35,13 @@ namespace softchain::chain
     return pressures;
   }
 
+  std::vector<double> JointStiffness::table_pressures(const int axis) const
+  {
+    std::vector<double> pressures;
+    merge_abscissae(in_pressure_[axis], pressures);
+    return pressures;
+  }
+
   Eigen::VectorXd JointStiffness::diagonal(double pressure) const
   {
     Eigen::VectorXd k;

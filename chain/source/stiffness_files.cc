@@ -320,9 +320,10 @@ namespace softchain::chain
           hinge.kappa   = finite_number(table, path, row, "kappa");
           hinge.r       = finite_number(table, path, row, "r");
           hinge.theta_0 = finite_number(table, path, row, "theta_0");
-          if (!(hinge.k.minCoeff() > 0) || hinge.kappa < 0 || hinge.theta_0 < 0)
-            throw InputError(where(path, row) +
-                             "k_psi, k_theta and k_phi must be positive, kappa and theta_0 not negative");
+          hinge.layer_give = table.has_column("layer_give") ? finite_number(table, path, row, "layer_give") : 0.0;
+          if (!(hinge.k.minCoeff() > 0) || hinge.kappa < 0 || hinge.theta_0 < 0 || hinge.layer_give < 0)
+            throw InputError(where(path, row) + "k_psi, k_theta and k_phi must be positive, kappa, "
+                                                "theta_0 and layer_give not negative");
           const int joint = joint_index(table, path, row, n);
           if (!per_joint[joint].emplace(finite_number(table, path, row, "pressure"), hinge).second)
             throw InputError(where(path, row) + "pressure " + table.text(row, "pressure") +

@@ -14,7 +14,7 @@ namespace softchain::reduction
   StiffnessTables::StiffnessTables(const MethodReduction &reduction, const ReductionParameters &parameters)
     : reduction_(reduction)
     , parameters_(parameters)
-    , joint_law_(reduction.samples(), parameters, reduction.geometry().n_joints())
+    , joint_law_(reduction.samples(), parameters, reduction.geometry().n_joints(), in_plane_stiffness())
   {}
 
   std::vector<const SampleReduction *> StiffnessTables::pressure_samples() const
@@ -70,6 +70,19 @@ namespace softchain::reduction
           table.add_row(cells);
         }
     return table;
+  }
+
+  std::vector<std::map<double, double>> StiffnessTables::in_plane_stiffness() const
+  {
+    std::vector<std::map<double, double>> k(reduction_.geometry().n_joints());
+    const CsvTable table = kphi_vs_pressure();
+    for (std::size_t row = 0; row < table.n_rows(); ++row)
+      {
+        const double value = table.number(row, "k_phi");
+        if (std::isfinite(value))
+          k[static_cast<std::size_t>(table.number(row, "joint")) - 1][table.number(row, "pressure")] = value;
+      }
+    return k;
   }
 
   // The pressure samples' k_phi, then for the joints that no pressure sample

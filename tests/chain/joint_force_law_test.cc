@@ -2,7 +2,8 @@
 // its tangent the residual's (central differences) with the fabric hinges
 // blended in pressure; the pressure-only state is unchanged by the law; a
 // law is completed with the linear springs at pressures it was not fitted
-// at; and the joint-law file is read, or rejected naming its row.
+// at, except between two of its laws where no force sample was made; and
+// the joint-law file is read, or rejected naming its row.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/joint_force_law.h>
 #include <softchain/chain/stiffness_files.h>
@@ -131,6 +132,29 @@ TEST_CASE("a law is completed with the linear springs at the pressures it lacks"
   CHECK((complete.at(4e4, 0).evaluate(d).torque - expected).norm() < 1e-15 * expected.norm());
 }
 
+TEST_CASE("between two laws, at a pressure without force samples, the laws blend")
+{
+  // Laws at 0 and 4e4; the springs' k_phi(p) (pressure samples) holds 2e4,
+  // their k_theta(p) (force samples) 0, 4e4 and 8e4. At 2e4 no linear knot
+  // is put between the laws (the finger there is neither's, and the linear
+  // springs of the lightest forces would replace both); at 8e4, beyond the
+  // last law, the springs hold as before.
+  JointStiffness springs(std::vector<Eigen::Vector3d>(1, Eigen::Vector3d(1, 2, 3)));
+  springs.set_in_pressure(2, {PiecewiseLinear({2e4}, {3.0})});
+  springs.set_in_pressure(1, {PiecewiseLinear({0.0, 4e4, 8e4}, {2.0, 2.5, 3.0})});
+  const JointForceLaw complete = JointForceLaw({{{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}}}).completed_with(springs);
+  REQUIRE(complete.table(0).pressures == std::vector<double>{0.0, 4e4, 8e4});
+  const Eigen::Vector3d d(0.01, 0.02, -0.01);
+  const Eigen::Vector3d expected = 0.5 * (hinge(1, 0).evaluate(d).torque + hinge(2, 0.01).evaluate(d).torque);
+  CHECK((complete.at(2e4, 0).evaluate(d).torque - expected).norm() < 1e-15 * expected.norm());
+  // A pressure of force samples where no law was fitted stays a knot.
+  springs.set_in_pressure(1, {PiecewiseLinear({0.0, 2e4, 4e4}, {2.0, 2.2, 2.5})});
+  const JointForceLaw with_samples =
+    JointForceLaw({{{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}}}).completed_with(springs);
+  REQUIRE(with_samples.table(0).pressures == std::vector<double>{0.0, 2e4, 4e4});
+  CHECK(with_samples.table(0).hinges[1].kappa == 0.0);
+}
+
 TEST_CASE("the joint-law file gives the chain its law, and bad rows are input errors naming the row")
 {
   softchain::testing::ScratchDirectory dir("chain_joint_law");
@@ -157,4 +181,15 @@ TEST_CASE("the joint-law file gives the chain its law, and bad rows are input er
   write_law("0,2,0.03,0.01,0.02,0.05,0.3,0,9,0.04\n");
   CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
                     Catch::Contains("row 2") && Catch::Contains("listed twice for joint 2"));
+  // The layer's give (a later column; files without it have none).
+  const auto write_given = [&](const std::string &give) {
+    std::ofstream out(files.joint_law_path());
+    out << "pressure,joint,k_psi,k_theta,k_phi,kappa,r,theta_0,layer_give,samples,relative_residual\n"
+        << "2e4,2,0.03,0.5,0.02,4,0.8,0.002," << give << ",11,0.08\n";
+  };
+  write_given("8");
+  CHECK(files.read_model("M2", tip, StiffnessColumn::value, true).force_law()->table(1).hinges.front().layer_give == 8.0);
+  write_given("-1");
+  CHECK_THROWS_WITH(files.read_model("M2", tip, StiffnessColumn::value, true),
+                    Catch::Contains("row 1") && Catch::Contains("layer_give not negative"));
 }

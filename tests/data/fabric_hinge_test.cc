@@ -98,3 +98,77 @@ TEST_CASE("a lateral turn at rest stretches one edge, which bends the joint in i
   CHECK(slack.torque[2] == Approx(h.k[2] * -0.05).epsilon(1e-15));
   CHECK(slack.tangent.isApprox(Eigen::Matrix3d(h.k.asDiagonal()), 1e-15));
 }
+
+namespace
+{
+  // The inflated finger's layer: pre-stretched, and free to stretch on its
+  // own against the silicone (layer_give g = kappa / k_axial).
+  FabricHinge prestressed(double give)
+  {
+    FabricHinge h = hinge(0.004);
+    h.kappa       = 4.0;
+    h.r           = 1.0;
+    h.layer_give  = give;
+    return h;
+  }
+} // namespace
+
+TEST_CASE("with the layer's give the torque and tangent are still the energy's derivatives")
+{
+  // W(d) = min_e V(e, d) is piecewise quadratic: central differences are
+  // exact up to round-off away from its kinks (1e-8 as above). The
+  // increments have both, one or no edge taut (theta_0 = 0.004, the layer's
+  // stretch e* moving with r d_phi).
+  const double h = 1e-6;
+  for (const double give : {0.5, 8.0})
+    for (const Eigen::Vector3d &d : {Eigen::Vector3d(0.001, 0.002, 0.001), Eigen::Vector3d(-0.02, 0.03, 0.01),
+                                     Eigen::Vector3d(0.01, -0.05, -0.02), Eigen::Vector3d(0.0, 0.001, -0.2)})
+      {
+        const FabricHinge        law = prestressed(give);
+        const FabricHinge::Value v   = law.evaluate(d);
+        Eigen::Vector3d          gradient;
+        Eigen::Matrix3d          jacobian;
+        for (int a = 0; a < 3; ++a)
+          {
+            const Eigen::Vector3d e     = h * Eigen::Vector3d::Unit(a);
+            const auto            plus  = law.evaluate(d + e);
+            const auto            minus = law.evaluate(d - e);
+            gradient[a]                 = (plus.energy - minus.energy) / (2 * h);
+            jacobian.col(a)             = (plus.torque - minus.torque) / (2 * h);
+          }
+        CHECK((gradient - v.torque).cwiseAbs().maxCoeff() < 1e-8 * v.torque.cwiseAbs().maxCoeff());
+        CHECK((jacobian - v.tangent).cwiseAbs().maxCoeff() < 1e-8 * v.tangent.cwiseAbs().maxCoeff());
+        CHECK(v.tangent.llt().info() == Eigen::Success);
+        // The pressure state stays in equilibrium, and the law mirror-symmetric.
+        CHECK(law.evaluate(Eigen::Vector3d::Zero()).torque.isZero(0.0));
+        CHECK((law.evaluate(mirror * d).torque - mirror * v.torque).norm() < 1e-14 * v.torque.norm());
+      }
+}
+
+TEST_CASE("a pre-stressed layer that gives holds a lateral turn stiffly up to its knee, then softly")
+{
+  // Both edges taut (|d_theta| < theta_0, d_phi = 0): e* = 0 and the
+  // lateral slope is k_theta + 2 kappa; in the plane the layer's stretch
+  // follows r d_phi, leaving k_phi + 2 kappa r^2 / (1 + 2 g). Past the knee
+  // one edge is taut: e* = (theta_0 - |d_theta|) g / (1 + g) and the slope
+  // k_theta + kappa / (1 + g) (the Schur complement of the header).
+  const double      give = 8.0;
+  const FabricHinge law  = prestressed(give);
+  const double      t    = 0.5 * law.theta_0;
+  const auto        stiff = law.evaluate(Eigen::Vector3d(0.0, t, 0.0));
+  CHECK(law.layer_stretch(Eigen::Vector3d(0.0, t, 0.0)) == 0.0);
+  CHECK(stiff.torque[1] == Approx((law.k[1] + 2 * law.kappa) * t).epsilon(1e-14));
+  CHECK(stiff.tangent(2, 2) ==
+        Approx(law.k[2] + 2 * law.kappa * law.r * law.r / (1 + 2 * give)).epsilon(1e-14));
+  const double past = 5.0 * law.theta_0;
+  const auto   soft = law.evaluate(Eigen::Vector3d(0.0, past, 0.0));
+  CHECK(law.layer_stretch(Eigen::Vector3d(0.0, past, 0.0)) ==
+        Approx((law.theta_0 - past) * give / (1 + give)).epsilon(1e-14));
+  CHECK(soft.tangent(1, 1) == Approx(law.k[1] + law.kappa / (1 + give)).epsilon(1e-14));
+  // The one taut edge also pulls the joint in its plane (w = (0, -u, r)).
+  CHECK(std::abs(soft.torque[2]) > 0.1 * std::abs(soft.torque[1]));
+  // Without give the layer's stretch is fixed: the classic hinge.
+  FabricHinge fixed = law;
+  fixed.layer_give  = 0.0;
+  CHECK(fixed.layer_stretch(Eigen::Vector3d(0.0, past, 0.0)) == 0.0);
+}

@@ -30,6 +30,8 @@ namespace softchain::chain
     // The tabulated pressures of every k(p) table (sorted, unique; empty if
     // K is constant): K(p) is linear between consecutive ones.
     std::vector<double> table_pressures() const;
+    // The same of one axis' tables.
+    std::vector<double> table_pressures(int axis) const;
 
     // diag(K) = (k_psi,0, k_theta,0, k_phi,0, ...) at pressure p.
     Eigen::VectorXd diagonal(double pressure) const;

@@ -23,6 +23,27 @@
 // the finger in its plane, so the tip drops whichever side it is pushed; a
 // pre-stretched layer (theta_0 > 0) holds small lateral loads stiffly with
 // both edges and softens when one goes slack.
+//
+// The layer's line may also stretch on its own (layer_give g > 0): the
+// silicone holds the layer's mean stretch e with a stiffness kappa / g, and
+// the pressure's axial pull balances the edges' pre-tension 2 kappa theta_0
+// (as a pre-stressed section whose gas pulls its ends apart):
+//   W(d) = min_e V(e, d),
+//   V = 1/2 sum_a k_a d_a^2 + kappa [e^2 / (2 g) + 1/2 sum_u (<e_u>+^2 - theta_0^2)
+//                                    - 2 theta_0 e - theta_0 sum_u w_u . d],
+//   e_u = theta_0 + e + w_u . d,
+// convex in (e, d) and so W in d. Its e*(d) solves the increasing, piecewise
+// linear e / g + sum_u <e_u>+ = 2 theta_0; by the envelope theorem the torque
+// keeps the form above with e* in e_u, and the tangent loses the layer's
+// stretch (a Schur complement over the taut edges U):
+//   H = diag(k) + kappa [sum_U w w^T - (sum_U w)(sum_U w)^T / (1/g + |U|)].
+// What this adds: both edges taut, the layer resists a lateral turn by
+// 2 kappa but an in-plane one hardly at all (e follows r d_phi); past the
+// knee (the slack edge's pre-stretch used up, |d_theta| ~ theta_0) the one
+// taut edge pulls with the pre-tension plus kappa g' (g' = 1 / (1 + g))
+// times its stretch: the joint saturates at the pressure's pull and turns
+// on like a joint at rest, bending in its plane as it does. g = 0 is the
+// layer of fixed mean stretch above.
 
 #include <Eigen/Core>
 
@@ -34,6 +55,10 @@ namespace softchain::data
     double          kappa   = 0.0;                      // N m / rad, the fibres' stiffness
     double          r       = 0.0;                      // in-plane over lateral lever
     double          theta_0 = 0.0;                      // rad, pre-stretch
+    double          layer_give = 0.0;                   // g = kappa / k_axial; 0: e = 0
+
+    // e*(d): the layer's mean stretch at the increment d (0 without give).
+    double layer_stretch(const Eigen::Vector3d &d) const;
 
     struct Value
     {

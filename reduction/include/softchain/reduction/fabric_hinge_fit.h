@@ -31,6 +31,7 @@
 #include <softchain/reduction/reduction_parameters.h>
 #include <softchain/reduction/sample_reduction.h>
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -40,8 +41,11 @@ namespace softchain::reduction
   class FabricHingeFit
   {
   public:
+    // `in_plane`: per joint, the chain's k_phi(p) at the pressures where it
+    // has one (kphi_vs_pressure): an inflated law keeps it as its in-plane
+    // tangent at the pressure state.
     FabricHingeFit(const std::vector<SampleReduction> &samples, const ReductionParameters &parameters,
-                   std::size_t n_joints);
+                   std::size_t n_joints, const std::vector<std::map<double, double>> &in_plane = {});
 
     struct Fit
     {
@@ -63,12 +67,38 @@ namespace softchain::reduction
     // One force sample's increment at one joint.
     struct Increment
     {
+      // twist: a torsion role (only its psi rows are fitted); lateral: a
+      // lateral role; bend: the other force roles.
+      enum class Kind
+      {
+        twist,
+        lateral,
+        bend
+      };
       std::string     role;
       double          pressure;
       double          force;  // N, the sample's force_norm
       Eigen::Vector3d angle;  // d q
       Eigen::Vector3d torque; // d tau
       bool            past_force_limit = false; // the sample buckled on the way
+      Kind            kind             = Kind::bend;
+    };
+    // What an inflated law (p > 0) keeps (the header's rules): its in-plane
+    // tangent at the pressure state (NaN: free), a knee torque 2 kappa
+    // theta_0 within [knee_low, knee_high], k_theta of at least
+    // k_theta_floor; at rest (inflated false) nothing.
+    struct Constraints
+    {
+      bool   inflated      = false;
+      double in_plane      = std::numeric_limits<double>::quiet_NaN();
+      double knee_low      = 0.0;
+      double knee_high     = 0.0;
+      double k_theta_floor = 0.0;
+      // Whether a fibre candidate (x = k_theta, k_phi, kappa, and its
+      // weighted squared residual) meets them, the springs alone leaving
+      // `springs_residual`.
+      bool admit(const data::FabricHinge &trial, const Eigen::Vector3d &x, double residual,
+                 double springs_residual) const;
     };
     // Those turning the joint by at least `threshold`, per role up to the
     // first past a limit point (the rest counted in `n_past_limit`).
@@ -76,9 +106,15 @@ namespace softchain::reduction
                                          int &n_past_limit);
     // The law of one joint at one pressure (hinge, n_samples and
     // relative_residual of `result`); false without a positive fit.
-    static bool fit(const std::vector<Increment> &increments, Fit &result);
+    static bool fit(const std::vector<Increment> &increments, Fit &result, const Constraints &constraints);
+    static bool fit(const std::vector<Increment> &increments, Fit &result); // unconstrained
 
   private:
+    // Inflated (p > 0): the chain's k_phi(p) of the joint as the in-plane
+    // tangent to keep, and the lateral samples' lightest |d tau_theta| as the
+    // knee's floor; at rest none.
+    Constraints constraints(const std::vector<Increment> &increments, double pressure, std::size_t joint,
+                            const std::vector<std::map<double, double>> &in_plane) const;
     // Per joint and pressure, the increments of every force sample that has
     // a pressure-only state at its pressure.
     static std::vector<std::map<double, std::vector<Increment>>>

@@ -55,6 +55,8 @@ namespace softchain::reduction
     // in sample id order), by increasing pressure: the pressure tables hold
     // one row per (pressure, joint), the rest configuration being p = 0.
     std::vector<const SampleReduction *> pressure_samples() const;
+    // Per joint, k_phi(p) of kphi_vs_pressure (the chain's in-plane springs).
+    std::vector<std::map<double, double>> in_plane_stiffness() const;
 
     const MethodReduction     &reduction_;
     ReductionParameters        parameters_;
