@@ -45,9 +45,9 @@ namespace softchain::reduction
 
     // The weighted least squares of the theta and phi rows of the samples
     // that do not twist the joint,
-    //   d tau_theta = k_theta d theta + kappa g_theta,  d tau_phi = k_phi d phi + kappa g_phi,
-    // at the hinge's r, theta_0 and give (g = 0 and kappa = 0 without
-    // fibres), by its normal equations N x = b; the residual
+    //   d tau_theta = k_theta d theta + kappa t_theta,  d tau_phi = k_phi d phi + kappa t_phi,
+    // t the fibres' torque per unit kappa at the hinge's r, theta_0 and give
+    // (t = 0 and kappa = 0 without fibres), by its normal equations N x = b; the residual
     // |A x - b|^2 = |b|^2 - x.b. With an in-plane stiffness k_p to keep,
     // the law's tangent about phi at d = 0, k_phi + kappa f (f: the fibres'
     // per unit kappa), is held at k_p: k_phi = k_p - kappa f, and
@@ -68,11 +68,11 @@ namespace softchain::reduction
           const Increment &in = increments[s];
           if (in.kind == Increment::Kind::twist)
             continue;
-          const Eigen::Vector3d g  = with_fibres ? hinge.fibre_torque_per_kappa(in.angle) : Eigen::Vector3d::Zero();
+          const Eigen::Vector3d t  = with_fibres ? hinge.fibre_torque_per_kappa(in.angle) : Eigen::Vector3d::Zero();
           const double          w2 = weight[s] * weight[s];
           const double          phi_torque = tied ? in.torque[2] - in_plane * in.angle[2] : in.torque[2];
-          const Eigen::Vector3d theta_row(in.angle[1], 0.0, g[1]);
-          const Eigen::Vector3d phi_row(0.0, tied ? 0.0 : in.angle[2], tied ? g[2] - f * in.angle[2] : g[2]);
+          const Eigen::Vector3d theta_row(in.angle[1], 0.0, t[1]);
+          const Eigen::Vector3d phi_row(0.0, tied ? 0.0 : in.angle[2], tied ? t[2] - f * in.angle[2] : t[2]);
           N += w2 * (theta_row * theta_row.transpose() + phi_row * phi_row.transpose());
           b += w2 * (theta_row * in.torque[1] + phi_row * phi_torque);
           bb += w2 * (in.torque[1] * in.torque[1] + phi_torque * phi_torque);

@@ -6,16 +6,34 @@
 // the pressure-only state at the same pressure (as ForceIncrementStiffness
 // measures them: d q = q_i(s) - q_i(b), d tau = tau_i(s) - tau_i(b)).
 //
-// The fit. At fixed lever ratio r and pre-stretch theta_0 the torque is
-// linear in (k_psi, k_theta, k_phi, kappa):
-//   d tau = diag(k) d q + kappa g(d q; r, theta_0)   (FabricHinge)
-// so it is a linear least-squares problem, each sample's three rows weighted
-// by 1 / |d tau| (every force level counts alike). k_psi has rows of its
-// own; (k_theta, k_phi, kappa) are solved on a grid of r in [-3, 3] (step
-// 0.05) and theta_0 in {0} and max|d theta| 2^(-i/2), i = 0..20, and the
-// linear springs alone (kappa = 0); the smallest residual with every k > 0
-// and kappa >= 0 wins. A grid holds the r and theta_0 of a law it was made
-// from, so such samples are fitted exactly (tested).
+// The fit. At fixed lever ratio r, pre-stretch theta_0 and layer give g
+// the torque is linear in (k_psi, k_theta, k_phi, kappa):
+//   d tau = diag(k) d q + kappa t(d q; r, theta_0, g)   (FabricHinge, t the
+//   fibres' torque per unit kappa)
+// so it is a linear least-squares problem, each sample's rows weighted by
+// 1 / |d tau| (every force level counts alike). k_psi has rows of its own
+// (every sample's); (k_theta, k_phi, kappa) are solved on a grid of r in
+// [-3, 3] (step 0.05), theta_0 in {0} and max|d theta| 2^(-i/2), i = 0..20,
+// and g in {0} and 2^(l-2), l = 0..8, and the linear springs alone (kappa
+// = 0); the smallest residual with every k > 0 and kappa >= 0 wins. A grid
+// holds the r, theta_0 and g of a law it was made from, so such samples are
+// fitted exactly (tested). The torsion samples' theta and phi rows are left
+// out: a couple tilts theta with psi without a torque about theta, which no
+// law reproduces (docs/chain_fidelity.md, "theta of the inflated finger").
+//
+// Inflated (p > 0) the layer is pre-stressed, and a law must (Constraints)
+// - keep the in-plane tangent at the pressure state, k_phi + kappa f, at
+//   the chain's k_phi(p) (in_plane): the secant that a blocked finger's
+//   straightening spans;
+// - have theta_0 > 0 and its knee torque 2 kappa theta_0 within the lateral
+//   samples' |d tau_theta|: they show the stiff start and the soft
+//   continuation (P10 at 40 and 50 kPa stays below its knee; a knee under
+//   the lightest force let the blocked finger twist out of its plane);
+// - keep k_theta at least the rest law's of the joint (inflating does not
+//   soften the silicone);
+// - at least halve the springs' residual (a quarter of its square): the
+//   fibres add four parameters.
+// Measured on P10: reduction/README.md, docs/chain_fidelity.md.
 //
 // Samples used: those turning the joint by at least the rotation threshold,
 // per role and pressure by increasing force while |d q| and |d tau| keep
@@ -111,8 +129,9 @@ namespace softchain::reduction
 
   private:
     // Inflated (p > 0): the chain's k_phi(p) of the joint as the in-plane
-    // tangent to keep, and the lateral samples' lightest |d tau_theta| as the
-    // knee's floor; at rest none.
+    // tangent to keep, the lateral samples' range of |d tau_theta| as the
+    // knee's, and the rest law's k_theta as the floor of k_theta (fits_ so
+    // far); at rest none.
     Constraints constraints(const std::vector<Increment> &increments, double pressure, std::size_t joint,
                             const std::vector<std::map<double, double>> &in_plane) const;
     // Per joint and pressure, the increments of every force sample that has
