@@ -196,8 +196,9 @@ namespace softchain::reduction
     if (summary.n_without_law > 0)
       std::cerr << "softchain reduce: warning: joint law: " << summary.n_without_law
                 << " (joint, pressure) pairs over all methods and b have no fabric-hinge law (no "
-                   "positive fit, or one missing the torques by more than 15 %: on an inflated "
-                   "finger a lateral force twists first); the chain keeps linear springs there\n";
+                   "positive fit, one missing the torques by more than 15 %, or, inflated, none "
+                   "whose knee the lateral samples pass: reduction/README.md); the chain keeps "
+                   "linear springs there\n";
     if (parameters.plots)
       summary.plots_drawn = draw_plots(directory, labels, parameters.joint_spacing);
     return summary;
