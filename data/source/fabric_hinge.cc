@@ -38,7 +38,11 @@ namespace softchain::data
 
   Eigen::Vector3d FabricHinge::fibre_torque_per_kappa(const Eigen::Vector3d &d) const
   {
-    const double    e = layer_stretch(d);
+    return fibre_torque_per_kappa(d, layer_stretch(d));
+  }
+
+  Eigen::Vector3d FabricHinge::fibre_torque_per_kappa(const Eigen::Vector3d &d, const double e) const
+  {
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     for (const double u : {-1.0, 1.0})
       {
@@ -53,7 +57,7 @@ namespace softchain::data
     const double e = layer_stretch(d);
     Value        v;
     v.energy  = 0.5 * d.dot(k.cwiseProduct(d));
-    v.torque  = k.cwiseProduct(d) + kappa * fibre_torque_per_kappa(d);
+    v.torque  = k.cwiseProduct(d) + kappa * fibre_torque_per_kappa(d, e);
     v.tangent = k.asDiagonal();
     if (layer_give > 0.0)
       v.energy += kappa * (0.5 * e * e / layer_give - 2.0 * theta_0 * e);

@@ -71,5 +71,9 @@ namespace softchain::data
     // T(d) = diag(k) d + kappa g(d): the fibres' part per unit kappa, for a
     // fit linear in (k, kappa) at fixed r and theta_0.
     Eigen::Vector3d fibre_torque_per_kappa(const Eigen::Vector3d &d) const;
+
+  private:
+    // The same at the layer's stretch e (layer_stretch(d)), computed once by evaluate().
+    Eigen::Vector3d fibre_torque_per_kappa(const Eigen::Vector3d &d, double e) const;
   };
 } // namespace softchain::data
