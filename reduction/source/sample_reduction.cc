@@ -86,7 +86,7 @@ namespace softchain::reduction
         const data::TipPose tip =
           data::TipPoseFit::of_mesh(mesh, sample.id).fit(data::select_nodes(sample.x, mesh.tip_nodes));
         centres.push_back(tip.position);
-        set_link_geometry(centres, link_rotations);
+        link_geometry_ = link_points(centres, link_rotations);
         const Eigen::AngleAxisd tip_frame(link_rotations.back().transpose() * tip.rotation);
         tip_frame_ = tip_frame.angle() * tip_frame.axis();
       }
@@ -112,13 +112,6 @@ namespace softchain::reduction
             about_centre.z()};
   }
 
-  // The chain's link geometry at this sample (chain/link_geometry.h): the
-  // joint and tip positions U at zero angles from which the chain, its link
-  // i turned by R_i (the rotation the sample's angles give it), lands on the
-  // deformed joint centres J_i and the tip centroid T:
-  //   U_1 = J_1,   U_i+1 = U_i + R_i^T (J_i+1 - J_i)   (J_n+1 = T),
-  // and the tip face's frame R_T (TipPoseFit) in the last link's frame,
-  // Q_T = R_n^T R_T, kept as its rotation vector.
   Eigen::Vector3d SampleReduction::carried_from(const SampleReduction &pressure_state, const std::size_t link,
                                                 const Eigen::Vector3d &y_p) const
   {
@@ -134,13 +127,20 @@ namespace softchain::reduction
     return x + link_rotations_[link] * offset;
   }
 
-  void SampleReduction::set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
-                                          const std::vector<Eigen::Matrix3d> &link_rotations)
+  // The chain's link geometry at this sample (chain/link_geometry.h): the
+  // joint and tip positions U at zero angles from which the chain, its link
+  // i turned by R_i (the rotation the sample's angles give it), lands on the
+  // deformed joint centres J_i and the tip centroid T:
+  //   U_1 = J_1,   U_i+1 = U_i + R_i^T (J_i+1 - J_i)   (J_n+1 = T),
+  // and the tip face's frame R_T (TipPoseFit) in the last link's frame,
+  // Q_T = R_n^T R_T, kept as its rotation vector.
+  std::vector<Eigen::Vector3d> SampleReduction::link_points(const std::vector<Eigen::Vector3d> &deformed,
+                                                            const std::vector<Eigen::Matrix3d> &link_rotations)
   {
-    link_geometry_  = {deformed.front()};
+    std::vector<Eigen::Vector3d> points{deformed.front()};
     for (std::size_t i = 0; i + 1 < deformed.size(); ++i)
-      link_geometry_.push_back(link_geometry_.back() +
-                               link_rotations[i].transpose() * (deformed[i + 1] - deformed[i]));
+      points.push_back(points.back() + link_rotations[i].transpose() * (deformed[i + 1] - deformed[i]));
+    return points;
   }
 
   double SampleReduction::force_norm() const

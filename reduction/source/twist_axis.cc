@@ -1,5 +1,6 @@
 // TwistAxis: t fitted to the torsion samples' tip-face centroids.
 #include <softchain/data/tip_pose_fit.h>
+#include <softchain/reduction/sample_reduction.h>
 #include <softchain/reduction/twist_axis.h>
 
 #include <Eigen/Geometry>
@@ -44,18 +45,42 @@ namespace softchain::reduction
   TwistAxis::ChainTip TwistAxis::chain_tip(const JointGeometry &geometry, const JointFrames &frames,
                                            const Eigen::Vector3d &tip_reference, const double t)
   {
+    std::vector<Eigen::Vector3d> links;
+    for (std::size_t i = 0; i < geometry.n_joints(); ++i)
+      links.push_back(geometry.reference_centre(i));
+    links.push_back(tip_reference);
+    return chain_tip(frames, links, t);
+  }
+
+  TwistAxis::ChainTip TwistAxis::chain_tip(const JointFrames &frames, const std::vector<Eigen::Vector3d> &links,
+                                           const double t)
+  {
     const Eigen::Vector3d s(0, t, 0);
-    ChainTip              tip{geometry.reference_centre(0), Eigen::Matrix3d::Identity()};
+    ChainTip              tip{links.front(), Eigen::Matrix3d::Identity()};
     for (std::size_t i = 0; i < frames.size(); ++i)
       {
         if (i > 0)
-          tip.position += tip.rotation * (geometry.reference_centre(i) - geometry.reference_centre(i - 1));
+          tip.position += tip.rotation * (links[i] - links[i - 1]);
         const data::JointAngles q = frames.relative_angles(i);
         tip.position += tip.rotation * (s - Eigen::AngleAxisd(q.psi, Eigen::Vector3d::UnitX()) * s);
         tip.rotation = tip.rotation * data::rotation_from_angles(q);
       }
-    tip.position += tip.rotation * (tip_reference - geometry.reference_centre(frames.size() - 1));
+    tip.position += tip.rotation * (links.back() - links[frames.size() - 1]);
     return tip;
+  }
+
+  std::vector<Eigen::Vector3d> TwistAxis::links_of(const JointGeometry &geometry, const JointFrames &frames,
+                                                  const std::vector<data::Point3> &x, const Eigen::Vector3d &tip)
+  {
+    std::vector<Eigen::Vector3d> centres;
+    std::vector<Eigen::Matrix3d> rotations;
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      {
+        centres.push_back(geometry.deformed_centre(i, frames, x));
+        rotations.push_back(frames[i].rotation);
+      }
+    centres.push_back(tip);
+    return SampleReduction::link_points(centres, rotations);
   }
 
   std::string TwistAxis::description() const

@@ -74,10 +74,12 @@ namespace softchain::reduction
     static Eigen::Vector3d conjugate_torque(const data::JointAngles &q, const Eigen::Vector3d &about_twist,
                                             const Eigen::Vector3d &about_centre);
 
-  private:
-    void set_link_geometry(const std::vector<Eigen::Vector3d> &deformed,
-                           const std::vector<Eigen::Matrix3d> &link_rotations);
+    // The link geometry of deformed joint centres J_1..J_n and tip T, link i
+    // turned by R_i: U_1 = J_1, U_i+1 = U_i + R_i^T (J_i+1 - J_i) (J_n+1 = T).
+    static std::vector<Eigen::Vector3d> link_points(const std::vector<Eigen::Vector3d> &deformed,
+                                                    const std::vector<Eigen::Matrix3d> &link_rotations);
 
+  private:
     std::string              id_;
     std::string              role_;
     double                   pressure_;

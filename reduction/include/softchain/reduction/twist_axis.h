@@ -44,9 +44,18 @@ namespace softchain::reduction
       Eigen::Vector3d position; // T
       Eigen::Matrix3d rotation; // R_n
     };
-    // The chain above for one sample's frames.
+    // The chain above for one sample's frames, on the reference links.
     static ChainTip chain_tip(const JointGeometry &geometry, const JointFrames &frames,
                               const Eigen::Vector3d &tip_reference, double t);
+    // The same on links U_1..U_n, U_T (the reference J_i,0 and T_0 above).
+    static ChainTip chain_tip(const JointFrames &frames, const std::vector<Eigen::Vector3d> &links,
+                              double t);
+    // The chain tier's links at a sample whose frames and deformed positions
+    // x give the joint centres J_i, and whose tip-face centroid is T
+    // (SampleReduction's link geometry): U_1 = J_1, U_i+1 = U_i + R_i^T
+    // (J_i+1 - J_i), J_n+1 = T, R_i the slab rotation of link i.
+    static std::vector<Eigen::Vector3d> links_of(const JointGeometry &geometry, const JointFrames &frames,
+                                                 const std::vector<data::Point3> &x, const Eigen::Vector3d &tip);
 
   private:
     double offset_    = 0.0;
