@@ -18,7 +18,10 @@
 // with the tip face's frame in the last link's), where the pressure states
 // are exact by construction; it is the floor of the chain as it runs.
 //
-// Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5]
+// Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5] [CSV]
+// CSV (benchmarks/results/chain_kinematic_floor.csv for the demo's
+// database): one row per sample and model, the tables of
+// docs/chain_fidelity.md.
 #include <softchain/chain/angle_units.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/data/tip_pose_fit.h>
@@ -27,6 +30,13 @@
 #include <softchain/reduction/neutral_layer.h>
 #include <softchain/reduction/twist_axis.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <tuple>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -88,33 +98,95 @@ namespace
     return {(tip.position - fem.position).norm(), data::rotation_angle_between(tip.rotation, fem.rotation)};
   }
 
-  // The same chain on the links of the pressure state at the sample's
-  // pressure (the chain tier's default link geometry), the joints twisting
-  // about the axis t above them; NaN where no pressure state was solved at
-  // that pressure.
+  // The chain tier's link geometry at one pressure state: the links U and
+  // the tip face's frame in the last link's, Q_T = R_n^T R_T, as a rotation
+  // vector (the chain interpolates both in pressure, chain/link_geometry.h).
+  struct Links
+  {
+    std::vector<Eigen::Vector3d> points;
+    Eigen::Vector3d              tip_frame = Eigen::Vector3d::Zero();
+  };
+
+  Links links_at_state(const reduction::JointGeometry &geometry, const data::SampleRecord &state,
+                       const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
+  {
+    const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
+                                        geometry.reference_points(), geometry.points(state.x), state.id);
+    const data::TipPose     tip = tip_fit.fit(data::select_nodes(state.x, mesh.tip_nodes));
+    const Eigen::AngleAxisd Q_T(frames[frames.size() - 1].rotation.transpose() * tip.rotation);
+    return {reduction::TwistAxis::links_of(geometry, frames, state.x, tip.position), Q_T.angle() * Q_T.axis()};
+  }
+
+  // The links at rest (the reference) and at every pressure sample.
+  std::map<double, Links> link_states(const reduction::JointGeometry &geometry,
+                                      const std::vector<data::SampleRecord> &samples,
+                                      const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
+  {
+    std::map<double, Links> states{
+      {0.0, {reduction::TwistAxis::reference_links(geometry, tip_fit.reference_centroid()), Eigen::Vector3d::Zero()}}};
+    for (const auto &s : samples)
+      if (s.actuation.role == "pressure" && s.actuation.pressure > 0)
+        states[s.actuation.pressure] = links_at_state(geometry, s, tip_fit, mesh);
+    return states;
+  }
+
+  // The same chain on the links the chain tier takes at the sample's
+  // pressure (its default link geometry): the reference at rest, the
+  // pressure states' interpolated linearly between the two around it
+  // (held beyond the last), the joints twisting about the axis t above them.
   Floor pressure_links_floor(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
-                             const std::vector<data::SampleRecord> &samples, const data::TipPoseFit &tip_fit,
+                             const std::map<double, Links> &states, const data::TipPoseFit &tip_fit,
                              const data::MeshRecord &mesh, const double t)
   {
-    const auto frames_of = [&](const data::SampleRecord &s) {
-      return reduction::JointFrames(reduction::RotationMethod::affine_fit, geometry.slabs(),
-                                    geometry.reference_points(), geometry.points(s.x), s.id);
-    };
-    const data::SampleRecord *state = nullptr;
-    for (const auto &s : samples)
-      if (s.actuation.role == "pressure" && s.actuation.pressure == sample.actuation.pressure)
-        state = &s;
-    if (sample.actuation.pressure == 0.0 || state == nullptr)
-      return sample.actuation.pressure == 0.0 ? twist_axis_floor(geometry, sample, tip_fit, mesh, t)
-                                              : Floor{NAN, NAN};
-    const reduction::JointFrames state_frames = frames_of(*state);
-    const data::TipPose          state_tip    = tip_fit.fit(data::select_nodes(state->x, mesh.tip_nodes));
-    const auto links = reduction::TwistAxis::links_of(geometry, state_frames, state->x, state_tip.position);
-    // The tip face's frame in the last link's, Q_T = R_n^T R_T, as the chain carries it.
-    const Eigen::Matrix3d Q_T = state_frames[state_frames.size() - 1].rotation.transpose() * state_tip.rotation;
-    const auto            tip = reduction::TwistAxis::chain_tip(frames_of(sample), links, t);
-    const data::TipPose   fem = tip_fit.fit(data::select_nodes(sample.x, mesh.tip_nodes));
+    const double p     = sample.actuation.pressure;
+    auto         upper = states.lower_bound(p);
+    Links        links = upper == states.end() ? std::prev(upper)->second : upper->second;
+    if (upper != states.end() && upper->first != p && upper != states.begin())
+      {
+        const auto   lower = std::prev(upper);
+        const double w     = (p - lower->first) / (upper->first - lower->first);
+        for (std::size_t k = 0; k < links.points.size(); ++k)
+          links.points[k] = (1 - w) * lower->second.points[k] + w * upper->second.points[k];
+        links.tip_frame = (1 - w) * lower->second.tip_frame + w * upper->second.tip_frame;
+      }
+    const reduction::JointFrames frames(reduction::RotationMethod::affine_fit, geometry.slabs(),
+                                        geometry.reference_points(), geometry.points(sample.x), sample.id);
+    const auto            tip = reduction::TwistAxis::chain_tip(frames, links.points, t);
+    const double          angle = links.tip_frame.norm();
+    const Eigen::Matrix3d Q_T =
+      angle > 0 ? Eigen::AngleAxisd(angle, links.tip_frame / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
+    const data::TipPose fem = tip_fit.fit(data::select_nodes(sample.x, mesh.tip_nodes));
     return {(tip.position - fem.position).norm(), data::rotation_angle_between(tip.rotation * Q_T, fem.rotation)};
+  }
+
+  // The sample's kind in the tables: its role, a contact sample's by its
+  // obstacle (a plane: blocked force; else grasp) and friction.
+  std::string kind_of(const data::SampleRecord &sample)
+  {
+    const data::Actuation &a = sample.actuation;
+    if (a.role != "contact" || a.obstacles.empty())
+      return a.role;
+    return std::string(a.obstacles.front().shape == "plane" ? "blocked force" : "grasp") +
+           (a.obstacles.front().friction > 0.0 ? " with friction" : "");
+  }
+
+  // One sample's floors, one per model (column).
+  struct Row
+  {
+    std::string        sample, kind;
+    double             pressure_kPa = 0, force_N = 0;
+    std::vector<Floor> floors;
+  };
+
+  // The tables' order: by kind (the order below, others after), pressure, force.
+  bool before(const Row &a, const Row &b)
+  {
+    static const std::vector<std::string> kinds = {"pressure", "validation", "lateral", "torsion", "bending",
+                                                   "chord", "blocked force", "blocked force with friction",
+                                                   "grasp", "grasp with friction"};
+    const auto rank = [&](const std::string &k) { return std::find(kinds.begin(), kinds.end(), k) - kinds.begin(); };
+    return std::make_tuple(rank(a.kind), a.kind, a.pressure_kPa, a.force_N) <
+           std::make_tuple(rank(b.kind), b.kind, b.pressure_kPa, b.force_N);
   }
 } // namespace
 
@@ -122,7 +194,7 @@ int main(int argc, char **argv)
 {
   if (argc < 2)
     {
-      std::fprintf(stderr, "usage: %s DATABASE.h5 [joint spacing a = 0.01] [b/a = 0.5]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s DATABASE.h5 [joint spacing a = 0.01] [b/a = 0.5] [CSV]\n", argv[0]);
       return 1;
     }
   const double a        = argc > 2 ? std::atof(argv[2]) : 0.01;
@@ -148,70 +220,78 @@ int main(int argc, char **argv)
       const double                  length = body->reference_box().sizes()(0);
       std::printf("%s: %s\n", argv[1], layer.description().c_str());
 
-      struct Placement
-      {
-        std::string              name;
-        reduction::JointGeometry geometry;
-      };
-      std::vector<Placement> placements;
-      placements.push_back({"paper: bounding-box centres", {layout, mesh, fraction * a}});
-      placements.push_back({"bottom face", {layout, body, bottom + 1e-6, fraction * a}});
-      placements.push_back({"strain-limiting layer", {layout, body, layer.height(), fraction * a}});
-      const std::size_t layer_index = placements.size() - 1;
+      const reduction::JointGeometry paper(layout, mesh, fraction * a);
+      const reduction::JointGeometry bottom_face(layout, body, bottom + 1e-6, fraction * a);
+      const reduction::JointGeometry on_layer(layout, body, layer.height(), fraction * a);
 
       const data::TipPoseFit tip_fit = data::TipPoseFit::of_mesh(mesh, argv[1]);
       std::vector<const data::SampleRecord *> torsion;
       for (const auto &s : samples)
         if (s.actuation.role == "torsion")
           torsion.push_back(&s);
-      const reduction::TwistAxis axis(placements[layer_index].geometry, mesh, torsion,
-                                      body->reference_box().max()(1) - layer.height(), argv[1]);
-      const double twist_offset = axis.offset();
+      // t on the reference links (no pressure states), as the reduction fits it.
+      const reduction::TwistAxis axis(on_layer, mesh, torsion, body->reference_box().max()(1) - layer.height(),
+                                      argv[1]);
+      const double t = axis.offset();
       std::printf("%s\n", axis.description().c_str());
-      std::printf("\ntip error of the chain driven by the FEM's M2 rotations (b = %.2f a), "
-                  "%% of L = %.1f mm / deg\n\n",
-                  fraction, 1e3 * length);
-      std::printf("| sample | role | p [kPa] | |f| [N] |");
-      for (const auto &p : placements)
-        std::printf(" %s |", p.name.c_str());
-      std::printf(" layer, chain from the deformed J_1 | layer, twist axis %.2f mm higher |"
-                  " the same on the pressure state's links |",
-                  1e3 * twist_offset);
-      std::printf("\n| --- | --- | ---: | ---: |");
-      for (std::size_t k = 0; k <= placements.size() + 2; ++k)
-        std::printf(" ---: |");
-      std::printf("\n");
-      std::vector<Floor> worst(placements.size() + 3, {0, 0});
+
+      // The models (columns): the CSV's name and the printed header.
+      const std::vector<std::pair<std::string, std::string>> models = {
+        {"paper", "paper: bounding-box centres"},
+        {"bottom face", "bottom face"},
+        {"layer", "strain-limiting layer"},
+        {"moving base", "layer, chain from the deformed J_1"},
+        {"twist axis", "layer, twist axis " + std::to_string(1e3 * t).substr(0, 4) + " mm higher"},
+        {"chain links", "the same on the chain's links (pressure states)"}};
+      const std::map<double, Links> states = link_states(on_layer, samples, tip_fit, mesh);
+      std::vector<Row> rows;
       for (const auto &s : samples)
         {
-          double force = 0;
+          Row row{s.id.substr(0, 8), kind_of(s), 1e-3 * s.actuation.pressure, 0, {}};
           for (const auto &f : s.actuation.point_forces)
-            force += Eigen::Vector3d(f.force[0], f.force[1], f.force[2]).norm();
-          std::printf("| %s | %s | %.0f | %.2f |", s.id.substr(0, 8).c_str(),
-                      s.actuation.role.c_str(), 1e-3 * s.actuation.pressure, force);
-          for (std::size_t k = 0; k <= placements.size(); ++k)
-            {
-              const bool  moving_base = k == placements.size();
-              const Floor f = floor_of(placements[moving_base ? layer_index : k].geometry, s, tip_fit,
-                                       mesh, moving_base);
-              worst[k]      = {std::max(worst[k].position, f.position), std::max(worst[k].angle, f.angle)};
-              std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
-            }
-          const Floor f = twist_axis_floor(placements[layer_index].geometry, s, tip_fit, mesh, twist_offset);
-          Floor &twisted = worst[placements.size() + 1];
-          twisted        = {std::max(twisted.position, f.position), std::max(twisted.angle, f.angle)};
-          std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
-          const Floor g = pressure_links_floor(placements[layer_index].geometry, s, samples, tip_fit, mesh,
-                                               twist_offset);
-          if (std::isfinite(g.position))
-            worst.back() = {std::max(worst.back().position, g.position), std::max(worst.back().angle, g.angle)};
-          std::printf(" %.2f %% / %.1f |", 100 * g.position / length, chain::degrees(g.angle));
+            row.force_N += Eigen::Vector3d(f.force[0], f.force[1], f.force[2]).norm();
+          row.floors = {floor_of(paper, s, tip_fit, mesh), floor_of(bottom_face, s, tip_fit, mesh),
+                        floor_of(on_layer, s, tip_fit, mesh), floor_of(on_layer, s, tip_fit, mesh, true),
+                        twist_axis_floor(on_layer, s, tip_fit, mesh, t),
+                        pressure_links_floor(on_layer, s, states, tip_fit, mesh, t)};
+          rows.push_back(row);
+        }
+      std::stable_sort(rows.begin(), rows.end(), before);
+
+      std::printf("\ntip error of the chain driven by the FEM's M2 rotations (b = %.2f a), "
+                  "%% of L = %.1f mm / deg\n\n| sample | kind | p [kPa] | |f| [N] |",
+                  fraction, 1e3 * length);
+      for (const auto &m : models)
+        std::printf(" %s |", m.second.c_str());
+      std::printf("\n| --- | --- | ---: | ---: |");
+      for (std::size_t k = 0; k < models.size(); ++k)
+        std::printf(" ---: |");
+      std::printf("\n");
+      for (const Row &r : rows)
+        {
+          std::printf("| %s | %s | %.0f | %.2f |", r.sample.c_str(), r.kind.c_str(), r.pressure_kPa, r.force_N);
+          for (const Floor &f : r.floors)
+            std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
           std::printf("\n");
         }
-      std::printf("| max | | | |");
-      for (const Floor &f : worst)
-        std::printf(" %.2f %% / %.1f |", 100 * f.position / length, chain::degrees(f.angle));
-      std::printf("\n");
+
+      if (argc > 4)
+        {
+          std::ofstream csv(argv[4]);
+          csv << "sample,kind,pressure_kPa,force_N,model,tip_percent_L,angle_deg\n";
+          for (const Row &r : rows)
+            for (std::size_t k = 0; k < models.size(); ++k)
+              {
+                char line[256];
+                std::snprintf(line, sizeof line, "%s,%s,%.0f,%.2f,%s,%.2f,%.2f\n", r.sample.c_str(),
+                              r.kind.c_str(), r.pressure_kPa, r.force_N, models[k].first.c_str(),
+                              100 * r.floors[k].position / length, chain::degrees(r.floors[k].angle));
+                csv << line;
+              }
+          if (!csv)
+            throw std::runtime_error(std::string("cannot write ") + argv[4]);
+          std::printf("\ntable written to %s\n", argv[4]);
+        }
     }
   catch (const std::exception &e)
     {

@@ -45,11 +45,17 @@ namespace softchain::reduction
   TwistAxis::ChainTip TwistAxis::chain_tip(const JointGeometry &geometry, const JointFrames &frames,
                                            const Eigen::Vector3d &tip_reference, const double t)
   {
+    return chain_tip(frames, reference_links(geometry, tip_reference), t);
+  }
+
+  std::vector<Eigen::Vector3d> TwistAxis::reference_links(const JointGeometry &geometry,
+                                                         const Eigen::Vector3d &tip_reference)
+  {
     std::vector<Eigen::Vector3d> links;
     for (std::size_t i = 0; i < geometry.n_joints(); ++i)
       links.push_back(geometry.reference_centre(i));
     links.push_back(tip_reference);
-    return chain_tip(frames, links, t);
+    return links;
   }
 
   TwistAxis::ChainTip TwistAxis::chain_tip(const JointFrames &frames, const std::vector<Eigen::Vector3d> &links,

@@ -47,6 +47,9 @@ namespace softchain::reduction
     // The chain above for one sample's frames, on the reference links.
     static ChainTip chain_tip(const JointGeometry &geometry, const JointFrames &frames,
                               const Eigen::Vector3d &tip_reference, double t);
+    // The reference links J_i,0 and the tip face's reference centroid T_0.
+    static std::vector<Eigen::Vector3d> reference_links(const JointGeometry &geometry,
+                                                        const Eigen::Vector3d &tip_reference);
     // The same on links U_1..U_n, U_T (the reference J_i,0 and T_0 above).
     static ChainTip chain_tip(const JointFrames &frames, const std::vector<Eigen::Vector3d> &links,
                               double t);
