@@ -13,10 +13,11 @@
 // joint i's psi turns about the proximal link's x axis through
 // J_i,0 + (0, t, 0), its theta and phi about J_i,0 as before, t fitted to
 // the torsion samples as the reduction does (TwistAxis). The last column is
-// that chain on the links the chain tier uses by default: those of the
-// pressure state at the sample's pressure (the reduction's link geometry,
-// with the tip face's frame in the last link's), where the pressure states
-// are exact by construction; it is the floor of the chain as it runs.
+// that chain on the links the chain tier uses by default: the pressure
+// states' link geometry (the reduction's, with the tip face's frame in the
+// last link's), interpolated in pressure as the chain interpolates it, on
+// which the pressure states are exact by construction; it is the floor of
+// the chain as it runs.
 //
 // Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5] [CSV]
 // CSV (benchmarks/results/chain_kinematic_floor.csv for the demo's
@@ -33,15 +34,15 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <fstream>
-#include <map>
-#include <stdexcept>
-#include <tuple>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace softchain;
