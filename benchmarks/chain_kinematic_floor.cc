@@ -19,10 +19,13 @@
 // which the pressure states are exact by construction; it is the floor of
 // the chain as it runs.
 //
-// Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5] [CSV]
+// Run: chain_kinematic_floor DATABASE.h5 [a = 0.01] [b/a = 0.5] [CSV [LINKS_CSV]]
 // CSV (benchmarks/results/chain_kinematic_floor.csv for the demo's
 // database): one row per sample and model, the tables of
-// docs/chain_fidelity.md.
+// docs/chain_fidelity.md. LINKS_CSV (chain_kinematic_floor_links.csv): per
+// sample at a pressure of a pressure sample and per link, how its own links
+// differ from that state's (the link vector in the link's frame, x along
+// it, y towards the finger's top) and joint i's in-plane turn from it.
 #include <softchain/chain/angle_units.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/data/tip_pose_fit.h>
@@ -106,6 +109,7 @@ namespace
   {
     std::vector<Eigen::Vector3d> points;
     Eigen::Vector3d              tip_frame = Eigen::Vector3d::Zero();
+    std::vector<double>          phi; // the state's relative in-plane angles (empty: all 0)
   };
 
   Links links_at_state(const reduction::JointGeometry &geometry, const data::SampleRecord &state,
@@ -115,7 +119,36 @@ namespace
                                         geometry.reference_points(), geometry.points(state.x), state.id);
     const data::TipPose     tip = tip_fit.fit(data::select_nodes(state.x, mesh.tip_nodes));
     const Eigen::AngleAxisd Q_T(frames[frames.size() - 1].rotation.transpose() * tip.rotation);
-    return {reduction::TwistAxis::links_of(geometry, frames, state.x, tip.position), Q_T.angle() * Q_T.axis()};
+    std::vector<double>     phi;
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      phi.push_back(frames.relative_angles(i).phi);
+    return {reduction::TwistAxis::links_of(geometry, frames, state.x, tip.position), Q_T.angle() * Q_T.axis(), phi};
+  }
+
+  // Each link's change from the pressure state at the sample's pressure
+  // (solved there; none otherwise): the link vector U_i+1 - U_i of the
+  // sample's own links against the state's, in the link's frame [m], and
+  // joint i's in-plane turn from the state [rad].
+  struct LinkChange
+  {
+    int             link;
+    double          turn;
+    Eigen::Vector3d change;
+  };
+  std::vector<LinkChange> link_changes(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
+                                       const std::map<double, Links> &states, const data::TipPoseFit &tip_fit,
+                                       const data::MeshRecord &mesh)
+  {
+    const auto state = states.find(sample.actuation.pressure);
+    if (state == states.end())
+      return {};
+    const Links             own = links_at_state(geometry, sample, tip_fit, mesh);
+    const Links            &at  = state->second;
+    std::vector<LinkChange> changes;
+    for (std::size_t i = 0; i + 1 < own.points.size(); ++i)
+      changes.push_back({static_cast<int>(i) + 1, own.phi[i] - (at.phi.empty() ? 0.0 : at.phi[i]),
+                         (own.points[i + 1] - own.points[i]) - (at.points[i + 1] - at.points[i])});
+    return changes;
   }
 
   // The links at rest (the reference) and at every pressure sample.
@@ -124,7 +157,7 @@ namespace
                                       const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
   {
     std::map<double, Links> states{
-      {0.0, {reduction::TwistAxis::reference_links(geometry, tip_fit.reference_centroid()), Eigen::Vector3d::Zero()}}};
+      {0.0, {reduction::TwistAxis::reference_links(geometry, tip_fit.reference_centroid()), Eigen::Vector3d::Zero(), {}}}};
     for (const auto &s : samples)
       if (s.actuation.role == "pressure" && s.actuation.pressure > 0)
         states[s.actuation.pressure] = links_at_state(geometry, s, tip_fit, mesh);
@@ -174,9 +207,10 @@ namespace
   // One sample's floors, one per model (column).
   struct Row
   {
-    std::string        sample, kind;
-    double             pressure_kPa = 0, force_N = 0;
-    std::vector<Floor> floors;
+    const data::SampleRecord *record;
+    std::string               sample, kind;
+    double                    pressure_kPa = 0, force_N = 0;
+    std::vector<Floor>        floors;
   };
 
   // The tables' order: by kind (the order below, others after), pressure, force.
@@ -195,7 +229,8 @@ int main(int argc, char **argv)
 {
   if (argc < 2)
     {
-      std::fprintf(stderr, "usage: %s DATABASE.h5 [joint spacing a = 0.01] [b/a = 0.5] [CSV]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s DATABASE.h5 [joint spacing a = 0.01] [b/a = 0.5] [CSV [LINKS_CSV]]\n",
+                   argv[0]);
       return 1;
     }
   const double a        = argc > 2 ? std::atof(argv[2]) : 0.01;
@@ -248,7 +283,7 @@ int main(int argc, char **argv)
       std::vector<Row> rows;
       for (const auto &s : samples)
         {
-          Row row{s.id.substr(0, 8), kind_of(s), 1e-3 * s.actuation.pressure, 0, {}};
+          Row row{&s, s.id.substr(0, 8), kind_of(s), 1e-3 * s.actuation.pressure, 0, {}};
           for (const auto &f : s.actuation.point_forces)
             row.force_N += Eigen::Vector3d(f.force[0], f.force[1], f.force[2]).norm();
           row.floors = {floor_of(paper, s, tip_fit, mesh), floor_of(bottom_face, s, tip_fit, mesh),
@@ -292,6 +327,23 @@ int main(int argc, char **argv)
           if (!csv)
             throw std::runtime_error(std::string("cannot write ") + argv[4]);
           std::printf("\ntable written to %s\n", argv[4]);
+        }
+      if (argc > 5)
+        {
+          std::ofstream csv(argv[5]);
+          csv << "sample,kind,pressure_kPa,force_N,link,turn_rad,dx_mm,dy_mm\n";
+          for (const Row &r : rows)
+            for (const LinkChange &c : link_changes(on_layer, *r.record, states, tip_fit, mesh))
+              {
+                char line[256];
+                std::snprintf(line, sizeof line, "%s,%s,%.0f,%.2f,%d,%.3f,%.2f,%.2f\n", r.sample.c_str(),
+                              r.kind.c_str(), r.pressure_kPa, r.force_N, c.link, c.turn, 1e3 * c.change.x(),
+                              1e3 * c.change.y());
+                csv << line;
+              }
+          if (!csv)
+            throw std::runtime_error(std::string("cannot write ") + argv[5]);
+          std::printf("table written to %s\n", argv[5]);
         }
     }
   catch (const std::exception &e)
