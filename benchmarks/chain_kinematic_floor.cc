@@ -109,7 +109,7 @@ namespace
   {
     std::vector<Eigen::Vector3d> points;
     Eigen::Vector3d              tip_frame = Eigen::Vector3d::Zero();
-    std::vector<double>          phi; // the state's relative in-plane angles (empty: all 0)
+    std::vector<double>          phi; // the state's relative in-plane angles
   };
 
   Links links_at_state(const reduction::JointGeometry &geometry, const data::SampleRecord &state,
@@ -146,7 +146,7 @@ namespace
     const Links            &at  = state->second;
     std::vector<LinkChange> changes;
     for (std::size_t i = 0; i + 1 < own.points.size(); ++i)
-      changes.push_back({static_cast<int>(i) + 1, own.phi[i] - (at.phi.empty() ? 0.0 : at.phi[i]),
+      changes.push_back({static_cast<int>(i) + 1, own.phi[i] - at.phi[i],
                          (own.points[i + 1] - own.points[i]) - (at.points[i + 1] - at.points[i])});
     return changes;
   }
@@ -156,8 +156,9 @@ namespace
                                       const std::vector<data::SampleRecord> &samples,
                                       const data::TipPoseFit &tip_fit, const data::MeshRecord &mesh)
   {
-    std::map<double, Links> states{
-      {0.0, {reduction::TwistAxis::reference_links(geometry, tip_fit.reference_centroid()), Eigen::Vector3d::Zero(), {}}}};
+    std::map<double, Links> states{{0.0,
+                                    {reduction::TwistAxis::reference_links(geometry, tip_fit.reference_centroid()),
+                                     Eigen::Vector3d::Zero(), std::vector<double>(geometry.n_joints(), 0.0)}}};
     for (const auto &s : samples)
       if (s.actuation.role == "pressure" && s.actuation.pressure > 0)
         states[s.actuation.pressure] = links_at_state(geometry, s, tip_fit, mesh);
