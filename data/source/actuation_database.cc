@@ -12,6 +12,7 @@
 #include "atomic_file.h"
 #include "hdf5_io.h"
 #include "sample_directory.h"
+#include "sample_plan.h"
 #include "writer_lock.h"
 
 #include <algorithm>
@@ -341,6 +342,7 @@ namespace softchain::data
       const SampleDirectory samples(path);
       if (samples.exists())
         samples.move_to(stale);
+      SamplePlan(path).move_to(stale);
       fs::rename(path, stale);
       sync_directory(fs::absolute(path).parent_path().string());
     }
@@ -407,24 +409,6 @@ namespace softchain::data
     return content_hash("design " + design_hash + "\n" + actuation.canonical_text());
   }
 
-  namespace
-  {
-    // Temporaries of the database file left by a writer killed while
-    // creating it (write_atomically names them <path>.tmp<pid>); removed
-    // only by the writer that holds the lock.
-    void remove_temporaries_of(const std::string &path)
-    {
-      const fs::path    file(path);
-      const std::string prefix = file.filename().string() + ".tmp";
-      const fs::path    directory = file.has_parent_path() ? file.parent_path() : fs::path(".");
-      if (!fs::is_directory(directory))
-        return;
-      for (const auto &entry : fs::directory_iterator(directory))
-        if (entry.path().filename().string().rfind(prefix, 0) == 0)
-          fs::remove(entry.path());
-    }
-  } // namespace
-
   std::string status_name(const SampleStatus status)
   {
     switch (status)
@@ -454,6 +438,7 @@ namespace softchain::data
     if (H5Lexists(file, "samples", H5P_DEFAULT) > 0)
       in_file = group_members(open_group(file, "samples", path));
     database.sample_ids_ = merged(in_file, SampleDirectory(path).ids());
+    database.plan_       = SamplePlan(path).read();
     return database;
   }
 
@@ -496,6 +481,7 @@ namespace softchain::data
     const SampleDirectory samples(path_);
     samples.create(); // a database of an earlier version has none yet
     samples.remove_leftovers();
+    SamplePlan(path_).remove_leftovers();
   }
 
   bool ActuationDatabase::has_sample(const std::string &id) const
@@ -505,7 +491,21 @@ namespace softchain::data
 
   std::vector<std::string> ActuationDatabase::sample_ids() const
   {
-    return sample_ids_;
+    if (!plan_)
+      return sample_ids_;
+    std::vector<std::string> planned;
+    std::set_intersection(plan_->begin(), plan_->end(), sample_ids_.begin(), sample_ids_.end(),
+                          std::back_inserter(planned));
+    return planned;
+  }
+
+  void ActuationDatabase::set_plan(const std::vector<std::string> &ids)
+  {
+    if (!writer_lock_)
+      become_writer(std::make_shared<WriterLock>(path_));
+    const SamplePlan plan(path_);
+    plan.write(ids);
+    plan_ = plan.read();
   }
 
   SampleRecord ActuationDatabase::read_sample(const std::string &id) const

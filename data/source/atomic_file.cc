@@ -1,5 +1,5 @@
 // write_atomically: write a temporary file, fsync, rename, fsync directory;
-// sync_directory.
+// remove_temporaries_of; sync_directory.
 #include "atomic_file.h"
 
 #include <fcntl.h>
@@ -42,6 +42,18 @@ namespace softchain::data
         ::fsync(file_descriptor);
         ::close(file_descriptor);
       }
+  }
+
+  void remove_temporaries_of(const std::string &path)
+  {
+    const fs::path    file(path);
+    const std::string prefix    = file.filename().string() + ".tmp";
+    const fs::path    directory = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    if (!fs::is_directory(directory))
+      return;
+    for (const auto &entry : fs::directory_iterator(directory))
+      if (entry.path().filename().string().rfind(prefix, 0) == 0)
+        fs::remove(entry.path());
   }
 
   void write_atomically(const std::string                              &path,

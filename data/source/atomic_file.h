@@ -13,6 +13,10 @@ namespace softchain::data
   void write_atomically(const std::string                              &path,
                         const std::function<void(const std::string &)> &write);
 
+  // Removes the temporaries write_atomically(path, ...) leaves when a writer
+  // is killed in it (<path>.tmp<pid>); only the one writer of `path` may.
+  void remove_temporaries_of(const std::string &path);
+
   // fsyncs a directory, which makes the creation, renaming or removal of its
   // entries durable.
   void sync_directory(const std::string &directory);

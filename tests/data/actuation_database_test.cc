@@ -7,6 +7,8 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -160,6 +162,55 @@ TEST_CASE("a new design hash moves the old database aside")
   check_equal_samples(stale.read_sample(stale.sample_ids()[0]), sample("old", 1e4, 0.125));
   // The old samples moved with their database file: none is left beside the new one.
   CHECK(std::filesystem::is_empty(dir.file("f.h5.samples")));
+}
+
+TEST_CASE("the plan hides samples the .prm no longer asks for, which stay stored as a cache")
+{
+  ScratchDirectory   dir("db_plan");
+  const SampleRecord kept = sample("h1", 1e4, 0.125), dropped = sample("h1", 2e4, 0.25),
+                     failed = sample("h1", 3e4, 0.5);
+  std::vector<std::string> expected{kept.id, failed.id};
+  std::sort(expected.begin(), expected.end());
+  {
+    auto db = ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh());
+    for (const auto &s : {kept, dropped, failed})
+      db.store_sample(s);
+    // Without a plan (a database whose first sweep has not completed) the
+    // readers see every stored sample.
+    CHECK(ActuationDatabase::open(dir.file("f.h5")).sample_ids().size() == 3);
+
+    // The plan lists one sample that was never stored (a sweep names every
+    // sample it asked for): readers see the stored ones of the plan.
+    const std::string never = sample_id("h1", sample("h1", 4e4, 0).actuation);
+    db.set_plan({failed.id, kept.id, never, kept.id});
+    for (const auto &reader : {db, ActuationDatabase::open(dir.file("f.h5"))})
+      {
+        CHECK(reader.sample_ids() == expected);
+        CHECK(reader.stored_sample_ids().size() == 3);
+        CHECK(reader.has_sample(dropped.id)); // still a cache hit for the sweep
+        check_equal_samples(reader.read_sample(dropped.id), dropped);
+      }
+
+    // The same plan again rewrites nothing (a rerun of the same .prm).
+    const auto written = std::filesystem::last_write_time(dir.file("f.h5.plan"));
+    std::filesystem::last_write_time(dir.file("f.h5.plan"), written - std::chrono::hours(1));
+    db.set_plan({kept.id, failed.id, never});
+    CHECK(std::filesystem::last_write_time(dir.file("f.h5.plan")) == written - std::chrono::hours(1));
+  } // the writer lets go of the database
+
+  // A design change moves the plan aside with its samples.
+  ActuationDatabase::open_or_create(dir.file("f.h5"), design("h2"), cube_mesh());
+  CHECK_FALSE(std::filesystem::exists(dir.file("f.h5.plan")));
+  CHECK(ActuationDatabase::open(dir.file("f.h5.h1.stale")).sample_ids() == expected);
+}
+
+TEST_CASE("a plan file with a line that is not a sample id is an InputError naming it")
+{
+  ScratchDirectory dir("db_bad_plan");
+  ActuationDatabase::open_or_create(dir.file("f.h5"), design("h1"), cube_mesh())
+    .store_sample(sample("h1", 1e4, 0.125));
+  std::ofstream(dir.file("f.h5.plan")) << "0123456789abcdef\n../escape\n";
+  require_input_error_naming("f.h5.plan:2", [&] { ActuationDatabase::open(dir.file("f.h5")); });
 }
 
 TEST_CASE("a sample directory without its database file is an error, not reused")

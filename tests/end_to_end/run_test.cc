@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -62,6 +63,53 @@ TEST_CASE("softchain run goes from the .prm to the stiffness and validation tabl
       CHECK(v.number(row, "orientation_error_deg") < 1);
     }
   CHECK(n_pressure == 3);
+}
+
+TEST_CASE("a sample taken out of the .prm leaves every output and stays in the cache")
+{
+  using softchain::testing::pipeline_samples;
+  using softchain::testing::pipeline_settings;
+  const TinyDesign design = softchain::testing::pipeline_design("run_plan", false);
+  // The held-out pressures of the chain's validation rows, and whether the
+  // stiffness fit used the 0.01 N lateral samples (their rows in the samples CSV).
+  const auto held_out = [&] {
+    const auto         v = softchain::data::CsvTable::read(design.output() + "/chain/validation.csv");
+    std::vector<double> pressures;
+    for (std::size_t row = 0; row < v.n_rows(); ++row)
+      if (v.text(row, "model") == "M2" && v.text(row, "role") == "validation")
+        pressures.push_back(v.number(row, "pressure"));
+    return pressures;
+  };
+  const auto lateral_rows = [&] {
+    const auto s = softchain::data::CsvTable::read(design.output() + "/stiffness/M2_b1.00a_samples.csv");
+    int        n = 0;
+    for (std::size_t row = 0; row < s.n_rows(); ++row)
+      n += s.text(row, "role") == "lateral";
+    return n;
+  };
+  REQUIRE(design.run("run").status == 0);
+  CHECK(held_out() == std::vector<double>{2e3});
+  const int lateral = lateral_rows();
+  CHECK(lateral > 0);
+
+  // The held-out sample moves to 2.5 kPa and the 0.01 N lateral force goes.
+  std::string samples = pipeline_samples();
+  samples.replace(samples.find("2e3 : tip"), 3, "2.5e3");
+  samples.replace(samples.find(", 0.01\n"), 6, "\n");
+  design.write(samples, pipeline_settings(false));
+  const auto edited = design.run("run");
+  INFO(edited.output);
+  REQUIRE(edited.status == 0);
+  CHECK(edited.output.find("6 cached, 1 solved") != std::string::npos);
+  CHECK(held_out() == std::vector<double>{2.5e3});
+  CHECK(lateral_rows() < lateral);
+
+  // Both stay in the database: putting them back solves nothing.
+  design.write(pipeline_samples(), pipeline_settings(false));
+  const auto restored = design.run("run");
+  CHECK(restored.output.find("8 cached, 0 solved") != std::string::npos);
+  CHECK(held_out() == std::vector<double>{2e3});
+  CHECK(lateral_rows() == lateral);
 }
 
 TEST_CASE("softchain run reads the .prm once: every tier gets the same parsed file")

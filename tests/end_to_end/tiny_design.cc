@@ -127,19 +127,27 @@ namespace softchain::testing
     return output;
   }
 
+  std::string pipeline_samples()
+  {
+    return "set Pressure sweep = 1e3, 2e3, 3e3\n"
+           "set Lateral tip forces = 0.005, 0.01\n"
+           "set Torsion couples = 0.005, 0.01\n"
+           "set Validation samples = 2e3 : tip : 0,0,0.005";
+  }
+
+  std::string pipeline_settings(const bool plots, const std::string &more)
+  {
+    return "subsection Springs\n  set Generate for bender = true\n"
+           "  set Axial rigidity = fabric: 2000, thread: 500\nend\n"
+           "subsection Reduction\n  set Joint spacing = 0.02\n"
+           "  set Slab half-widths = 1\n  set Rotation threshold = 1e-6\n"
+           "  set Plots = " + std::string(plots ? "true" : "false") + "\nend\n"
+           "subsection Chain\n  set Slab half-width = 1\nend\n" + more;
+  }
+
   TinyDesign pipeline_design(const std::string &name, const bool plots, const std::string &more)
   {
-    return TinyDesign(name,
-                      "set Pressure sweep = 1e3, 2e3, 3e3\n"
-                      "set Lateral tip forces = 0.005, 0.01\n"
-                      "set Torsion couples = 0.005, 0.01\n"
-                      "set Validation samples = 2e3 : tip : 0,0,0.005",
-                      "subsection Springs\n  set Generate for bender = true\n"
-                      "  set Axial rigidity = fabric: 2000, thread: 500\nend\n"
-                      "subsection Reduction\n  set Joint spacing = 0.02\n"
-                      "  set Slab half-widths = 1\n  set Rotation threshold = 1e-6\n"
-                      "  set Plots = " + std::string(plots ? "true" : "false") + "\nend\n"
-                      "subsection Chain\n  set Slab half-width = 1\nend\n" + more);
+    return TinyDesign(name, pipeline_samples(), pipeline_settings(plots, more));
   }
 
   std::string sample_difference(const data::ActuationDatabase &a, const data::ActuationDatabase &b)

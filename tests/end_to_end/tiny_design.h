@@ -46,6 +46,9 @@ namespace softchain::testing
   // threshold lowered below the small loads' rotations (~1e-4 rad).
   // `plots`: the reduction's gnuplot PNGs; `more`: more subsections.
   TinyDesign pipeline_design(const std::string &name, bool plots, const std::string &more = "");
+  // Its subsection Samples and the subsections after it (TinyDesign::write's arguments).
+  std::string pipeline_samples();
+  std::string pipeline_settings(bool plots, const std::string &more = "");
 
   // The first difference between the stored samples of a and b, comparing
   // everything but the wall times bit for bit; "" if there is none.

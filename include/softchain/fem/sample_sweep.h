@@ -70,6 +70,8 @@ namespace softchain::fem
     using Records = std::map<std::size_t, data::SampleRecord>; // by sample index
 
     void read_cached(const std::vector<std::size_t> &indices, Records &known) const;
+    // Rank 0: makes the ids of `known` the database's plan.
+    void write_plan(const Records &known) const;
     void solve_missing(const std::vector<std::size_t> &indices, Records &known, Summary &summary,
                        bool inflations_first = false);
     void start_chains_from_inflations(const std::vector<std::size_t> &indices, Records &known);

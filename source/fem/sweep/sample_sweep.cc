@@ -150,9 +150,23 @@ namespace softchain::fem
         if (!record.converged())
           summary.failed.push_back(set.samples[i].label + " (" + record.id + "): " + record.reason);
     summary.failed = Utilities::MPI::broadcast(MPI_COMM_WORLD, summary.failed, 0);
+    if (world_rank() == 0)
+      write_plan(known);
     if (prm.output.write_vtu && world_rank() == 0 && summary.n_solved > 0)
       write_series();
     return summary;
+  }
+
+  // The database's plan: this sweep's samples, so that the reduction and the
+  // chain leave out samples an earlier .prm asked for (data::SamplePlan).
+  void SampleSweep::write_plan(const Records &known) const
+  {
+    if (!fs::exists(database_path))
+      return;
+    std::vector<std::string> ids;
+    for (const auto &[i, record] : known)
+      ids.push_back(record.id);
+    data::ActuationDatabase::open(database_path).set_plan(ids);
   }
 
   // The samples `indices` (increasing) from the database, or solved. With

@@ -39,6 +39,10 @@
 //                         position, direction, half_sizes, rotation (absent
 //                         in older databases: zero), motion (ObstacleRecord) and wrench (2,3): the force and the
 //                         moment about the origin the obstacle receives
+//   PATH.plan             the sample ids the design's .prm asks for now, one
+//                         per line (SamplePlan): the last completed sweep's;
+//                         the samples it does not list stay stored, as a
+//                         cache, but readers do not see them (sample_ids)
 //   PATH.lock             empty; a writer holds an advisory lock on it
 // The database file is written once (atomically) when the database is
 // created; each sample file is written to a temporary, fsync'ed and renamed
@@ -211,14 +215,25 @@ namespace softchain::data
     const DesignRecord &design() const { return design_; }
     const MeshRecord   &mesh() const { return mesh_; }
 
-    bool                     has_sample(const std::string &id) const;
-    std::vector<std::string> sample_ids() const; // sorted
+    // Whether sample `id` is stored (the sweep's cache).
+    bool has_sample(const std::string &id) const;
+    // The samples the design's .prm asks for now, sorted: the stored ones
+    // of the plan (PATH.plan) the last completed sweep wrote, or every
+    // stored sample if there is no plan. A sample the .prm no longer lists
+    // stays stored, as a cache, but leaves the readers' view.
+    std::vector<std::string> sample_ids() const;
+    // Every stored sample, sorted.
+    const std::vector<std::string> &stored_sample_ids() const { return sample_ids_; }
     SampleRecord             read_sample(const std::string &id) const;
 
     // Writes (or replaces) one sample atomically (its own file: write a
     // temporary, fsync, rename). A database from open() becomes the writer
     // here (an InputError naming the file if another writer has it open).
     void store_sample(const SampleRecord &sample);
+    // Makes `ids` the plan (a sweep, when it completes: every sample its
+    // .prm lists, stored or failed). Written atomically, and only if it
+    // changes. A database from open() becomes the writer here.
+    void set_plan(const std::vector<std::string> &ids);
 
   private:
     // Takes the writer's lock and removes temporaries of interrupted stores.
@@ -227,7 +242,8 @@ namespace softchain::data
     std::string              path_;
     DesignRecord             design_;
     MeshRecord               mesh_;
-    std::vector<std::string> sample_ids_;
+    std::vector<std::string> sample_ids_; // stored
+    std::optional<std::vector<std::string>> plan_; // sorted; none: no plan file
     std::shared_ptr<WriterLock> writer_lock_; // shared by copies; none if only read
   };
 } // namespace softchain::data
