@@ -165,12 +165,16 @@ namespace softchain::chain
                   << " points (Chain/Surface subdivisions = " << p.surface_subdivisions << ")\n";
     }
 
-    // Blocked force and grasp per model, if there are contact samples.
+    // Blocked force and grasp per model, if there are contact samples;
+    // without, an earlier run's summary is removed (the report reads it).
     void report_contact(const ChainValidation &validation, const std::string &file)
     {
       const data::CsvTable summary = validation.grasp_summary_table();
       if (summary.n_rows() == 0)
-        return;
+        {
+          std::filesystem::remove(file);
+          return;
+        }
       summary.write(file);
       const auto precision = std::cout.precision(3);
       for (std::size_t r = 0; r < summary.n_rows(); ++r)
@@ -231,6 +235,8 @@ namespace softchain::chain
 
     // The paper's validation experiment, if the database holds its samples:
     // base torque traces and their errors per model (tables, plot, lines).
+    // Without, an earlier protocol's tables and plot are removed (the report
+    // reads them).
     void compare_protocol(const std::vector<ChainModel> &models,
                           const data::ActuationDatabase &database, const ChainParameters &p,
                           const data::ChainFileSet &files)
@@ -240,7 +246,12 @@ namespace softchain::chain
       ProtocolTorques protocol(
         database, (std::filesystem::path(database.path()).parent_path() / "protocol_samples.csv").string());
       if (protocol.empty())
-        return;
+        {
+          for (const std::string &file : {files.protocol_torques, files.protocol_summary, files.protocol_plot,
+                                          files.protocol_plot_script})
+            std::filesystem::remove(file);
+          return;
+        }
       for (const ChainModel &model : models)
         protocol.compare(model, p.newton);
       protocol.trace_table().write(files.protocol_torques);

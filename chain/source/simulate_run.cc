@@ -203,9 +203,13 @@ namespace softchain::chain
             all->add_row(cells);
           }
       }
-    if (n == 0)
-      return 0;
-    all->write(data::SimulateFileSet(output_dir, "free").contact_vs_fem);
+    const std::string comparison = data::SimulateFileSet(output_dir, "free").contact_vs_fem;
+    if (n == 0) // no contact sample: an earlier run's comparison goes
+      {
+        std::filesystem::remove(comparison);
+        return 0;
+      }
+    all->write(comparison);
     const std::string file = data::ChainFileSet(output_dir).grasp_summary;
     write_mujoco_row(file, {"mujoco", data::CsvTable::cell(n), "0", data::CsvTable::cell(blocked),
                             data::CsvTable::cell(grasp), data::CsvTable::cell(tip), "nan", "nan"});

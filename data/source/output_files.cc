@@ -41,6 +41,7 @@ namespace softchain::data
     , protocol_torques(directory + "/protocol_torques.csv")
     , protocol_summary(directory + "/protocol_summary.csv")
     , protocol_plot(directory + "/protocol_torques.png")
+    , protocol_plot_script(directory + "/protocol_torques.gp")
     , mjcf(directory + "/finger.xml")
     , grasp_summary(directory + "/grasp_summary.csv")
   {}

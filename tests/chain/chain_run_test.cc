@@ -5,6 +5,7 @@
 #include <softchain/chain/chain_parameters.h>
 #include <softchain/chain/chain_run.h>
 #include <softchain/chain/finger_collision_surface.h>
+#include <softchain/chain/simulate_run.h>
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/input_error.h>
 
@@ -16,9 +17,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 using namespace softchain::chain;
 using namespace softchain;
@@ -314,6 +317,31 @@ TEST_CASE("run_chain compares contact samples in force and pose and writes grasp
         }
     }
   CHECK(printed.str().find("chain: M2 in contact: blocked force error") != std::string::npos);
+
+  // A .prm that no longer asks for the contact samples (the sweep's plan
+  // without them): no contact summary, and the last one does not stay behind
+  // for the report to show.
+  {
+    auto                     database = data::ActuationDatabase::open(dir.file("database.h5"));
+    std::vector<std::string> free;
+    for (const std::string &id : database.sample_ids())
+      if (database.read_sample(id).actuation.obstacles.empty())
+        free.push_back(id);
+    REQUIRE(free.size() + 3 == database.sample_ids().size());
+    database.set_plan(free);
+  }
+  std::ostringstream again;
+  {
+    const softchain::testing::StreamRedirect capture(std::cout, again);
+    REQUIRE(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, false) == 0);
+  }
+  CHECK_FALSE(std::filesystem::exists(out + "/chain/grasp_summary.csv"));
+  CHECK(again.str().find("in contact") == std::string::npos);
+  // Nor does an earlier MuJoCo comparison with the FEM's contact samples.
+  std::filesystem::create_directories(out + "/simulate");
+  std::ofstream(out + "/simulate/contact_vs_fem.csv") << "obstacle,pressure\ntable,40000\n";
+  CHECK(simulate_contact_scenes(data::PrmFile::read(prm), dir.file("database.h5"), out) == 0);
+  CHECK_FALSE(std::filesystem::exists(out + "/simulate/contact_vs_fem.csv"));
 }
 
 TEST_CASE("the Chain subsection is read and checked")

@@ -18,6 +18,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 using namespace softchain;
 
@@ -156,16 +158,26 @@ TEST_CASE("the protocol gives the same samples on 1 rank and on 2 ranks in 2 sam
                                    data::ActuationDatabase::open(parallel.database())) == "");
 }
 
-TEST_CASE("a sweep without the protocol removes the earlier protocol's listing")
+TEST_CASE("a run without the protocol removes the earlier protocol's listing, tables and plot")
 {
-  const std::string springs = "subsection Springs\n  set Generate for bender = true\nend\n";
-  const testing::TinyDesign design("protocol_dropped", "set Pressure sweep = 1e3, 2e3, 3e3",
-                                   springs + protocol);
-  REQUIRE(design.run("sweep").status == 0);
-  CHECK(std::filesystem::exists(design.output() + "/protocol_samples.csv"));
-  design.write("set Pressure sweep = 1e3, 2e3, 3e3", springs);
-  REQUIRE(design.run("sweep").status == 0);
-  CHECK_FALSE(std::filesystem::exists(design.output() + "/protocol_samples.csv"));
+  const testing::TinyDesign design = testing::pipeline_design("protocol_dropped", false, protocol);
+  const std::vector<std::string> files{"protocol_samples.csv", "chain/protocol_torques.csv",
+                                       "chain/protocol_summary.csv", "chain/protocol_torques.png",
+                                       "chain/protocol_torques.gp"};
+  REQUIRE(design.run("run").status == 0);
+  for (const std::string &file : files)
+    CHECK(std::filesystem::exists(design.output() + "/" + file));
+  // The same design without subsection Protocol: the report, which reads
+  // the chain's protocol tables, must not find the earlier ones.
+  design.write(testing::pipeline_samples(), testing::pipeline_settings(false));
+  const auto outcome = design.run("run");
+  INFO(outcome.output);
+  REQUIRE(outcome.status == 0);
+  for (const std::string &file : files)
+    {
+      INFO(file);
+      CHECK_FALSE(std::filesystem::exists(design.output() + "/" + file));
+    }
 }
 
 TEST_CASE("a protocol parameter out of range stops the sweep before any solve, naming it")

@@ -21,7 +21,8 @@
 // solve time nan), replacing an earlier mujoco row; contact_vs_fem.csv then
 // holds every scene's rows. `softchain run` calls it
 // after the chain's validation and MJCF export. Without contact samples it
-// does nothing and returns 0.
+// removes an earlier run's contact_vs_fem.csv and returns 0 (the scenes' own
+// time series stay: `softchain simulate` writes them too).
 #include <softchain/data/prm_file.h>
 
 #include <string>

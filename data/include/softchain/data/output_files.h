@@ -64,6 +64,7 @@ namespace softchain::data
     std::string protocol_torques;   // protocol_torques.csv: base torques over the protocol
     std::string protocol_summary;   // protocol_summary.csv
     std::string protocol_plot;      // protocol_torques.png
+    std::string protocol_plot_script; // protocol_torques.gp: gnuplot's script of it
     std::string mjcf;               // finger.xml (softchain chain --export-mjcf)
     std::string grasp_summary;      // grasp_summary.csv: contact samples per model
   };
