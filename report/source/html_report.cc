@@ -106,6 +106,15 @@ namespace softchain::report
       }
     const auto        table = data::CsvTable::read(path);
     const std::size_t last  = table.n_rows() - 1;
+    const auto &columns = table.columns();
+    if (std::find(columns.begin(), columns.end(), "design_hash") == columns.end() ||
+        table.text(0, "design_hash") != design_.design_hash)
+      {
+        page.paragraph("The FEM's discretisation error is not shown: " + path +
+                       " is of another design than this database's (" + design_.design_hash +
+                       "); run `softchain accuracy` on this .prm again.");
+        return;
+      }
     page.paragraph("FEM discretisation error (softchain accuracy, at the .prm's Loads): the design's "
                    "mesh lies " + fmt(table.number(0, "distance_to_converged_percent_L")) +
                    " % of L from the mesh-converged answer, which is uncertain to " +

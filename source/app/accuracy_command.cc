@@ -15,6 +15,7 @@
 #include <softchain/data/richardson_extrapolation.h>
 #include <softchain/fem/boundary_average.h>
 #include <softchain/fem/boundary_ids.h>
+#include <softchain/fem/design_hash.h>
 #include <softchain/fem/finger_mesh.h>
 #include <softchain/fem/quasi_static_solver.h>
 
@@ -50,6 +51,7 @@ namespace softchain::app
       double             wall_time;
       bool               converged;
       Tensor<1, 3>       tip; // mean tip displacement, m
+      std::string        design_hash; // of its mesh and model (fem::design_hash)
     };
 
     Solved solve(const Parameters &prm, const Discretisation &d, ConditionalOStream &out)
@@ -67,7 +69,8 @@ namespace softchain::app
       const auto result = solve_loads(solver, variant, log);
       const Solved solved{d, static_cast<unsigned int>(solver.space().dof_handler.n_dofs()),
                           result.wall_time, result.converged,
-                          mean_boundary_displacement(solver.space(), solver.displacement(), boundary::tip)};
+                          mean_boundary_displacement(solver.space(), solver.displacement(), boundary::tip),
+                          design_hash(variant, mesh)};
       out << "  " << d.name << ": " << 1e3 * d.mesh_size << " mm";
       if (d.mesh_size_along > 0)
         out << " (" << 1e3 * d.mesh_size_along << " mm along the finger)";
@@ -114,7 +117,10 @@ namespace softchain::app
     }
 
     // <output>/fem_accuracy.csv (rank 0): one row per run with its distance
-    // to the estimate, then the estimate with its uncertainty (% of L).
+    // to the estimate, then the estimate with its uncertainty (% of L). Each
+    // run names its design hash; the first, the design's own, is the hash of
+    // the database `softchain sweep` writes for this .prm, by which the
+    // report knows whether the table is of the design it reports on.
     void write_table(const std::string &csv, const std::vector<Solved> &runs, const Estimate &estimate,
                      const double length)
     {
@@ -122,16 +128,17 @@ namespace softchain::app
         return;
       const auto mm = [](double v) { return data::canonical(1e3 * v); };
       data::CsvTable table({"run", "mesh_size_mm", "wall_layers", "reinforcement", "dofs", "wall_time_s",
-                            "tip_dx_mm", "tip_dy_mm", "tip_dz_mm", "distance_to_converged_percent_L"});
+                            "tip_dx_mm", "tip_dy_mm", "tip_dz_mm", "distance_to_converged_percent_L",
+                            "design_hash"});
       for (const Solved &run : runs)
         table.add_row({run.discretisation.name, mm(run.discretisation.mesh_size),
                        std::to_string(run.discretisation.wall_layers),
                        run.discretisation.sheets ? "sheets" : "springs", std::to_string(run.dofs),
                        data::canonical(run.wall_time), mm(run.tip[0]), mm(run.tip[1]), mm(run.tip[2]),
-                       data::canonical((run.tip - estimate.tip).norm() * 100 / length)});
+                       data::canonical((run.tip - estimate.tip).norm() * 100 / length), run.design_hash});
       table.add_row({estimate.asymptotic ? "converged (Richardson)" : "converged (finest run)", "", "",
                      "sheets", "", "", mm(estimate.tip[0]), mm(estimate.tip[1]), mm(estimate.tip[2]),
-                     data::canonical(estimate.uncertainty * 100 / length)});
+                     data::canonical(estimate.uncertainty * 100 / length), ""});
       std::filesystem::create_directories(std::filesystem::path(csv).parent_path());
       table.write(csv);
     }

@@ -131,7 +131,8 @@ namespace
      "  the mean tip displacement over those three estimates the mesh-converged\n"
      "  answer and its uncertainty; the last line is the design's distance to it\n"
      "  in % of its length. Writes <output>/fem_accuracy.csv, which the report's\n"
-     "  summary shows. Parametric designs with Element shape = hex, Control =\n"
+     "  summary shows while the design is unchanged (the table names its design\n"
+     "  hash). Parametric designs with Element shape = hex, Control =\n"
      "  pressure. See docs/fem_accuracy.md.\n",
      [](const Invocation &i) { return app::accuracy_command(i.file); }},
     {"run", "the whole pipeline: sweep, reduce, chain, report; lists the output files",

@@ -4,7 +4,8 @@
 # the converged estimate; the sheet runs converge (each refinement moves the
 # tip less than the one before: measured 6.2 mm, then 1.2 mm); the design's
 # distance to the estimate, recomputed here from the table's tips, is the
-# printed error (to the 3 digits printed).
+# printed error (to the 3 digits printed); the design's run names the design
+# hash of the database a sweep of the same .prm writes.
 #   accuracy_estimate.sh SOFTCHAIN PARAMETER_DIR
 set -euo pipefail
 softchain=$1
@@ -30,4 +31,17 @@ awk -F, -v printed="$printed" 'NR == 2 { x = $7; y = $8; z = $9 } NR == 6 { cx =
         printf "design to estimate: %.4f %% of L (printed %s)\n", e, printed
         exit !(e > 0 && (e - printed) ^ 2 <= (5e-3 * e) ^ 2) }' "$table" ||
   { echo "FAIL: the printed error is not the design's distance to the estimate"; exit 1; }
+# The table names the design it was made for: the design's own run carries the
+# hash of the database `softchain sweep` writes for the same .prm (the report
+# shows the error only for that database), the sheet runs other hashes.
+hash=$(awk -F, 'NR == 2 { print $11 }' "$table")
+[[ "$hash" =~ ^[0-9a-f]{16}$ ]] || { echo "FAIL: the design's run has no design hash ('$hash')"; exit 1; }
+[ "$(awk -F, -v h="$hash" 'NR >= 3 && NR <= 5 && $11 == h' "$table")" = "" ] ||
+  { echo "FAIL: a sheet run has the design's hash"; exit 1; }
+sed -e "s/^\( *set \(Lateral tip forces\|Torsion couples\|Bending tip forces\|Chord samples\|Skin samples\|Validation samples\|Contact samples\) *=\).*/\1/" \
+    -e "s/^\( *set Pressure sweep *=\).*/\1 40e3/" -e "s/^\( *set Tip angle *=\).*/\1 0/" \
+    accuracy.prm > accuracy_sweep.prm
+"$softchain" sweep accuracy_sweep.prm > accuracy_sweep.log 2>&1 || { cat accuracy_sweep.log; echo "FAIL: sweep"; exit 1; }
+grep -aq "$hash" "$out/database.h5" ||
+  { echo "FAIL: the database's design hash is not the table's $hash"; exit 1; }
 echo "accuracy estimate: OK"

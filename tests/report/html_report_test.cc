@@ -209,7 +209,7 @@ TEST_CASE("A missing input is an error naming the file")
 // The summary gives the FEM's own error beside the chain's when `softchain
 // accuracy` has written fem_accuracy.csv (its first row the design's
 // distance to the converged estimate, its last that estimate's
-// uncertainty), and says how to get it when not.
+// uncertainty) for this database's design, and says how to get it when not.
 TEST_CASE("The summary shows the FEM's discretisation error, or how to estimate it")
 {
   const SyntheticOutputs outputs("report_fem_accuracy");
@@ -217,14 +217,23 @@ TEST_CASE("The summary shows the FEM's discretisation error, or how to estimate 
     return HtmlReport(softchain::data::PrmFile::read(outputs.prm()), outputs.database(), outputs.directory()).html();
   };
   CHECK(html().find("run `softchain accuracy` on its .prm") != std::string::npos);
-  softchain::data::CsvTable table({"run", "distance_to_converged_percent_L"});
-  using Row = std::vector<std::string>;
-  table.add_row(Row{"design", "2.07"});
-  table.add_row(Row{"sheets", "0.5"});
-  table.add_row(Row{"converged (Richardson)", "0.313"});
-  table.write(outputs.file("fem_accuracy.csv"));
+  // The table of this database's design (its hash, "hash" in SyntheticOutputs).
+  const auto write_table = [&](const std::string &design_hash) {
+    softchain::data::CsvTable table({"run", "distance_to_converged_percent_L", "design_hash"});
+    using Row = std::vector<std::string>;
+    table.add_row(Row{"design", "2.07", design_hash});
+    table.add_row(Row{"sheets", "0.5", "0123456789abcdef"});
+    table.add_row(Row{"converged (Richardson)", "0.313", ""});
+    table.write(outputs.file("fem_accuracy.csv"));
+  };
+  write_table("hash");
   const std::string with = html();
   CHECK(with.find("mesh lies 2.07 % of L from the mesh-converged answer, which is uncertain to 0.313 % of L") !=
         std::string::npos);
   CHECK(with.find("FEM discretisation error") < with.find("1. The design"));
+  // Made for another design (the .prm's walls changed since): not shown as this one's.
+  write_table("fedcba9876543210");
+  const std::string stale = html();
+  CHECK(stale.find("2.07 %") == std::string::npos);
+  CHECK(stale.find("is of another design") != std::string::npos);
 }
