@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <map>
 
 namespace softchain::reduction
@@ -56,6 +57,7 @@ namespace softchain::reduction
       throw data::InputError(source + ": the body sampling spacing must be positive");
     for (const auto &X : mesh.X)
       box_.extend(data::vector_of(X));
+    check_lattice_size(source);
     for (std::size_t c = 0; c < n_cells_; ++c)
       {
         Eigen::AlignedBox3d cell_box;
@@ -65,6 +67,25 @@ namespace softchain::reduction
       }
     build_buckets();
     build_lattice();
+  }
+
+  // The lattice's grid over the bounding box, before any point is made: a
+  // joint spacing mistyped by orders of magnitude (1e-7 for 1e-2) would
+  // otherwise fill the memory for minutes.
+  void BodySamples::check_lattice_size(const std::string &source) const
+  {
+    double points = 1;
+    for (int d = 0; d < 3; ++d)
+      points *= std::max(1.0, std::floor(box_.sizes()(d) / spacing_ + 0.5));
+    if (points <= max_lattice_points)
+      return;
+    const double smallest = std::cbrt(box_.volume() / max_lattice_points) * lattice_points_per_spacing;
+    std::ostringstream message;
+    message << source << ": Reduction/Joint spacing a = " << spacing_ * lattice_points_per_spacing
+            << " m samples the body on a lattice of h = a/" << lattice_points_per_spacing << " with "
+            << points << " points over the mesh's bounding box, more than " << max_lattice_points
+            << "; a joint spacing of at least " << smallest << " m keeps it within";
+    throw data::InputError(message.str());
   }
 
   Eigen::Vector3d BodySamples::corner(std::size_t cell, int a) const

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace softchain::reduction
 {
@@ -17,11 +18,21 @@ namespace softchain::reduction
     const auto [lowest, highest] = std::minmax_element(
       X.begin(), X.end(), [](const data::Point3 &p, const data::Point3 &q) { return p[0] < q[0]; });
     const double length = (*highest)[0] - (*lowest)[0];
-    if (n_joints_ == 0)
-      n_joints_ = static_cast<int>(std::lround(length / spacing_));
-    if (n_joints_ < 1)
-      throw data::InputError(source + ": the mesh is " + std::to_string(length) +
-                             " m long, no joint fits at spacing a = " + std::to_string(spacing_) +
-                             " m (Reduction/Joint spacing)");
+    // Counted in double first: a spacing mistyped by orders of magnitude
+    // would overflow an int.
+    const double count = n_joints_ > 0 ? n_joints_ : std::round(length / spacing_);
+    if (count >= 1 && count <= max_joints)
+      {
+        n_joints_ = static_cast<int>(count);
+        return;
+      }
+    std::ostringstream message;
+    message << source << ": the mesh is " << length << " m long, so a = " << spacing_
+            << " m (Reduction/Joint spacing) gives " << count << " joints";
+    if (count < 1)
+      message << "; at least one must fit";
+    else
+      message << ", more than " << max_joints << " (the spacing is in metres)";
+    throw data::InputError(message.str());
   }
 } // namespace softchain::reduction

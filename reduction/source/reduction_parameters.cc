@@ -1,6 +1,7 @@
 // ReductionParameters: declares, reads and checks "subsection Reduction".
 #include <softchain/data/input_error.h>
 #include <softchain/data/prm_file.h>
+#include <softchain/reduction/joint_layout.h>
 #include <softchain/reduction/reduction_parameters.h>
 
 #include <algorithm>
@@ -91,6 +92,8 @@ namespace softchain::reduction
     section.require(p.joint_spacing > 0, "Joint spacing", "must be positive");
     p.n_joints = section.get_integer("Number of joints");
     section.require(p.n_joints >= 0, "Number of joints", "must be >= 0");
+    section.require(p.n_joints <= max_joints, "Number of joints",
+                    "must be at most " + std::to_string(max_joints));
     p.placement    = read_placement(section);
     p.joint_height      = read_length_or_auto(section, "Joint height");
     p.twist_axis_offset = read_length_or_auto(section, "Twist axis offset");

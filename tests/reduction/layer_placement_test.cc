@@ -356,3 +356,21 @@ TEST_CASE("a joint height outside the body is an error naming the joint")
   no_cells.cells.clear();
   CHECK_THROWS_AS(BodySamples(no_cells, a / 8, "box"), data::InputError);
 }
+
+TEST_CASE("a joint spacing mistyped by orders of magnitude is an error at once, not a full memory")
+{
+  const data::MeshRecord mesh = finger_mesh(true);
+  // 90 mm at 0.1 um would be 900,000 joints; at 1e-12 m more than an int holds.
+  for (const double spacing : {1e-7, 1e-12})
+    CHECK_THROWS_WITH(JointLayout(mesh.X, spacing, 0, "box"),
+                      Catch::Contains("box: the mesh is 0.09 m long") &&
+                        Catch::Contains("(Reduction/Joint spacing) gives") &&
+                        Catch::Contains("joints, more than 1000"));
+  CHECK(JointLayout(mesh.X, 0.09 / max_joints, 0, "box").n_joints() == max_joints);
+  // Below that the body's lattice is the bound: at a = 0.5 mm (h = 62.5 um)
+  // the 90 mm box holds more than 1e7 of its points, and the message says
+  // which a fits.
+  CHECK_THROWS_WITH(BodySamples(mesh, 0.5 * mm / lattice_points_per_spacing, "box"),
+                    Catch::Contains("Reduction/Joint spacing a = 0.0005 m") &&
+                      Catch::Contains("more than 1e+07") && Catch::Contains("at least"));
+}

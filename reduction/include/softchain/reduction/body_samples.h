@@ -31,6 +31,9 @@ namespace softchain::reduction
   // the joint spacing): a slab of the smallest default half-width b = a/3
   // holds 5 planes of it, and a 2 mm wall 1-2 points across.
   constexpr double lattice_points_per_spacing = 8;
+  // The most lattice points over the mesh's bounding box (about 1 GB of
+  // located points): P10's 90 mm at a joint spacing of 1.3 mm.
+  constexpr double max_lattice_points = 1e7;
 
   // A material point located in a cell: the corners' shape-function values.
   struct CellPoint
@@ -43,8 +46,9 @@ namespace softchain::reduction
   {
   public:
     // Keeps a reference to `mesh`, which must outlive it. Throws
-    // data::InputError naming `source` when the mesh has no cells or the
-    // spacing is not positive.
+    // data::InputError naming `source` when the mesh has no cells, the
+    // spacing is not positive, or the lattice would have more than
+    // max_lattice_points over the mesh's bounding box.
     BodySamples(const data::MeshRecord &mesh, double spacing, const std::string &source);
 
     const Eigen::AlignedBox3d       &reference_box() const { return box_; }
@@ -59,6 +63,7 @@ namespace softchain::reduction
     Eigen::Vector3d          deformed(const CellPoint &point, const std::vector<data::Point3> &x) const;
 
   private:
+    void check_lattice_size(const std::string &source) const;
     std::optional<CellPoint> locate_in(std::size_t cell, const Eigen::Vector3d &X) const;
     std::optional<CellPoint> locate_in_tetrahedron(std::size_t cell, const Eigen::Vector3d &X) const;
     std::optional<CellPoint> locate_in_hexahedron(std::size_t cell, const Eigen::Vector3d &X) const;

@@ -10,10 +10,16 @@
 
 namespace softchain::reduction
 {
+  // The most joints a chain may have: its equilibrium solves a dense system
+  // of 3n unknowns, n^3 work, and a joint spacing below the mesh's cells
+  // has no slab of its own anyway.
+  constexpr int max_joints = 1000;
+
   class JointLayout
   {
   public:
-    // Throws data::InputError naming `source` when no joint fits.
+    // Throws data::InputError naming `source` when no joint fits or more
+    // than max_joints would.
     JointLayout(const std::vector<data::Point3> &X, double spacing, int n_requested,
                 const std::string &source);
 
