@@ -216,6 +216,17 @@ namespace softchain::data
     return static_cast<int>(v);
   }
 
+  int PrmSection::get_integer(const std::string &name, const int low, const int high) const
+  {
+    const std::string value = get(name);
+    char             *end   = nullptr;
+    const long long   v     = std::strtoll(value.c_str(), &end, 10);
+    require(!value.empty() && *end == '\0', name, "'" + value + "' is not an integer");
+    require(v >= low && v <= high, name,
+            "must lie in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+    return static_cast<int>(v);
+  }
+
   bool PrmSection::get_bool(const std::string &name) const
   {
     const std::string value = get(name);

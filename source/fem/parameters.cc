@@ -59,16 +59,6 @@ namespace softchain::fem
       return map;
     }
 
-    // An integer entry within [low, high].
-    unsigned int bounded_integer(const data::PrmSection &section, const std::string &name,
-                                 const int low, const int high)
-    {
-      const int value = section.get_integer(name);
-      section.require(value >= low && value <= high, name,
-                      "must lie in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
-      return static_cast<unsigned int>(value);
-    }
-
     // A real entry within [low, high].
     double bounded_double(const data::PrmSection &section, const std::string &name,
                           const double low, const double high)
@@ -134,13 +124,13 @@ namespace softchain::fem
                                                                   {"Q2", ElementType::Q2},
                                                                   {"P1", ElementType::P1},
                                                                   {"P2", ElementType::P2}});
-    global_refinements  = bounded_integer(section, "Global refinements", 0, 4);
+    global_refinements  = section.get_integer("Global refinements", 0, 4);
     node_jitter         = bounded_double(section, "Node jitter", 0, 1);
     bender_length       = bounded_double(section, "Bender length", 0, unbounded);
     bender_width        = bounded_double(section, "Bender width", 0, unbounded);
     bender_height       = bounded_double(section, "Bender height", 0, unbounded);
     bender_wall         = bounded_double(section, "Bender wall", 0, unbounded);
-    bender_cells_length = bounded_integer(section, "Bender cells along length", 2, 400);
+    bender_cells_length = section.get_integer("Bender cells along length", 2, 400);
   }
 
   void MaterialParameters::declare(data::PrmSection               &section,
@@ -326,7 +316,7 @@ namespace softchain::fem
     displacement_tolerance = tolerance(section, "Displacement tolerance");
     intermediate_tolerance = std::max({tolerance(section, "Intermediate tolerance"),
                                        residual_tolerance, displacement_tolerance});
-    max_newton_iterations  = bounded_integer(section, "Maximum Newton iterations", 1, 100000);
+    max_newton_iterations  = section.get_integer("Maximum Newton iterations", 1, 100000);
     initial_load_step      = load_step(section, "Initial load step");
     min_load_step          = load_step(section, "Minimum load step");
     max_load_step          = load_step(section, "Maximum load step");
@@ -335,12 +325,12 @@ namespace softchain::fem
     section.require(initial_load_step <= max_load_step, "Initial load step",
                     "exceeds the maximum load step");
     max_load_step_attempts =
-      bounded_integer(section, "Maximum load step attempts", 1, std::numeric_limits<int>::max());
+      section.get_integer("Maximum load step attempts", 1, std::numeric_limits<int>::max());
     linear_solver =
       section.get_enum<LinearSolver>("Linear solver", {{"auto", LinearSolver::automatic},
                                                        {"direct", LinearSolver::direct},
                                                        {"iterative", LinearSolver::iterative}});
-    direct_solver_max_dofs = bounded_integer(section, "Direct solver maximum DoFs", 0,
+    direct_solver_max_dofs = section.get_integer("Direct solver maximum DoFs", 0,
                                              std::numeric_limits<int>::max());
     using DirectPackage   = SolverParameters::DirectPackage;
     direct_solver_package = section.get_enum<DirectPackage>(
@@ -350,7 +340,7 @@ namespace softchain::fem
     krylov_tolerance = tolerance(section, "Krylov tolerance");
     line_search      = section.get_bool("Line search");
     secant_predictor = section.get_bool("Secant predictor");
-    threads = bounded_integer(section, "Threads", 0, std::numeric_limits<int>::max());
+    threads = section.get_integer("Threads", 0, std::numeric_limits<int>::max());
   }
 
   void OutputParameters::declare(data::PrmSection &section)
@@ -366,7 +356,7 @@ namespace softchain::fem
   {
     write_vtu        = section.get_bool("Write VTU");
     write_load_steps = section.get_bool("Write load steps");
-    subdivisions     = bounded_integer(section, "Subdivisions", 0, 8);
+    subdivisions     = section.get_integer("Subdivisions", 0, 8);
     verbose          = section.get_bool("Verbose");
   }
 

@@ -373,7 +373,19 @@ TEST_CASE("the Chain subsection is read and checked")
     CHECK(ChainParameters::read(data::PrmFile::read(prm)).timed_solves == 5);
     std::ofstream(prm) << "subsection Chain\n  set Timed solves = 0\nend\n";
     CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
-                      Catch::Contains(prm) && Catch::Contains("Timed solves") && Catch::Contains(">= 1"));
+                      Catch::Contains(prm) && Catch::Contains("Timed solves") && Catch::Contains("[1, 1000]"));
+  }
+  SECTION("counts mistyped by orders of magnitude are errors, not hours of solves")
+  {
+    // 2^32 + 5 would wrap to 5 in an int.
+    for (const std::string entry : {"Surface subdivisions = 300", "Timed solves = 4294967301",
+                                    "Friction load steps = 20000", "Maximum Newton iterations = 1e9"})
+      {
+        INFO(entry);
+        std::ofstream(prm) << "subsection Chain\n  set " + entry + "\nend\n";
+        CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
+                          Catch::Contains(prm + ":2") && Catch::Contains(entry.substr(0, entry.find(" ="))));
+      }
   }
   SECTION("a bad method names file, line and parameter")
   {

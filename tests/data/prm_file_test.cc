@@ -65,6 +65,28 @@ TEST_CASE("prm: nested subsections, continuation lines and defaults")
                     Catch::Contains(dir.file("p.prm") + ":6: parameter 'Joint spacing'"));
 }
 
+TEST_CASE("prm: an integer within bounds, also one beyond an int, names file, line and range")
+{
+  ScratchDirectory dir("prm_bounded");
+  for (const auto &[value, ok] : std::vector<std::pair<std::string, bool>>{
+         {"7", true}, {"0", true}, {"8", false}, {"-1", false}, {"4294967297", false}, {"3.5", false}})
+    {
+      INFO(value);
+      PrmSection section = reduction_section();
+      PrmFile::read(write(dir, "subsection Reduction\n  set Number of joints = " + value + "\nend\n"))
+        .parse_section("Reduction", section);
+      if (ok)
+        CHECK(section.get_integer("Number of joints", 0, 7) == std::stoi(value));
+      else
+        CHECK_THROWS_WITH(section.get_integer("Number of joints", 0, 7),
+                          Catch::Contains(dir.file("p.prm") + ":2: parameter 'Number of joints'"));
+    }
+  PrmSection section = reduction_section();
+  PrmFile::read(write(dir, "subsection Reduction\n  set Number of joints = 9\nend\n"))
+    .parse_section("Reduction", section);
+  CHECK_THROWS_WITH(section.get_integer("Number of joints", 0, 7), Catch::Contains("must lie in [0, 7]"));
+}
+
 TEST_CASE("prm: an unknown parameter names file and line")
 {
   ScratchDirectory dir("prm_unknown");

@@ -29,6 +29,9 @@ namespace softchain::data
     std::string         get(const std::string &name) const;
     double              get_double(const std::string &name) const;
     int                 get_integer(const std::string &name) const;
+    // The same, required to lie in [low, high] (an error naming the entry and
+    // the range otherwise, also for a number beyond an int).
+    int                 get_integer(const std::string &name, int low, int high) const;
     bool                get_bool(const std::string &name) const;
     // Comma separated words, trimmed ("" gives an empty list).
     std::vector<std::string> get_list(const std::string &name) const;
