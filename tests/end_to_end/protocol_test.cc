@@ -188,7 +188,7 @@ TEST_CASE("a protocol parameter out of range stops the sweep before any solve, n
   INFO(outcome.output);
   CHECK(outcome.status == 1);
   CHECK(outcome.output.find("tiny.prm:") != std::string::npos);
-  CHECK(outcome.output.find("parameter 'Steps' in subsection 'Protocol': must be at least 1") !=
+  CHECK(outcome.output.find("parameter 'Steps' in subsection 'Protocol': must lie in [1, 100]") !=
         std::string::npos);
   CHECK_FALSE(std::filesystem::exists(design.database()));
 }

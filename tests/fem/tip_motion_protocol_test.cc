@@ -155,5 +155,6 @@ namespace tip_motion_protocol_test
     CHECK_THROWS_WITH(read("  set Tip angle = 90\n  set Twist amplitude = 0\n"),
                       Catch::Contains("'Twist amplitude'"));
     CHECK_THROWS_WITH(read("  set Steps = 0\n"), Catch::Contains("'Steps'"));
+    CHECK_THROWS_WITH(read("  set Steps = 40000\n"), Catch::Contains("'Steps'") && Catch::Contains("[1, 100]"));
   }
 } // namespace tip_motion_protocol_test

@@ -73,9 +73,9 @@ namespace softchain::fem
     protocol.lateral         = positive("Lateral amplitude");
     protocol.bending         = positive("Bending amplitude");
     protocol.twist           = positive("Twist amplitude") * degree;
-    protocol.steps           = section.get_integer("Steps");
+    // Each step is six FEM samples (both signs of three motions): 100 are 600.
+    protocol.steps           = section.get_integer("Steps", 1, 100);
     protocol.point_contact   = section.get_selection("Tip contact", {"point", "face"}) == "point";
-    section.require(protocol.steps >= 1, "Steps", "must be at least 1");
     return protocol;
   }
 
