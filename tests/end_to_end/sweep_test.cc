@@ -180,6 +180,21 @@ TEST_CASE("sweep writes a database whose layout the data layer reads back")
   CHECK(softchain::testing::occurrences(series, "<DataSet") == 6);
 }
 
+TEST_CASE("the VTU series lists the samples the .prm asks for now, also after a rerun that solves nothing")
+{
+  const std::string vtu = "subsection Output\n  set Write VTU = true\nend\n";
+  TinyDesign        design("sweep_series", samples, vtu);
+  REQUIRE(design.run("sweep").status == 0);
+  const auto listed = [&] { return softchain::testing::occurrences(file_bytes(design.output() + "/vtu/samples.pvd"), "<DataSet"); };
+  CHECK(listed() == 6);
+  // The held-out sample leaves the .prm: it stays cached, and leaves the series.
+  design.write(samples.substr(0, samples.find("set Validation samples")), vtu);
+  const auto rerun = design.run("sweep");
+  INFO(rerun.output);
+  CHECK(rerun.output.find("5 cached, 0 solved") != std::string::npos);
+  CHECK(listed() == 5);
+}
+
 TEST_CASE("Q2 and P2 databases hold the mid-side nodes and the sub-triangles of curved faces")
 {
   for (const std::string element : {"Q2", "P2"})

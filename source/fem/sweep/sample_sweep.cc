@@ -152,7 +152,7 @@ namespace softchain::fem
     summary.failed = Utilities::MPI::broadcast(MPI_COMM_WORLD, summary.failed, 0);
     if (world_rank() == 0)
       write_plan(known);
-    if (prm.output.write_vtu && world_rank() == 0 && summary.n_solved > 0)
+    if (prm.output.write_vtu && world_rank() == 0) // also when all were cached: the set may have shrunk
       write_series();
     return summary;
   }
