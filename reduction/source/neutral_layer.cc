@@ -66,6 +66,13 @@ namespace softchain::reduction
         heights.push_back(y);
         joints.push_back(std::move(at_height));
       }
+    // A hollow finger's centroid may lie in its cavity: without a measured
+    // height the joints then go to the middle of the lowest solid band.
+    if (joints_at(height_).empty() && !heights.empty())
+      {
+        height_         = 0.5 * (heights.front() + heights.back());
+        centroid_inside_ = false;
+      }
     if (heights.size() < 3 || x_joints_.size() < 2 || tip_nodes_.empty() || bending_samples.empty())
       return;
 
@@ -149,8 +156,9 @@ namespace softchain::reduction
            << "measured on " << n_samples_ << " pressure sample(s) (rms joint position error there "
            << 1e3 * residual_ << " mm)";
     else
-      text << "no pressure sample: joints at the body's centroid height y = " << 1e3 * height_
-           << " mm";
+      text << "no pressure sample: joints at " << (centroid_inside_ ? "the body's centroid height" :
+                                                                     "the middle of its lowest solid layer")
+           << " y = " << 1e3 * height_ << " mm";
     return text.str();
   }
 } // namespace softchain::reduction

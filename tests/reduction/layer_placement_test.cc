@@ -308,9 +308,11 @@ TEST_CASE("a uniformly stretched finger: the stretch is recovered and no layer i
         1e4);
       const NeutralLayer layer(body, layout, mesh, {&stretched});
       CHECK_FALSE(layer.measured());
-      // The fallback is the centroid of the hollow section: y from -2 to 10 mm,
-      // the cavity's 8 mm x 12 mm centred at y = 4 mm like the outline.
-      CHECK(layer.height() == Approx(4 * mm).margin(1e-12));
+      // The fallback: the hollow section's centroid (y from -2 to 10 mm, the
+      // cavity's 8 mm x 12 mm centred at y = 4 mm like the outline) lies in
+      // the cavity, so the joints go to the bottom wall's middle, y = -1 mm,
+      // to the 64 probed heights (12 mm / 64 apart).
+      CHECK(layer.height() == Approx(-1 * mm).margin(12 * mm / 64));
       const JointGeometry geometry(layout, body, 0.0, a / 3);
       const JointFrames   frames(RotationMethod::affine_fit, geometry.slabs(),
                                  geometry.reference_points(), geometry.points(stretched.x), "s");
@@ -355,6 +357,28 @@ TEST_CASE("a joint height outside the body is an error naming the joint")
   data::MeshRecord no_cells = mesh;
   no_cells.cells.clear();
   CHECK_THROWS_AS(BodySamples(no_cells, a / 8, "box"), data::InputError);
+}
+
+TEST_CASE("without pressure samples the joints sit at the centroid, or in the bottom wall of a hollow finger")
+{
+  chain::testing::BoxMeshSpec spec; // y from -2 to 10 mm
+  const data::MeshRecord      solid = chain::testing::box_mesh(spec);
+  const JointLayout           layout(solid.X, a, 0, "box");
+  const NeutralLayer at_centroid(std::make_shared<const BodySamples>(solid, a / 8, "box"), layout, solid, {});
+  CHECK_FALSE(at_centroid.measured());
+  // The lattice's mean: its points, h = 1.25 mm apart from the box's corner,
+  // need not be centred in the box, by at most h / 2.
+  CHECK(at_centroid.height() == Approx(4 * mm).margin(0.625 * mm));
+  // Hollow, with 2 mm walls: the centroid lies in the cavity, where no joint
+  // can be; the bottom wall's middle is y = -1 mm, to the 64 probed heights
+  // (12 mm / 64 apart).
+  const data::MeshRecord hollow = finger_mesh(true);
+  const NeutralLayer in_wall(std::make_shared<const BodySamples>(hollow, a / 8, "box"), layout, hollow, {});
+  CHECK_FALSE(in_wall.measured());
+  CHECK(in_wall.height() == Approx(-1 * mm).margin(12 * mm / 64));
+  CHECK_THAT(in_wall.description(), Catch::Contains("lowest solid layer"));
+  CHECK_NOTHROW(JointGeometry(layout, std::make_shared<const BodySamples>(hollow, a / 8, "box"), in_wall.height(),
+                              a / 2));
 }
 
 TEST_CASE("a joint spacing mistyped by orders of magnitude is an error at once, not a full memory")

@@ -20,7 +20,8 @@
 // the cavity); y_n is its smallest value, refined by the parabola through it
 // and its neighbours. Without a pressure sample, or when E does not change
 // with y (no bending), y_n is the height of the body's centroid (the neutral
-// axis of a homogeneous beam).
+// axis of a homogeneous beam), or, where that lies in a cavity, the middle of
+// the lowest band of heights at which every joint lies in the body.
 #include <softchain/data/actuation_database.h>
 #include <softchain/reduction/body_samples.h>
 #include <softchain/reduction/joint_layout.h>
@@ -43,7 +44,8 @@ namespace softchain::reduction
                  const std::vector<const data::SampleRecord *> &bending_samples);
 
     double height() const { return height_; }
-    // True when measured from samples, false for the centroid fallback.
+    // True when measured from samples, false for the fallback (the centroid,
+    // or the lowest solid band's middle).
     bool measured() const { return measured_; }
     // Root mean square of |e_k| and |e_T| at y_n over samples and points [m]
     // (0 when not measured).
@@ -66,6 +68,7 @@ namespace softchain::reduction
     double                             z_centre_;
     double                             height_    = 0.0;
     bool                               measured_  = false;
+    bool                               centroid_inside_ = true; // unmeasured: y the centroid's
     double                             residual_  = 0.0;
     int                                n_samples_ = 0;
   };
