@@ -25,7 +25,8 @@
 // docs/chain_fidelity.md. LINKS_CSV (chain_kinematic_floor_links.csv): per
 // sample at a pressure of a pressure sample and per link, how its own links
 // differ from that state's (the link vector in the link's frame, x along
-// it, y towards the finger's top) and joint i's in-plane turn from it.
+// it, y towards the finger's top, z sideways) and joint i's in-plane turn
+// and twist from it.
 #include <softchain/chain/angle_units.h>
 #include <softchain/chain/kinematic_chain.h>
 #include <softchain/data/tip_pose_fit.h>
@@ -110,6 +111,7 @@ namespace
     std::vector<Eigen::Vector3d> points;
     Eigen::Vector3d              tip_frame = Eigen::Vector3d::Zero();
     std::vector<double>          phi; // the state's relative in-plane angles
+    std::vector<double>          psi; // and twists
   };
 
   Links links_at_state(const reduction::JointGeometry &geometry, const data::SampleRecord &state,
@@ -119,20 +121,24 @@ namespace
                                         geometry.reference_points(), geometry.points(state.x), state.id);
     const data::TipPose     tip = tip_fit.fit(data::select_nodes(state.x, mesh.tip_nodes));
     const Eigen::AngleAxisd Q_T(frames[frames.size() - 1].rotation.transpose() * tip.rotation);
-    std::vector<double>     phi;
+    std::vector<double>     phi, psi;
     for (std::size_t i = 0; i < frames.size(); ++i)
-      phi.push_back(frames.relative_angles(i).phi);
-    return {reduction::TwistAxis::links_of(geometry, frames, state.x, tip.position), Q_T.angle() * Q_T.axis(), phi};
+      {
+        phi.push_back(frames.relative_angles(i).phi);
+        psi.push_back(frames.relative_angles(i).psi);
+      }
+    return {reduction::TwistAxis::links_of(geometry, frames, state.x, tip.position), Q_T.angle() * Q_T.axis(), phi,
+            psi};
   }
 
   // Each link's change from the pressure state at the sample's pressure
   // (solved there; none otherwise): the link vector U_i+1 - U_i of the
   // sample's own links against the state's, in the link's frame [m], and
-  // joint i's in-plane turn from the state [rad].
+  // joint i's in-plane turn and twist from the state [rad].
   struct LinkChange
   {
     int             link;
-    double          turn;
+    double          turn, twist;
     Eigen::Vector3d change;
   };
   std::vector<LinkChange> link_changes(const reduction::JointGeometry &geometry, const data::SampleRecord &sample,
@@ -146,7 +152,7 @@ namespace
     const Links            &at  = state->second;
     std::vector<LinkChange> changes;
     for (std::size_t i = 0; i + 1 < own.points.size(); ++i)
-      changes.push_back({static_cast<int>(i) + 1, own.phi[i] - at.phi[i],
+      changes.push_back({static_cast<int>(i) + 1, own.phi[i] - at.phi[i], own.psi[i] - at.psi[i],
                          (own.points[i + 1] - own.points[i]) - (at.points[i + 1] - at.points[i])});
     return changes;
   }
@@ -158,7 +164,8 @@ namespace
   {
     std::map<double, Links> states{{0.0,
                                     {reduction::TwistAxis::reference_links(geometry, tip_fit.reference_centroid()),
-                                     Eigen::Vector3d::Zero(), std::vector<double>(geometry.n_joints(), 0.0)}}};
+                                     Eigen::Vector3d::Zero(), std::vector<double>(geometry.n_joints(), 0.0),
+                                     std::vector<double>(geometry.n_joints(), 0.0)}}};
     for (const auto &s : samples)
       if (s.actuation.role == "pressure" && s.actuation.pressure > 0)
         states[s.actuation.pressure] = links_at_state(geometry, s, tip_fit, mesh);
@@ -332,14 +339,14 @@ int main(int argc, char **argv)
       if (argc > 5)
         {
           std::ofstream csv(argv[5]);
-          csv << "sample,kind,pressure_kPa,force_N,link,turn_rad,dx_mm,dy_mm\n";
+          csv << "sample,kind,pressure_kPa,force_N,link,turn_rad,dx_mm,dy_mm,dz_mm,twist_rad\n";
           for (const Row &r : rows)
             for (const LinkChange &c : link_changes(on_layer, *r.record, states, tip_fit, mesh))
               {
                 char line[256];
-                std::snprintf(line, sizeof line, "%s,%s,%.0f,%.2f,%d,%.3f,%.2f,%.2f\n", r.sample.c_str(),
+                std::snprintf(line, sizeof line, "%s,%s,%.0f,%.2f,%d,%.3f,%.2f,%.2f,%.2f,%.3f\n", r.sample.c_str(),
                               r.kind.c_str(), r.pressure_kPa, r.force_N, c.link, c.turn, 1e3 * c.change.x(),
-                              1e3 * c.change.y());
+                              1e3 * c.change.y(), 1e3 * c.change.z(), c.twist);
                 csv << line;
               }
           if (!csv)
