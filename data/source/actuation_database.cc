@@ -503,9 +503,7 @@ namespace softchain::data
   {
     if (!writer_lock_)
       become_writer(std::make_shared<WriterLock>(path_));
-    const SamplePlan plan(path_);
-    plan.write(ids);
-    plan_ = plan.read();
+    plan_ = SamplePlan(path_).write(ids);
   }
 
   SampleRecord ActuationDatabase::read_sample(const std::string &id) const

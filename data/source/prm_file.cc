@@ -207,21 +207,23 @@ namespace softchain::data
     return std::strtod(value.c_str(), nullptr);
   }
 
-  int PrmSection::get_integer(const std::string &name) const
-  {
-    const std::string value = get(name);
-    char             *end   = nullptr;
-    const long        v     = std::strtol(value.c_str(), &end, 10);
-    require(!value.empty() && *end == '\0', name, "'" + value + "' is not an integer");
-    return static_cast<int>(v);
-  }
-
-  int PrmSection::get_integer(const std::string &name, const int low, const int high) const
+  long long PrmSection::parse_integer(const std::string &name) const
   {
     const std::string value = get(name);
     char             *end   = nullptr;
     const long long   v     = std::strtoll(value.c_str(), &end, 10);
     require(!value.empty() && *end == '\0', name, "'" + value + "' is not an integer");
+    return v;
+  }
+
+  int PrmSection::get_integer(const std::string &name) const
+  {
+    return static_cast<int>(parse_integer(name));
+  }
+
+  int PrmSection::get_integer(const std::string &name, const int low, const int high) const
+  {
+    const long long v = parse_integer(name);
     require(v >= low && v <= high, name,
             "must lie in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
     return static_cast<int>(v);

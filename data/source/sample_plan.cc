@@ -21,6 +21,14 @@ namespace softchain::data
     {
       return !line.empty() && line[0] != '.' && line.find_first_of("/ \t\r") == std::string::npos;
     }
+
+    // A plan as read() gives it: sorted, each id once.
+    std::vector<std::string> sorted_once(std::vector<std::string> ids)
+    {
+      std::sort(ids.begin(), ids.end());
+      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      return ids;
+    }
   } // namespace
 
   SamplePlan::SamplePlan(const std::string &database_path)
@@ -41,17 +49,14 @@ namespace softchain::data
                            "' (the plan lists one id per line; run `softchain sweep` again to rewrite it)");
         ids.push_back(line);
       }
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return ids;
+    return sorted_once(std::move(ids));
   }
 
-  void SamplePlan::write(std::vector<std::string> ids) const
+  std::vector<std::string> SamplePlan::write(std::vector<std::string> listed) const
   {
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    const std::vector<std::string> ids = sorted_once(std::move(listed));
     if (read() == ids)
-      return; // a rerun of the same .prm rewrites nothing
+      return ids; // a rerun of the same .prm rewrites nothing
     write_atomically(path_, [&](const std::string &temporary) {
       std::ofstream out(temporary);
       for (const std::string &id : ids)
@@ -60,6 +65,7 @@ namespace softchain::data
       if (!out)
         throw InputError(path_ + ": could not write the sample plan (disk full?)");
     });
+    return ids;
   }
 
   void SamplePlan::remove_leftovers() const

@@ -18,16 +18,14 @@ namespace softchain::data
   public:
     explicit SamplePlan(const std::string &database_path);
 
-    const std::string &path() const { return path_; }
-
     // The listed ids, sorted; nullopt if there is no plan file (a database
     // whose first sweep has not completed, or of an earlier version). An
     // InputError naming the file for a line that is not a sample id.
     std::optional<std::vector<std::string>> read() const;
     // Replaces the plan by `ids` (any order, duplicates allowed), unless the
-    // file already lists exactly these; only the database's writer may call
-    // this.
-    void write(std::vector<std::string> ids) const;
+    // file already lists exactly these, and returns the plan (as read()
+    // would); only the database's writer may call this.
+    std::vector<std::string> write(std::vector<std::string> ids) const;
     // Removes temporaries of interrupted writes (the writer only).
     void remove_leftovers() const;
     // Renames the plan to the plan of `database_path`, if there is one.

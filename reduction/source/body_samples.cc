@@ -69,6 +69,13 @@ namespace softchain::reduction
     build_lattice();
   }
 
+  // (n - 1/2) h <= size, at least one; in double, as a spacing mistyped by
+  // orders of magnitude would overflow an integer.
+  double BodySamples::lattice_points_along(const int d) const
+  {
+    return std::max(1.0, std::floor(box_.sizes()(d) / spacing_ + 0.5));
+  }
+
   // The lattice's grid over the bounding box, before any point is made: a
   // joint spacing mistyped by orders of magnitude (1e-7 for 1e-2) would
   // otherwise fill the memory for minutes.
@@ -76,7 +83,7 @@ namespace softchain::reduction
   {
     double points = 1;
     for (int d = 0; d < 3; ++d)
-      points *= std::max(1.0, std::floor(box_.sizes()(d) / spacing_ + 0.5));
+      points *= lattice_points_along(d);
     if (points <= max_lattice_points)
       return;
     const double smallest = std::cbrt(box_.volume() / max_lattice_points) * lattice_points_per_spacing;
@@ -132,7 +139,7 @@ namespace softchain::reduction
   {
     std::array<long, 3> n;
     for (int d = 0; d < 3; ++d)
-      n[d] = std::max(1L, long(std::floor(box_.sizes()(d) / spacing_ + 0.5))); // (n - 1/2) h <= size
+      n[d] = long(lattice_points_along(d));
     const auto point = [&](long i, long j, long k) {
       return Eigen::Vector3d(box_.min()(0) + (i + 0.5) * spacing_,
                              box_.min()(1) + (j + 0.5) * spacing_,

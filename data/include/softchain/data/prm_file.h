@@ -68,6 +68,10 @@ namespace softchain::data
       bool        part_of_design = true;
     };
     std::map<std::string, Entry> entries;
+
+  private:
+    // The entry as an integer, checked to be one (not yet its range).
+    long long parse_integer(const std::string &name) const;
   };
 
   class PrmFile

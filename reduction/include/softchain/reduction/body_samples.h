@@ -63,7 +63,8 @@ namespace softchain::reduction
     Eigen::Vector3d          deformed(const CellPoint &point, const std::vector<data::Point3> &x) const;
 
   private:
-    void check_lattice_size(const std::string &source) const;
+    double lattice_points_along(int d) const; // the lattice's grid size along axis d
+    void   check_lattice_size(const std::string &source) const;
     std::optional<CellPoint> locate_in(std::size_t cell, const Eigen::Vector3d &X) const;
     std::optional<CellPoint> locate_in_tetrahedron(std::size_t cell, const Eigen::Vector3d &X) const;
     std::optional<CellPoint> locate_in_hexahedron(std::size_t cell, const Eigen::Vector3d &X) const;
