@@ -246,7 +246,7 @@ namespace softchain::chain
           {
             const geometry::Obstacle &obstacle = obstacles_[touch.obstacle];
             const Eigen::Vector3d     x =
-              pose.joint_positions[touch.link] + pose.link_rotations[touch.link] * offsets_[touch.point];
+              pose.link_origins[touch.link] + pose.link_rotations[touch.link] * offsets_[touch.point];
             const double before = obstacle.body->gap(anchor, poses_[touch.obstacle]);
             const double now    = obstacle.body->gap(x, poses_[touch.obstacle]);
             if (before > 0.0 && now < 0.0)
@@ -262,7 +262,7 @@ namespace softchain::chain
     const std::vector<int> &links = surface_->links();
     positions.resize(links.size());
     for (std::size_t k = 0; k < links.size(); ++k)
-      positions[k] = pose.joint_positions[links[k]] + pose.link_rotations[links[k]] * offsets_[k];
+      positions[k] = pose.link_origins[links[k]] + pose.link_rotations[links[k]] * offsets_[k];
   }
 
   // The normal row (weight k_c) if `normal`, and each eigenvector e of H_g
@@ -356,7 +356,7 @@ namespace softchain::chain
                                     const bool with_curvature, std::vector<Touch> &near) const
   {
     const Eigen::Matrix3d &R      = pose.link_rotations[cluster.link];
-    const Eigen::Vector3d &c      = pose.joint_positions[cluster.link];
+    const Eigen::Vector3d &c      = pose.link_origins[cluster.link];
     const double           s      = has_skin() ? skin_shift_[cluster.link] : 0.0;
     const Eigen::Vector3d  skin(0.0, s, 0.0);
     for (std::size_t o = 0; o < obstacles_.size(); ++o)
@@ -397,7 +397,7 @@ namespace softchain::chain
     for (std::size_t b = 0; b < n_links; ++b)
       for (std::size_t o = 0; o < obstacles_.size(); ++o)
         framed_[b * obstacles_.size() + o] =
-          obstacles_[o].body->seen_from(pose.link_rotations[b], pose.joint_positions[b], poses_[o]);
+          obstacles_[o].body->seen_from(pose.link_rotations[b], pose.link_origins[b], poses_[o]);
   }
 
   double ChainContact::clearance_at_rest(const int node) const

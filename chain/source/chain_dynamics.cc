@@ -48,8 +48,7 @@ namespace softchain::chain
         g.setZero();
         for (int j = 0; j <= b; ++j)
           for (int alpha = 0; alpha < 3; ++alpha)
-            g.col(3 * j + alpha) = pose.joint_axes[j].col(alpha).cross(
-              x - (alpha == 0 ? pose.twist_pivots[j] : pose.joint_positions[j]));
+            g.col(3 * j + alpha) = pose.joint_axes[j].col(alpha).cross(x - pose.pivot(j, alpha));
         m += masses_[b] * g.transpose() * g;
       }
     return m;

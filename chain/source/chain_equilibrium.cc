@@ -52,10 +52,10 @@ namespace softchain::chain
   {
     if (!std::isfinite(load.pressure))
       throw std::invalid_argument("ChainEquilibrium: pressure is not finite");
-    model_.chain_at(load.pressure, chain_);
     model_.stiffness().diagonal(load.pressure, stiffness_);
     model_.actuation().torque(load.pressure, pressure_torque_);
     pressure_angles_ = pressure_torque_.cwiseQuotient(stiffness_);
+    model_.chain_at(load.pressure, pressure_angles_, chain_);
     force_law_.clear();
     if (const JointForceLaw *law = model_.force_law())
       for (int j = 0; j < law->n_joints(); ++j)
@@ -173,14 +173,16 @@ namespace softchain::chain
         distal_force_[m]         = force;
         generalised_force_.segment<3>(3 * m) = pose_.joint_axes[m].transpose() * moment_[m];
         if (chain_.has_twist_offsets()) // psi: the moment about the twist pivot s_m
-          generalised_force_[3 * m] = pose_.joint_axes[m].col(0).dot(twist_moment(m));
+          generalised_force_[3 * m] = pose_.joint_axes[m].col(0).dot(moment_about(m, 0));
+        if (chain_.has_link_shift()) // phi: the moment about the rolling pivot p_{m,phi}
+          generalised_force_[3 * m + 2] = pose_.joint_axes[m].col(2).dot(moment_about(m, 2));
       }
   }
 
-  // M about s_m = M_m + (c_m - s_m) x F_m.
-  Eigen::Vector3d ChainEquilibrium::twist_moment(const int m) const
+  // M about angle alpha's pivot p = M_m + (c_m - p) x F_m.
+  Eigen::Vector3d ChainEquilibrium::moment_about(const int m, const int alpha) const
   {
-    return moment_[m] + (pose_.joint_positions[m] - pose_.twist_pivots[m]).cross(distal_force_[m]);
+    return moment_[m] + (pose_.joint_positions[m] - pose_.pivot(m, alpha)).cross(distal_force_[m]);
   }
 
   // H = K - dQ/dq in ChainTangent's form (header): U_j = -A_j^T (B_j + [M_j]x)
@@ -196,20 +198,24 @@ namespace softchain::chain
         const Eigen::Matrix3d &axes = pose_.joint_axes[j];
         tangent_.axes(j)            = axes;
         tangent_.coupling(j) = -axes.transpose() * (moment_gradient_[j] + cross_matrix(moment_[j]));
-        if (chain_.has_twist_offsets())
-          {
-            // About s_j: B^s = B_j + d F^T - (d . F) I, M^s = M_j + d x F with
-            // d = c_j - s_j, so the psi row -(B^s^T a + a x M^s)^T differs
-            // from the one about c_j by -(d (a . F) - a (d . F))^T.
-            const Eigen::Vector3d  d = pose_.joint_positions[j] - pose_.twist_pivots[j];
-            const Eigen::Vector3d &F = distal_force_[j];
-            const Eigen::Vector3d  a = axes.col(0);
-            tangent_.coupling(j).row(0) -= (d * a.dot(F) - a * d.dot(F)).transpose();
-          }
+        const Eigen::Vector3d &F = distal_force_[j];
+        // About another pivot p: B^p = B_j + d F^T - (d . F) I, M^p = M_j + d x F
+        // with d = c_j - p, so the row -(B^p^T a + a x M^p)^T differs from the
+        // one about c_j by -(d (a . F) - a (d . F))^T.
+        for (const int alpha : {0, 2})
+          if (pose_.pivot(j, alpha) != pose_.joint_positions[j])
+            {
+              const Eigen::Vector3d d = pose_.joint_positions[j] - pose_.pivot(j, alpha);
+              const Eigen::Vector3d a = axes.col(alpha);
+              tangent_.coupling(j).row(alpha) -= (d * a.dot(F) - a * d.dot(F)).transpose();
+            }
         const Eigen::Matrix3d lower = tangent_.coupling(j) * axes;
         Eigen::Matrix3d      &d     = tangent_.diagonal(j);
         d                           = lower.selfadjointView<Eigen::Lower>();
         d += spring_tangent_[j];
+        // A rolling pivot turns with phi itself: d p_{j,phi} / d phi_j = -R_j g_j,
+        // which adds a_phi . (R_j g_j x F) to dQ_phi / dphi_j (header).
+        d(2, 2) -= axes.col(2).dot(pose_.shift_rates[j].cross(F));
       }
   }
 
@@ -464,7 +470,7 @@ namespace softchain::chain
         for (int alpha = 0; alpha < 3; ++alpha)
           {
             const Eigen::Vector3d  turn  = pose_.joint_axes[i].col(alpha) * d[3 * i + alpha];
-            const Eigen::Vector3d &pivot = alpha == 0 ? pose_.twist_pivots[i] : pose_.joint_positions[i];
+            const Eigen::Vector3d &pivot = pose_.pivot(i, alpha);
             t.head<3>() += turn;
             t.tail<3>() += pivot.cross(turn);
           }
@@ -520,7 +526,7 @@ namespace softchain::chain
     const CollisionSurface::Sphere &sphere = contact_.spheres()[i];
     const Eigen::Vector3d           w      = twists_[link].head<3>();
     const Eigen::Vector3d           v      = twists_[link].tail<3>();
-    const Eigen::Vector3d centre = pose_.joint_positions[link] + pose_.link_rotations[link] * sphere.centre;
+    const Eigen::Vector3d centre = pose_.link_origins[link] + pose_.link_rotations[link] * sphere.centre;
     return (v + w.cross(centre)).norm() + w.norm() * sphere.radius;
   }
 

@@ -27,6 +27,7 @@ namespace softchain::chain
   {
     ChainModel rigid = *this;
     rigid.link_geometry_.reset();
+    rigid.link_shift_.reset();
     rigid.link_compliance_.reset();
     rigid.skin_compliance_.reset();
     rigid.collision_surface_.reset(); // shaped for the links it leaves
@@ -104,6 +105,8 @@ namespace softchain::chain
     merge_abscissae(actuation_.table_pressures(), pressures);
     if (link_geometry_)
       merge_abscissae(link_geometry_->table_pressures(), pressures);
+    if (link_shift_)
+      merge_abscissae(link_shift_->table_pressures(), pressures);
     if (skin_compliance_)
       merge_abscissae(skin_compliance_->abscissae(), pressures);
     return pressures;
@@ -111,13 +114,33 @@ namespace softchain::chain
 
   KinematicChain ChainModel::chain_at(const double pressure) const
   {
-    return link_geometry_ ? link_geometry_->at(pressure, chain_) : chain_;
+    KinematicChain chain = chain_;
+    chain_at(pressure, actuation_.torque(pressure).cwiseQuotient(stiffness_.diagonal(pressure)), chain);
+    return chain;
   }
 
-  void ChainModel::chain_at(const double pressure, KinematicChain &chain) const
+  void ChainModel::chain_at(const double pressure, const Eigen::VectorXd &pressure_angles,
+                            KinematicChain &chain) const
   {
     if (link_geometry_)
       link_geometry_->apply(pressure, chain);
+    if (link_shift_)
+      chain.assign_link_shift([&](const int i) { return link_shift_->at(pressure, i); },
+                              [&](const int i) { return pressure_angles[3 * i + 2]; });
+  }
+
+  void ChainModel::set_link_shift(LinkShiftPerTurn shift)
+  {
+    if (shift.n_links() != chain_.n_joints())
+      throw std::invalid_argument("ChainModel: the link shift has another number of links");
+    link_shift_ = std::move(shift);
+  }
+
+  ChainModel ChainModel::without_link_shift() const
+  {
+    ChainModel rigid = *this;
+    rigid.link_shift_.reset();
+    return rigid;
   }
 
   void ChainModel::set_link_geometry(LinkGeometry geometry)

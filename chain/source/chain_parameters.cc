@@ -18,6 +18,14 @@ namespace softchain::chain
                       "reduction measured them (<label>_link_geometry.csv), so that the chain "
                       "lands on the FEM finger's joints; rigid: rigid links between the "
                       "reference joint centres (the paper's chain)");
+      section.declare("Link shift", "none",
+                      "measured: each link shifts along its own frame as its joint turns in "
+                      "the finger's plane away from the pressure-only state, by the shift per "
+                      "radian the reduction fitted to the in-plane force samples "
+                      "(<label>_link_shift.csv; no shift without it), so that a finger "
+                      "straightened by an obstacle lengthens as the FEM's does (contact tips "
+                      "closer, contact forces farther: docs/chain_fidelity.md); none: links "
+                      "that do not shift. Ignored with Link geometry = rigid");
       section.declare("Link compliance", "measured",
                       "measured: the links give under forces, in series with the joints, with "
                       "the compliance c(p) the reduction fitted to the chord samples "
@@ -57,6 +65,15 @@ namespace softchain::chain
       section.declare("Newton tolerance", "1e-10", "relative residual of the equilibrium");
       section.declare("Maximum Newton iterations", "50", "per equilibrium");
     }
+
+    // Whether `name` is `yes` (else `no`, or an error naming both).
+    bool either(const data::PrmSection &section, const std::string &name, const std::string &yes,
+                const std::string &no)
+    {
+      const std::string value = section.get(name);
+      section.require(value == yes || value == no, name, "'" + value + "' is neither " + yes + " nor " + no);
+      return value == yes;
+    }
   } // namespace
 
   ChainParameters ChainParameters::read(const data::PrmFile &file)
@@ -72,22 +89,11 @@ namespace softchain::chain
     p.stiffness_column = section.get_enum<StiffnessColumn>(
       "Stiffness column", {{"value", StiffnessColumn::value}, {"fit", StiffnessColumn::fit}});
     p.in_pressure      = section.get_bool("Interpolate k_phi in pressure");
-    const std::string links = section.get("Link geometry");
-    section.require(links == "pressure" || links == "rigid", "Link geometry",
-                    "'" + links + "' is neither pressure nor rigid");
-    p.pressure_link_geometry = links == "pressure";
-    const std::string compliance = section.get("Link compliance");
-    section.require(compliance == "measured" || compliance == "none", "Link compliance",
-                    "'" + compliance + "' is neither measured nor none");
-    p.link_compliance = compliance == "measured";
-    const std::string law = section.get("Joint law");
-    section.require(law == "measured" || law == "linear", "Joint law",
-                    "'" + law + "' is neither measured nor linear");
-    p.measured_joint_law = law == "measured";
-    const std::string missing = section.get("Missing stiffness");
-    section.require(missing == "rigid" || missing == "error", "Missing stiffness",
-                    "'" + missing + "' is neither rigid nor error");
-    p.rigid_where_missing = missing == "rigid";
+    p.pressure_link_geometry = either(section, "Link geometry", "pressure", "rigid");
+    p.link_shift             = either(section, "Link shift", "measured", "none");
+    p.link_compliance        = either(section, "Link compliance", "measured", "none");
+    p.measured_joint_law     = either(section, "Joint law", "measured", "linear");
+    p.rigid_where_missing    = either(section, "Missing stiffness", "rigid", "error");
     p.validation_roles = section.get_list("Validation roles");
     p.baseline_youngs_modulus = section.get_double("Baseline Young's modulus");
     section.require(p.baseline_youngs_modulus > 0, "Baseline Young's modulus", "must be positive");

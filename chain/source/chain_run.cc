@@ -53,6 +53,8 @@ namespace softchain::chain
           }
         if (!p.pressure_link_geometry)
           return model.with_rigid_links();
+        if (!p.link_shift)
+          model = model.without_link_shift();
         return p.link_compliance ? model : model.without_link_compliance();
       };
       for (const auto &[name, method] : data::rotation_methods())

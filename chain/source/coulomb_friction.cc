@@ -51,7 +51,7 @@ namespace softchain::chain
         g.link     = a.link;
         g.point    = a.point;
         g.obstacle = a.obstacle;
-        g.position = pose.joint_positions[a.link] + pose.link_rotations[a.link] * offsets[a.point];
+        g.position = pose.link_origins[a.link] + pose.link_rotations[a.link] * offsets[a.point];
         Eigen::Vector3d delta = g.position - a.position;
         delta -= a.normal.dot(delta) * a.normal;
         g.slip = delta.norm();

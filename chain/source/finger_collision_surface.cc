@@ -168,7 +168,7 @@ namespace softchain::chain
         {
           const int b = points.links[k];
           offsets.push_back(pose.link_rotations[b].transpose() *
-                            (data::vector_of(combination(points.points[k], y)) - pose.joint_positions[b]));
+                            (data::vector_of(combination(points.points[k], y)) - pose.link_origins[b]));
         }
       return offsets;
     }

@@ -31,6 +31,8 @@ namespace softchain::chain
     ChainModel chain_model(name, chain, std::move(stiffness_model), std::move(actuation));
     if (pressure_tables && link_geometry)
       chain_model.set_link_geometry(*link_geometry);
+    if (pressure_tables && link_geometry && link_shift)
+      chain_model.set_link_shift(*link_shift);
     if (pressure_tables && link_compliance)
       chain_model.set_link_compliance(LinkCompliance(*link_compliance));
     if (pressure_tables && skin_compliance)

@@ -59,6 +59,8 @@ namespace softchain::chain
     , link_joints_(joint_centres_)
     , link_tip_(tip)
     , twist_offsets_(joint_centres_.size(), Eigen::Vector3d::Zero())
+    , link_shifts_(joint_centres_.size(), Eigen::Vector3d::Zero())
+    , shift_origins_(joint_centres_.size(), 0.0)
   {
     check_order(joint_centres_, tip_, "joint centres");
   }
@@ -94,6 +96,14 @@ namespace softchain::chain
     check_order(link_joints_, link_tip_, "the link geometry's joints");
   }
 
+  void KinematicChain::check_link_shift() const
+  {
+    for (int i = 0; i < n_joints(); ++i)
+      if (!link_shifts_[i].allFinite() || link_shifts_[i].z() != 0.0 || !std::isfinite(shift_origins_[i]))
+        throw std::invalid_argument("KinematicChain: joint " + std::to_string(i + 1) +
+                                    "'s link shift must be finite and in the link's x-y plane");
+  }
+
   int KinematicChain::link_of(const Eigen::Vector3d &X) const
   {
     int link = -1;
@@ -109,6 +119,9 @@ namespace softchain::chain
     pose.twist_pivots    = link_joints_;
     for (int i = 0; i < n_joints(); ++i)
       pose.twist_pivots[i] += twist_offsets_[i];
+    pose.bend_pivots  = link_joints_;
+    pose.link_origins = link_joints_;
+    pose.shift_rates.assign(n_joints(), Eigen::Vector3d::Zero());
     pose.link_rotations.assign(n_joints(), Eigen::Matrix3d::Identity());
     pose.joint_axes.assign(n_joints(), Eigen::Matrix3d::Identity());
     pose.tip_position = link_tip_;
@@ -138,6 +151,15 @@ namespace softchain::chain
         parent                    = parent * frame.rotation;
         pose.joint_axes[i].col(2) = parent.col(2);
         pose.link_rotations[i]  = parent;
+        pose.bend_pivots[i]     = position;
+        pose.shift_rates[i].setZero();
+        if (has_link_shift_) // o_i = c_i + R_i g_i (phi_i - phi_i^p), pivot c_i + a_phi x R_i g_i
+          {
+            pose.shift_rates[i] = parent * link_shifts_[i];
+            pose.bend_pivots[i] += parent.col(2).cross(pose.shift_rates[i]);
+            position += pose.shift_rates[i] * (q[3 * i + 2] - shift_origins_[i]);
+          }
+        pose.link_origins[i] = position;
         const Eigen::Vector3d &next = i + 1 < n_joints() ? link_joints_[i + 1] : link_tip_;
         position += parent * (next - link_joints_[i]);
       }
@@ -155,7 +177,7 @@ namespace softchain::chain
     const Eigen::Vector3d  end_shift = (last ? link_tip_ : link_joints_[link + 1]) - end;
     const Eigen::Vector3d  start_shift = link_joints_[link] - joint_centres_[link];
     const double s = std::clamp((X - joint_centres_[link]).x() / (end - joint_centres_[link]).x(), 0.0, 1.0);
-    return pose.joint_positions[link] +
+    return pose.link_origins[link] +
            pose.link_rotations[link] *
              (X + (1.0 - s) * start_shift + s * end_shift - link_joints_[link]);
   }

@@ -32,7 +32,7 @@ namespace softchain::chain
       for (int alpha = 0; alpha < 3; ++alpha)
         {
           const Eigen::Vector3d  a     = pose.joint_axes[i].col(alpha);
-          const Eigen::Vector3d &pivot = alpha == 0 ? pose.twist_pivots[i] : pose.joint_positions[i];
+          const Eigen::Vector3d &pivot = pose.pivot(i, alpha);
           twists_.col(3 * i + alpha) << a, pivot.cross(a);
         }
   }

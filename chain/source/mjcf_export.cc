@@ -44,7 +44,7 @@ namespace softchain::chain
         k.push_back(pressure > 0 ? Eigen::Vector3d(diagonal.segment<3>(3 * i)) : model.stiffness().joint(i));
       const Eigen::VectorXd jp = pressure > 0 ? model.actuation().torque_per_pascal(pressure)
                                               : model.actuation().rest_torque_per_pascal();
-      return ChainModel(model.name(), model.chain_at(pressure), JointStiffness(k), PressureActuation(jp));
+      return ChainModel(model.name(), model.without_link_shift().chain_at(pressure), JointStiffness(k), PressureActuation(jp));
     }
   } // namespace
 

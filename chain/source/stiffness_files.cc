@@ -475,6 +475,43 @@ namespace softchain::chain
         }
       return in_pressure(compliance, path, "compliance");
     }
+
+    // The links' shift per in-plane turn g_i(p) (LinkShiftPerTurn): per
+    // pressure a row for each link 1..n, finite; none if the file is missing
+    // or has no rows.
+    std::optional<LinkShiftPerTurn> read_link_shift(const std::string &path, const int n)
+    {
+      if (!std::filesystem::exists(path))
+        return std::nullopt;
+      const CsvTable table = read_table(path, {"pressure", "link", "shift_x", "shift_y"});
+      if (table.n_rows() == 0)
+        return std::nullopt;
+      std::vector<std::array<std::map<double, double>, 2>> per_link(n);
+      for (std::size_t row = 0; row < table.n_rows(); ++row)
+        {
+          const double link = table.number(row, "link");
+          if (!(link >= 1 && link <= n && link == std::round(link)))
+            throw InputError(where(path, row) + "link " + table.text(row, "link") + " is not one of 1.." +
+                             std::to_string(n));
+          const double pressure = finite_number(table, path, row, "pressure");
+          for (int c = 0; c < 2; ++c)
+            if (!per_link[int(link) - 1][c]
+                   .emplace(pressure, finite_number(table, path, row, c == 0 ? "shift_x" : "shift_y"))
+                   .second)
+              throw InputError(where(path, row) + "link " + table.text(row, "link") + " listed twice at pressure " +
+                               table.text(row, "pressure"));
+        }
+      std::vector<LinkShiftPerTurn::ShiftInPressure> links;
+      for (int i = 0; i < n; ++i)
+        {
+          const std::string name = "link " + std::to_string(i + 1);
+          if (per_link[i][0].empty())
+            throw InputError(path + ": no row for " + name);
+          links.push_back({in_pressure(per_link[i][0], path, "shift_x of " + name),
+                           in_pressure(per_link[i][1], path, "shift_y of " + name)});
+        }
+      return LinkShiftPerTurn(std::move(links));
+    }
   } // namespace
 
   StiffnessFiles::StiffnessFiles(const std::string &stiffness_directory,
@@ -486,6 +523,7 @@ namespace softchain::chain
     force_in_pressure_paths_  = {files.kpsi_vs_pressure, files.ktheta_vs_pressure};
     pressure_torque_path_     = files.pressure_torque;
     link_geometry_path_       = files.link_geometry;
+    link_shift_path_          = files.link_shift;
     link_compliance_path_     = files.link_compliance;
     skin_compliance_path_     = files.skin_compliance;
     joint_law_path_           = files.joint_law;
@@ -546,6 +584,7 @@ namespace softchain::chain
       joints.link_geometry = read_link_geometry(link_geometry_path_, table.joint_centres, tip);
     if (in_pressure)
       {
+        joints.link_shift      = read_link_shift(link_shift_path_, n);
         joints.link_compliance = read_compliance(link_compliance_path_);
         joints.skin_compliance = read_compliance(skin_compliance_path_);
       }

@@ -47,9 +47,8 @@ namespace softchain::chain
     const ChainPose &p = pose();
     Eigen::MatrixXd  J(3, model_.chain().n_angles());
     for (int i = 0; i < model_.chain().n_joints(); ++i)
-      for (int alpha = 0; alpha < 3; ++alpha) // psi turns about the twist pivot
-        J.col(3 * i + alpha) = p.joint_axes[i].col(alpha).cross(
-          p.tip_position - (alpha == 0 ? p.twist_pivots[i] : p.joint_positions[i]));
+      for (int alpha = 0; alpha < 3; ++alpha) // each angle about its pivot
+        J.col(3 * i + alpha) = p.joint_axes[i].col(alpha).cross(p.tip_position - p.pivot(i, alpha));
     return J;
   }
 

@@ -22,6 +22,7 @@ namespace softchain::data
     joint_law          = stem + "_joint_law.csv";
     pressure_torque    = stem + "_pressure_torque.csv";
     link_geometry      = stem + "_link_geometry.csv";
+    link_shift         = stem + "_link_shift.csv";
     link_compliance    = stem + "_link_compliance.csv";
     skin_compliance    = stem + "_skin_compliance.csv";
   }

@@ -13,11 +13,6 @@ namespace softchain::reduction
   {
     constexpr double no_value = std::numeric_limits<double>::quiet_NaN();
 
-    bool has_role(const SampleReduction &sample, const std::vector<std::string> &roles)
-    {
-      return std::find(roles.begin(), roles.end(), sample.role()) != roles.end();
-    }
-
   } // namespace
 
   const SampleReduction *pressure_state(const std::vector<SampleReduction> &samples,
@@ -28,7 +23,7 @@ namespace softchain::reduction
     if (found)
       return nullptr;
     for (const auto &sample : samples)
-      if (has_role(sample, pressure_roles) && sample.pressure() == pressure)
+      if (sample.has_role(pressure_roles) && sample.pressure() == pressure)
         {
           found = true;
           return &sample;
@@ -46,7 +41,7 @@ namespace softchain::reduction
   {
     for (const auto &sample : samples)
       {
-        if (!has_role(sample, force_roles))
+        if (!sample.has_role(force_roles))
           continue;
         bool                   found = false;
         const SampleReduction *base  = pressure_state(samples, pressure_roles, sample.pressure(), found);

@@ -10,23 +10,6 @@ namespace softchain::reduction
 {
   namespace
   {
-    // The pressure state of each pressure: the first pressure sample at it,
-    // the rest configuration at 0.
-    bool has_role(const SampleReduction &s, const std::vector<std::string> &roles)
-    {
-      return std::find(roles.begin(), roles.end(), s.role()) != roles.end();
-    }
-
-    std::map<double, const SampleReduction *> pressure_states(const MethodReduction &reduction,
-                                                              const std::vector<std::string> &roles)
-    {
-      std::map<double, const SampleReduction *> states{{0.0, &reduction.rest()}};
-      for (const SampleReduction &s : reduction.samples())
-        if (has_role(s, roles) && s.point_forces().empty())
-          states.emplace(s.pressure(), &s);
-      return states;
-    }
-
     // F_s = sum_k s_k f_k, s_k the fraction of [x_1, x_T] proximal to force k.
     Eigen::Vector3d effective_force(const SampleReduction &sample, const SampleReduction &rest)
     {
@@ -44,17 +27,16 @@ namespace softchain::reduction
     }
   } // namespace
 
-  LinkComplianceFit::LinkComplianceFit(const MethodReduction     &reduction,
-                                       const ReductionParameters &parameters)
+  LinkComplianceFit::LinkComplianceFit(const MethodReduction &reduction, const ReductionParameters &parameters)
   {
     if (reduction.rest().link_geometry().empty())
       return; // no tip face, no links to measure
-    const auto states = pressure_states(reduction, parameters.pressure_roles);
+    const auto states = reduction.pressure_states(parameters.pressure_roles);
     std::map<double, ComplianceSums> sums;
     std::map<double, double>         angles; // the largest angle to the chord per pressure
     for (const SampleReduction &s : reduction.samples())
       {
-        if (!has_role(s, parameters.chord_roles))
+        if (!s.has_role(parameters.chord_roles))
           continue;
         const auto state = states.find(s.pressure());
         if (state == states.end())

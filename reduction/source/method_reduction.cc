@@ -48,4 +48,14 @@ namespace softchain::reduction
   {
     return data::stiffness_label(method_, fraction_);
   }
+
+  std::map<double, const SampleReduction *>
+  MethodReduction::pressure_states(const std::vector<std::string> &pressure_roles) const
+  {
+    std::map<double, const SampleReduction *> states{{0.0, &rest_}};
+    for (const SampleReduction &s : samples_)
+      if (s.point_forces().empty() && s.has_role(pressure_roles))
+        states.emplace(s.pressure(), &s);
+    return states;
+  }
 } // namespace softchain::reduction

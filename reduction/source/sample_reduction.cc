@@ -163,6 +163,11 @@ namespace softchain::reduction
     return r;
   }
 
+  bool SampleReduction::has_role(const std::vector<std::string> &roles) const
+  {
+    return std::find(roles.begin(), roles.end(), role_) != roles.end();
+  }
+
   Eigen::Vector3d SampleReduction::chord() const
   {
     Eigen::Vector3d chord = Eigen::Vector3d::Zero();

@@ -168,10 +168,14 @@ namespace softchain::reduction
     if (!reduction_.rest().link_geometry().empty())
       link_geometry().write(files.link_geometry);
     joint_law_.table().write(files.joint_law);
+    const LinkShiftFit shifts(reduction_, parameters_);
+    shifts.table().write(files.link_shift);
     const LinkComplianceFit compliance(reduction_, parameters_);
     compliance.table().write(files.link_compliance);
     reduction_.skin_compliance().table().write(files.skin_compliance);
-    std::vector<std::string> warnings = compliance.warnings();
+    std::vector<std::string> warnings = shifts.warnings();
+    for (const std::string &w : compliance.warnings())
+      warnings.push_back(w);
     for (const std::string &w : reduction_.skin_compliance().warnings())
       warnings.push_back(w);
     return warnings;

@@ -30,6 +30,14 @@
 // M_j and B_j: the derivation holds for any pivot of each angle, since the
 // difference of two points distal to a rotation does not depend on its pivot.
 //
+// Links that shift as their joint turns (KinematicChain::assign_link_shift):
+// phi of joint j turns about the rolling pivot p_j = c_j + a_phi x R_j g_j,
+// and its row takes M and B about p_j as psi's takes them about s_j. That
+// pivot moves rigidly with every angle before phi_j, so the formulas hold,
+// but with phi_j itself it turns, d p_j / d phi_j = -R_j g_j, which adds
+// a_phi . (R_j g_j x F_j) to dQ_{j,phi}/dphi_j (the potential is still
+// -sum f . x(q), and H symmetric).
+//
 // Globalisation, so that bending through 180 deg and beyond converges from
 // rest: the Newton step is capped at max_step_angle per angle; where H is not
 // positive definite (post-buckling) it is shifted, H + mu I, which keeps the
@@ -131,7 +139,7 @@ namespace softchain::chain
     void   accumulate_distal_loads();
     void   add_contact_tangent(Eigen::MatrixXd &dense) const;
     bool   touching() const; // a touching point or a friction anchor at the last evaluation
-    Eigen::Vector3d twist_moment(int m) const;
+    Eigen::Vector3d moment_about(int m, int alpha) const; // M_m about the pivot of angle alpha
     void   prepare_tangent();
     bool   converged() const;
     double relative_residual() const;

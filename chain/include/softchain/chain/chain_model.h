@@ -13,6 +13,7 @@
 #include <softchain/chain/link_compliance.h>
 #include <softchain/chain/piecewise_linear.h>
 #include <softchain/chain/link_geometry.h>
+#include <softchain/chain/link_shift_per_turn.h>
 #include <softchain/chain/pressure_actuation.h>
 
 #include <optional>
@@ -33,13 +34,20 @@ namespace softchain::chain
     // The reference geometry (rigid links between the reference joint centres).
     const KinematicChain    &chain() const { return chain_; }
     // The geometry under `pressure`: the links of the LinkGeometry if set,
-    // else the reference one.
+    // else the reference one, shifting per in-plane turn (LinkShiftPerTurn)
+    // about the pressure-only angles K(p)^-1 J_p(p) p if set.
     KinematicChain           chain_at(double pressure) const;
-    // The same into `chain`, which must be a copy of chain() (no allocation).
-    void                     chain_at(double pressure, KinematicChain &chain) const;
+    // The same into `chain`, which must be a copy of chain(), about the
+    // pressure-only angles `pressure_angles` (3 per joint; no allocation).
+    void                     chain_at(double pressure, const Eigen::VectorXd &pressure_angles,
+                                      KinematicChain &chain) const;
     void                     set_link_geometry(LinkGeometry geometry);
+    void                     set_link_shift(LinkShiftPerTurn shift);
+    bool                     has_link_shift() const { return link_shift_.has_value(); }
+    // The same model with links that do not shift as their joints turn.
+    ChainModel               without_link_shift() const;
     // The same model with rigid links between the reference centres (no
-    // link geometry, no link compliance).
+    // link geometry, shift or compliance).
     ChainModel               with_rigid_links() const;
     void                     set_link_compliance(LinkCompliance compliance);
     // The same model with links rigid under forces (no link compliance).
@@ -80,6 +88,7 @@ namespace softchain::chain
     JointStiffness    stiffness_;
     PressureActuation actuation_;
     std::optional<LinkGeometry> link_geometry_;
+    std::optional<LinkShiftPerTurn> link_shift_;
     std::optional<LinkCompliance> link_compliance_;
     std::optional<PiecewiseLinear> skin_compliance_;
     std::optional<JointForceLaw>  force_law_;

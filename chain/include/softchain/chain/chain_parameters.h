@@ -32,6 +32,7 @@ namespace softchain::chain
     StiffnessColumn          stiffness_column    = StiffnessColumn::value;
     bool                     in_pressure         = true;
     bool                     pressure_link_geometry = true; // links as the pressure shapes them (LinkGeometry)
+    bool                     link_shift          = false; // links shift as their joints turn (LinkShiftPerTurn)
     bool                     link_compliance     = true; // links in series with the joints (LinkCompliance)
     // The sections' give under contact (ChainModel::skin_compliance): none:
     // the reduction's table; a value: that compliance at every pressure, m/N

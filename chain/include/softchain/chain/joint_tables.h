@@ -11,6 +11,7 @@
 // S_i. Without twist points every joint is spherical about J_i.
 #include <softchain/chain/chain_model.h>
 #include <softchain/chain/link_geometry.h>
+#include <softchain/chain/link_shift_per_turn.h>
 #include <softchain/chain/piecewise_linear.h>
 
 #include <Eigen/Core>
@@ -30,6 +31,7 @@ namespace softchain::chain
     std::array<std::vector<PiecewiseLinear>, 3> k_in_pressure; // per axis, one per joint; empty: constant
     std::vector<PiecewiseLinear>                pressure_torque; // J_p(p), 3 per joint
     std::optional<LinkGeometry>                 link_geometry;   // none: rigid reference links
+    std::optional<LinkShiftPerTurn>             link_shift;      // g_i(p), m/rad; none: links do not shift as joints turn
     std::optional<PiecewiseLinear>              link_compliance; // c(p), m/N; none: links rigid under forces
     std::optional<PiecewiseLinear>              skin_compliance; // c_s(p), m/N; none: rigid sections
     std::optional<JointForceLaw>                force_law;       // none: linear springs about the pressure state

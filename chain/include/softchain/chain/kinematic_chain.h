@@ -34,6 +34,16 @@
 //   s_i = c_i^0 + R_{i-1} o_i,   c_i = s_i - R_{i-1} Rx(psi_i) o_i,
 // c_i^0 the centre c_i would have at psi_i = 0 (the recursion above). The
 // pivot of psi is p_{i,psi} = s_i; o_i = 0 is the spherical joint.
+//
+// Links that shift as their joint turns in the plane (assign_link_shift):
+// joint i's in-plane turn from its pressure-only state phi_i^p moves link i,
+// and everything distal to it, along the link's own frame by
+//   o_i = c_i + R_i g_i (phi_i - phi_i^p),   c_{i+1} = o_i + R_i (U_{i+1} - U_i),
+// g_i (in the link's x-y plane, m/rad) the shift per radian
+// (LinkShiftPerTurn). Link i's material points move with o_i in place of c_i.
+// Then dx/dphi_i = a_phi x (x - c_i) + R_i g_i for x distal to i, the turn
+// about the pivot p_{i,phi} = c_i + a_phi x (R_i g_i) (R_i g_i is normal to
+// a_phi = R_i e_z): a joint whose pivot rolls. Without shifts o_i = c_i.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <vector>
@@ -45,10 +55,19 @@ namespace softchain::chain
   {
     std::vector<Eigen::Vector3d> joint_positions; // c_i, world
     std::vector<Eigen::Vector3d> twist_pivots;    // s_i, world (= c_i without twist offsets)
+    std::vector<Eigen::Vector3d> bend_pivots;     // p_{i,phi}, world (= c_i without link shifts)
+    std::vector<Eigen::Vector3d> link_origins;    // o_i: where link i's frame sits (= c_i without link shifts)
+    std::vector<Eigen::Vector3d> shift_rates;     // R_i g_i = d o_i / d phi_i at fixed R_i, world
     std::vector<Eigen::Matrix3d> link_rotations;  // R_i
     std::vector<Eigen::Matrix3d> joint_axes;      // A_i (world axes as columns)
     Eigen::Vector3d              tip_position = Eigen::Vector3d::Zero();
     Eigen::Matrix3d              tip_rotation = Eigen::Matrix3d::Identity(); // R_{n-1} Q_T
+
+    // The pivot of angle alpha (0 psi, 1 theta, 2 phi) of joint i.
+    const Eigen::Vector3d &pivot(int i, int alpha) const
+    {
+      return alpha == 0 ? twist_pivots[i] : alpha == 1 ? joint_positions[i] : bend_pivots[i];
+    }
   };
 
   class KinematicChain
@@ -93,6 +112,25 @@ namespace softchain::chain
     const Eigen::Vector3d &twist_offset(int i) const { return twist_offsets_[i]; }
     bool                   has_twist_offsets() const { return has_twist_offsets_; }
 
+    // Links that shift as their joints turn in the plane (header): g_i =
+    // shift_at(i) in link i's frame (its z part must be 0), about the
+    // pressure-only angles phi_i^p = reference_angle(i). No allocation.
+    template <class ShiftAt, class ReferenceAngle>
+    void assign_link_shift(const ShiftAt &shift_at, const ReferenceAngle &reference_angle)
+    {
+      has_link_shift_ = false;
+      for (int i = 0; i < n_joints(); ++i)
+        {
+          link_shifts_[i]   = shift_at(i);
+          shift_origins_[i] = reference_angle(i);
+          has_link_shift_   = has_link_shift_ || link_shifts_[i] != Eigen::Vector3d::Zero();
+        }
+      check_link_shift();
+    }
+    const Eigen::Vector3d &link_shift(int i) const { return link_shifts_[i]; }
+    double                 shift_origin(int i) const { return shift_origins_[i]; }
+    bool                   has_link_shift() const { return has_link_shift_; }
+
     // Link that carries the material point with reference position X: the
     // last joint i with J_i,x <= X_x, or -1 for the clamped base.
     int link_of(const Eigen::Vector3d &X) const;
@@ -106,6 +144,7 @@ namespace softchain::chain
 
   private:
     void check_link_order() const;
+    void check_link_shift() const;
 
     std::vector<Eigen::Vector3d> joint_centres_;
     Eigen::Vector3d              tip_;
@@ -114,5 +153,8 @@ namespace softchain::chain
     Eigen::Matrix3d              tip_frame_ = Eigen::Matrix3d::Identity(); // Q_T
     std::vector<Eigen::Vector3d> twist_offsets_; // o_i
     bool                         has_twist_offsets_ = false;
+    std::vector<Eigen::Vector3d> link_shifts_;   // g_i, link frame
+    std::vector<double>          shift_origins_; // phi_i^p
+    bool                         has_link_shift_ = false;
   };
 } // namespace softchain::chain

@@ -16,6 +16,9 @@
 //   <label>_link_geometry.csv     pressure,point,x,y,z,rx,ry,rz (LinkGeometry; optional,
 //                                 without it the links are rigid between the
 //                                 reference centres)
+//   <label>_link_shift.csv        pressure,link,shift_x,shift_y (LinkShiftPerTurn, m/rad;
+//                                 optional, without it or without rows the links
+//                                 do not shift as their joints turn)
 //   <label>_link_compliance.csv   pressure,compliance,samples (LinkCompliance, c in m/N;
 //                                 optional, without it or without rows the links
 //                                 are rigid under forces)
@@ -58,6 +61,7 @@ namespace softchain::chain
     const std::string &bending_in_pressure_path() const { return bending_in_pressure_path_; }
     const std::string &pressure_torque_path() const { return pressure_torque_path_; }
     const std::string &link_geometry_path() const { return link_geometry_path_; }
+    const std::string &link_shift_path() const { return link_shift_path_; }
     const std::string &link_compliance_path() const { return link_compliance_path_; }
     const std::string &joint_law_path() const { return joint_law_path_; }
     // k_psi(p) (axis 0) or k_theta(p) (axis 1).
@@ -83,6 +87,7 @@ namespace softchain::chain
     std::array<std::string, 2> force_in_pressure_paths_; // k_psi(p), k_theta(p)
     std::string pressure_torque_path_;
     std::string link_geometry_path_;
+    std::string link_shift_path_;
     std::string link_compliance_path_;
     std::string skin_compliance_path_;
     std::string joint_law_path_;

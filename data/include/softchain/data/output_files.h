@@ -43,6 +43,7 @@ namespace softchain::data
     std::string joint_law;          // <label>_joint_law.csv: the force laws' knots
     std::string pressure_torque;    // <label>_pressure_torque.csv: J_p per pressure
     std::string link_geometry;      // <label>_link_geometry.csv
+    std::string link_shift;         // <label>_link_shift.csv: the links' shift per in-plane turn
     std::string link_compliance;    // <label>_link_compliance.csv
     std::string skin_compliance;    // <label>_skin_compliance.csv
   };

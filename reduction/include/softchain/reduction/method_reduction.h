@@ -10,6 +10,7 @@
 #include <softchain/reduction/skin_compliance_fit.h>
 #include <softchain/reduction/stiffness_extraction.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ namespace softchain::reduction
     const std::vector<SampleReduction> &samples() const { return samples_; }
     const StiffnessExtraction          &stiffness() const { return stiffness_; }
     const SkinComplianceFit            &skin_compliance() const { return skin_compliance_; }
+    // The pressure state of each pressure: the first sample of `pressure_roles`
+    // without point forces at it, the rest configuration at 0.
+    std::map<double, const SampleReduction *> pressure_states(const std::vector<std::string> &pressure_roles) const;
 
   private:
     RotationMethod               method_;

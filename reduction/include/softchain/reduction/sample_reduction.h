@@ -35,6 +35,8 @@ namespace softchain::reduction
 
     const std::string              &id() const { return id_; }
     const std::string              &role() const { return role_; }
+    // Whether the sample's role is one of `roles`.
+    bool has_role(const std::vector<std::string> &roles) const;
     double                          pressure() const { return pressure_; }
     // Sum of the magnitudes |f_k| of the sample's point forces (N).
     double                          force_norm() const;

@@ -19,11 +19,16 @@
 //                                 the last link's) at rest and at each
 //                                 pressure sample; not written for a mesh
 //                                 without a tip face
+//   <label>_link_shift.csv        per pressure of the in-plane force samples
+//                                 and link: the link's shift per radian of
+//                                 its joint's in-plane turn (LinkShiftFit); no
+//                                 rows without such samples
 //   <label>_link_compliance.csv   the links' compliance c per pressure of the
 //                                 chord samples (LinkComplianceFit); no rows
 //                                 without chord samples
 #include <softchain/data/csv_table.h>
 #include <softchain/reduction/fabric_hinge_fit.h>
+#include <softchain/reduction/link_shift_fit.h>
 #include <softchain/reduction/method_reduction.h>
 
 #include <string>
