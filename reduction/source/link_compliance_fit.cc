@@ -38,16 +38,13 @@ namespace softchain::reduction
       {
         if (!s.has_role(parameters.chord_roles))
           continue;
-        const auto state = states.find(s.pressure());
-        if (state == states.end())
-          {
-            warnings_.push_back("chord sample '" + s.id() + "' at " + data::CsvTable::cell(s.pressure()) +
-                                " Pa skipped: no pressure sample at that pressure");
-            continue;
-          }
+        const SampleReduction *state =
+          MethodReduction::state_of(s, states, "chord", "the links' compliance", warnings_);
+        if (!state)
+          continue;
         const Eigen::Vector3d F = effective_force(s, reduction.rest());
-        sums[s.pressure()].add(s.link_deflection_from(*state->second).dot(F), F.squaredNorm());
-        angles[s.pressure()] = std::max(angles[s.pressure()], angle_deg(F, state->second->chord()));
+        sums[s.pressure()].add(s.link_deflection_from(*state).dot(F), F.squaredNorm());
+        angles[s.pressure()] = std::max(angles[s.pressure()], angle_deg(F, state->chord()));
       }
     for (const auto &[pressure, sum] : sums)
       {

@@ -46,19 +46,16 @@ namespace softchain::reduction
       {
         if (!s.has_role(parameters.bending_roles) && !s.has_role(parameters.chord_roles))
           continue;
-        const auto state = states.find(s.pressure());
-        if (state == states.end())
-          {
-            warnings_.push_back("in-plane sample '" + s.id() + "' at " + data::CsvTable::cell(s.pressure()) +
-                                " Pa skipped for the links' shift per turn: no pressure sample at that pressure");
-            continue;
-          }
+        const SampleReduction *state =
+          MethodReduction::state_of(s, states, "in-plane", "the links' shift per turn", warnings_);
+        if (!state)
+          continue;
         auto &links = observations[s.pressure()];
         links.resize(n_links - 1);
         ++samples[s.pressure()];
         for (std::size_t i = 0; i + 1 < n_links; ++i)
-          if (state->second->joints()[i].angles.phi != 0.0) // turned by the pressure (header)
-            links[i].push_back({turn(s, *state->second, i), change(s, *state->second, i)});
+          if (state->joints()[i].angles.phi != 0.0) // turned by the pressure (header)
+            links[i].push_back({turn(s, *state, i), change(s, *state, i)});
       }
     for (const auto &[pressure, links] : observations)
       {

@@ -1,5 +1,6 @@
 // MethodReduction: every sample reduced by one method on one joint
 // geometry, the rest configuration and the stiffness.
+#include <softchain/data/csv_table.h>
 #include <softchain/data/output_files.h>
 #include <softchain/reduction/method_reduction.h>
 
@@ -57,5 +58,18 @@ namespace softchain::reduction
       if (s.point_forces().empty() && s.has_role(pressure_roles))
         states.emplace(s.pressure(), &s);
     return states;
+  }
+
+  const SampleReduction *MethodReduction::state_of(const SampleReduction                           &sample,
+                                                   const std::map<double, const SampleReduction *> &states,
+                                                   const std::string &kind, const std::string &use,
+                                                   std::vector<std::string> &warnings)
+  {
+    const auto state = states.find(sample.pressure());
+    if (state != states.end())
+      return state->second;
+    warnings.push_back(kind + " sample '" + sample.id() + "' at " + data::CsvTable::cell(sample.pressure()) +
+                       " Pa skipped for " + use + ": no pressure sample at that pressure");
+    return nullptr;
   }
 } // namespace softchain::reduction

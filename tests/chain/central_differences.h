@@ -34,4 +34,19 @@ namespace softchain::chain::testing
       }
     return gradient;
   }
+
+  // The exact tangent's and residual's largest errors against central
+  // differences with step h, relative to their largest entries.
+  struct DerivativeErrors
+  {
+    double tangent;
+    double gradient;
+  };
+  inline DerivativeErrors derivative_errors(ChainEquilibrium &solver, const Eigen::VectorXd &q, const double h)
+  {
+    const Eigen::MatrixXd tangent  = solver.tangent(q);
+    const Eigen::VectorXd residual = solver.residual(q);
+    return {(tangent - central_differences(solver, q, h)).cwiseAbs().maxCoeff() / tangent.cwiseAbs().maxCoeff(),
+            (energy_gradient(solver, q, h) - residual).cwiseAbs().maxCoeff() / residual.cwiseAbs().maxCoeff()};
+  }
 } // namespace softchain::chain::testing

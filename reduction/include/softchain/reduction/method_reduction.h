@@ -33,6 +33,13 @@ namespace softchain::reduction
     // The pressure state of each pressure: the first sample of `pressure_roles`
     // without point forces at it, the rest configuration at 0.
     std::map<double, const SampleReduction *> pressure_states(const std::vector<std::string> &pressure_roles) const;
+    // The state of `states` at `sample`'s pressure, or nullptr after appending
+    // "<kind> sample '<id>' at <p> Pa skipped for <use>: no pressure sample at
+    // that pressure" to `warnings`.
+    static const SampleReduction *state_of(const SampleReduction                           &sample,
+                                           const std::map<double, const SampleReduction *> &states,
+                                           const std::string &kind, const std::string &use,
+                                           std::vector<std::string> &warnings);
 
   private:
     RotationMethod               method_;
