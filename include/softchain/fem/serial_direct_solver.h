@@ -180,8 +180,8 @@ namespace softchain::fem
     unsigned int                              krylov_iterations = 0;
     // Which factors hold M for GMRES: the single ones, else `pivoted`.
     bool approximation_in_single = true;
-    // Tangents left to the double factors after a refinement failed (solve_single()).
-    unsigned int single_skips = 0;
+    // False once a refinement failed (solve_single()).
+    bool single_pays = true;
 
     std::array<double, UMFPACK_CONTROL> control;
     void                               *symbolic = nullptr;

@@ -245,21 +245,15 @@ namespace softchain::fem
   // double factors.
   bool SerialDirectSolver::solve_single(const double *b, std::vector<double> &x)
   {
-    if (single_skips > 0)
-      {
-        --single_skips;
-        return false;
-      }
+    if (!single_pays)
+      return false;
     if (!single)
       single = std::make_unique<MultifrontalLDLT<float>>(row_start, column,
                                                          MultifrontalLDLT<float>::Pivoting::none);
-    const bool pays = single->factorise(value) && refine(b, x);
-    if (pays)
+    single_pays = single->factorise(value) && refine(b, x);
+    if (single_pays)
       last = Factors::single;
-    else
-      single_skips = getenv("SKIPS") ? atoi(getenv("SKIPS")) : 1000000000; // TEMP
-    if (!pays) std::fprintf(stderr, "SINGLE FAILED\n"); // TEMP
-    return pays;
+    return single_pays;
   }
 
   // Iterative refinement with factors in single precision, by GMRES
