@@ -481,11 +481,9 @@ namespace softchain::chain
     // or has no rows.
     std::optional<LinkShiftPerTurn> read_link_shift(const std::string &path, const int n)
     {
-      if (!std::filesystem::exists(path))
+      if (!std::filesystem::exists(path) || CsvTable::read(path).n_rows() == 0)
         return std::nullopt;
       const CsvTable table = read_table(path, {"pressure", "link", "shift_x", "shift_y"});
-      if (table.n_rows() == 0)
-        return std::nullopt;
       std::vector<std::array<std::map<double, double>, 2>> per_link(n);
       for (std::size_t row = 0; row < table.n_rows(); ++row)
         {

@@ -93,6 +93,7 @@ namespace softchain::app
                name.find("_joint_law") != std::string::npos ? "the joints' torque-angle curves under forces" :
                name.find("_pressure_torque") != std::string::npos ? "pressure torque J_p per joint" :
                name.find("_link_geometry") != std::string::npos ? "the chain's joints and tip per pressure" :
+               name.find("_link_shift") != std::string::npos ? "the links' shift per in-plane turn, per pressure" :
                name.find("_link_compliance") != std::string::npos ? "the links' compliance per pressure" :
                name.find("_skin_compliance") != std::string::npos ? "the sections' compliance under contact per pressure" :
                ext == ".csv" ? "joint stiffness table k_psi, k_theta, k_phi" : "reduction output";

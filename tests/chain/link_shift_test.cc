@@ -150,6 +150,9 @@ TEST_CASE("the reduction's link shift file is read, a bad one refused naming fil
       }
     return "no error";
   };
+  // A table without rows (a design without in-plane force samples) is no shift.
+  write("");
+  CHECK(error() == "no error");
   // A table is read, but shifts move the links of a link geometry: without
   // one (these files have none) the chain has no shift.
   write("0,1,0,0,0,1\n0,2,0,0,0,1\n2e4,1,1e-3,2e-3,0.1,1\n2e4,2,3e-3,-1e-3,0.1,1\n");
