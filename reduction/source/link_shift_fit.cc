@@ -36,9 +36,9 @@ namespace softchain::reduction
 
   LinkShiftFit::LinkShiftFit(const MethodReduction &reduction, const ReductionParameters &parameters)
   {
-    const std::size_t n_links = reduction.rest().link_geometry().size();
-    if (n_links < 2)
+    if (reduction.rest().link_geometry().empty())
       return; // no tip face, no links to measure
+    const std::size_t n_links = reduction.rest().link_geometry().size() - 1; // points U_1..U_n, U_T
     const auto states = reduction.pressure_states(parameters.pressure_roles);
     std::map<double, std::vector<std::vector<Observation>>> observations; // per pressure, per link
     std::map<double, int>                                   samples;      // per pressure
@@ -51,9 +51,9 @@ namespace softchain::reduction
         if (!state)
           continue;
         auto &links = observations[s.pressure()];
-        links.resize(n_links - 1);
+        links.resize(n_links);
         ++samples[s.pressure()];
-        for (std::size_t i = 0; i + 1 < n_links; ++i)
+        for (std::size_t i = 0; i < n_links; ++i)
           if (state->joints()[i].angles.phi != 0.0) // turned by the pressure (header)
             links[i].push_back({turn(s, *state, i), change(s, *state, i)});
       }

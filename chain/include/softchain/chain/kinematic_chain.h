@@ -127,9 +127,7 @@ namespace softchain::chain
         }
       check_link_shift();
     }
-    const Eigen::Vector3d &link_shift(int i) const { return link_shifts_[i]; }
-    double                 shift_origin(int i) const { return shift_origins_[i]; }
-    bool                   has_link_shift() const { return has_link_shift_; }
+    bool has_link_shift() const { return has_link_shift_; }
 
     // Link that carries the material point with reference position X: the
     // last joint i with J_i,x <= X_x, or -1 for the clamped base.
