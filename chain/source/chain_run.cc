@@ -55,6 +55,12 @@ namespace softchain::chain
           return model.with_rigid_links();
         if (!p.link_shift)
           model = model.without_link_shift();
+        else if (!std::filesystem::exists(files.link_shift_path()))
+          throw data::InputError(files.link_shift_path() + " is missing, and Chain/Link shift = measured needs "
+                                 "it: run softchain reduce again, or set Link shift = none");
+        else if (!model.has_link_shift())
+          std::cout << "chain: warning: " << files.link_shift_path() << " gives " << name
+                    << " no shifts (no in-plane force samples, or no link geometry); its links do not shift\n";
         return p.link_compliance ? model : model.without_link_compliance();
       };
       for (const auto &[name, method] : data::rotation_methods())

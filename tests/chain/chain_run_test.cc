@@ -448,3 +448,21 @@ TEST_CASE("the MJCF that run_chain exports keeps a twist-axis chain's twist pivo
   CHECK(last.substr(last.size() - 7) == "% of L\n");
   CHECK(std::stod(last.substr(head.size())) < 1e-8);
 }
+
+TEST_CASE("run_chain with links that shift needs the reduction's shift table, naming it when missing")
+{
+  softchain::testing::ScratchDirectory dir("chain_run_link_shift");
+  const std::string                    out = dir.file("out");
+  const std::string                    prm = dir.file("finger.prm");
+  std::string                          text = chain_prm;
+  text.insert(text.find("end\n", text.find("subsection Chain")), "  set Link shift = measured\n");
+  std::ofstream(prm) << text;
+  write_database(dir.file("database.h5"), write_two_reductions(out), centred_box_mesh());
+  const StiffnessFiles m2(out + "/stiffness", data::RotationMethod::affine_fit, 0.5);
+  std::filesystem::remove(m2.link_shift_path());
+  CHECK_THROWS_WITH(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, false),
+                    Catch::Contains(m2.link_shift_path() + " is missing") && Catch::Contains("Link shift = none"));
+  // With the table (here without rows: no in-plane samples) the chain runs, its links unshifted.
+  std::ofstream(m2.link_shift_path()) << "pressure,link,shift_x,shift_y,turn_rms,samples\n";
+  CHECK(run_chain(data::PrmFile::read(prm), dir.file("database.h5"), out, false) == 0);
+}
