@@ -450,28 +450,38 @@ namespace softchain::chain
                            in_pressure(tip_frame[2], path, "rz of the tip")});
     }
 
+    // An optional table: none if the file is missing or has no rows, else
+    // with `columns` (an InputError naming the file and the missing column).
+    std::optional<CsvTable> optional_table(const std::string &path, const std::vector<std::string> &columns)
+    {
+      if (!std::filesystem::exists(path))
+        return std::nullopt;
+      CsvTable table = CsvTable::read(path);
+      if (table.n_rows() == 0)
+        return std::nullopt;
+      for (const std::string &column : columns)
+        if (!table.has_column(column))
+          throw InputError(path + ": missing column '" + column + "'");
+      return table;
+    }
+
     // A compliance in pressure (the links' c(p), LinkCompliance; the
     // sections' c_s(p), ChainContact's skin): one row per pressure, finite
     // and not negative; none if the file is missing or has no rows.
     std::optional<PiecewiseLinear> read_compliance(const std::string &path)
     {
-      if (!std::filesystem::exists(path))
+      const auto table = optional_table(path, {"pressure", "compliance"});
+      if (!table)
         return std::nullopt;
-      const CsvTable table = CsvTable::read(path);
-      if (table.n_rows() == 0)
-        return std::nullopt;
-      for (const std::string column : {"pressure", "compliance"})
-        if (!table.has_column(column))
-          throw InputError(path + ": missing column '" + column + "'");
       std::map<double, double> compliance;
-      for (std::size_t row = 0; row < table.n_rows(); ++row)
+      for (std::size_t row = 0; row < table->n_rows(); ++row)
         {
-          const double c = finite_number(table, path, row, "compliance");
+          const double c = finite_number(*table, path, row, "compliance");
           if (c < 0)
-            throw InputError(where(path, row) + "compliance = " + table.text(row, "compliance") +
+            throw InputError(where(path, row) + "compliance = " + table->text(row, "compliance") +
                              " is negative");
-          if (!compliance.emplace(finite_number(table, path, row, "pressure"), c).second)
-            throw InputError(where(path, row) + "pressure " + table.text(row, "pressure") + " listed twice");
+          if (!compliance.emplace(finite_number(*table, path, row, "pressure"), c).second)
+            throw InputError(where(path, row) + "pressure " + table->text(row, "pressure") + " listed twice");
         }
       return in_pressure(compliance, path, "compliance");
     }
@@ -481,9 +491,10 @@ namespace softchain::chain
     // or has no rows.
     std::optional<LinkShiftPerTurn> read_link_shift(const std::string &path, const int n)
     {
-      if (!std::filesystem::exists(path) || CsvTable::read(path).n_rows() == 0)
+      const auto read = optional_table(path, {"pressure", "link", "shift_x", "shift_y"});
+      if (!read)
         return std::nullopt;
-      const CsvTable table = read_table(path, {"pressure", "link", "shift_x", "shift_y"});
+      const CsvTable &table = *read;
       std::vector<std::array<std::map<double, double>, 2>> per_link(n);
       for (std::size_t row = 0; row < table.n_rows(); ++row)
         {

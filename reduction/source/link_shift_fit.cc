@@ -1,6 +1,5 @@
 #include <softchain/reduction/link_shift_fit.h>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -70,13 +69,6 @@ namespace softchain::reduction
           }
         values_.push_back(std::move(v));
       }
-  }
-
-  const LinkShiftAtPressure *LinkShiftFit::at(const double pressure) const
-  {
-    const auto v = std::find_if(values_.begin(), values_.end(),
-                                [&](const LinkShiftAtPressure &v) { return v.pressure == pressure; });
-    return v == values_.end() ? nullptr : &*v;
   }
 
   data::CsvTable LinkShiftFit::table() const

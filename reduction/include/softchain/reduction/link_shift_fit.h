@@ -63,8 +63,6 @@ namespace softchain::reduction
     LinkShiftFit(const MethodReduction &reduction, const ReductionParameters &parameters);
 
     const std::vector<LinkShiftAtPressure> &values() const { return values_; }
-    // The fitted g_i at `pressure`, or nullptr where no sample was fitted.
-    const LinkShiftAtPressure *at(double pressure) const;
     // pressure,link,shift_x,shift_y,turn_rms,samples, by pressure and link.
     data::CsvTable table() const;
     const std::vector<std::string> &warnings() const { return warnings_; }
