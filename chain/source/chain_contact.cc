@@ -366,6 +366,8 @@ namespace softchain::chain
           continue;
         for (int k = cluster.begin; k < cluster.end; ++k)
           {
+            if (seen.is_plane() && surface_->between_vertices(k))
+              continue; // never deeper than its vertices (CollisionSurface)
             const Eigen::Vector3d L = surface_->gives(k) ? Eigen::Vector3d(offsets_[k] + skin) : offsets_[k];
             if (!seen.closer_than(L, margin))
               continue;

@@ -6,14 +6,17 @@
 namespace softchain::chain
 {
   CollisionSurface::CollisionSurface(std::vector<int> links, std::vector<Row> rows, const int n_links,
-                                     std::vector<char> gives)
+                                     std::vector<char> gives, std::vector<char> between_vertices)
     : links_(std::move(links))
     , rows_(std::move(rows))
     , gives_(gives.empty() ? std::vector<char>(links_.size(), 1) : std::move(gives))
+    , between_vertices_(between_vertices.empty() ? std::vector<char>(links_.size(), 0) : std::move(between_vertices))
     , link_begin_(n_links + 1, 0)
   {
     if (gives_.size() != links_.size())
       throw std::invalid_argument("CollisionSurface: one 'gives' flag per point");
+    if (between_vertices_.size() != links_.size())
+      throw std::invalid_argument("CollisionSurface: one 'between vertices' flag per point");
     if (rows_.empty() || rows_.front().pressure != 0.0)
       throw std::invalid_argument("CollisionSurface: the first row must be the rest surface (p = 0)");
     for (std::size_t r = 0; r < rows_.size(); ++r)
@@ -114,10 +117,13 @@ namespace softchain::chain
           moved[k] = row.offsets[order[k]];
         row.offsets = std::move(moved);
       }
-    std::vector<char> moved(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k)
-      moved[k] = gives_[order[k]];
-    gives_ = std::move(moved);
+    for (std::vector<char> *flags : {&gives_, &between_vertices_})
+      {
+        std::vector<char> moved(order.size());
+        for (std::size_t k = 0; k < order.size(); ++k)
+          moved[k] = (*flags)[order[k]];
+        *flags = std::move(moved);
+      }
   }
 
   std::vector<double> CollisionSurface::table_pressures() const

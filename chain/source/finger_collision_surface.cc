@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <array>
+#include <functional>
+#include <optional>
 #include <map>
 #include <set>
 
@@ -82,79 +84,134 @@ namespace softchain::chain
       return x;
     }
 
+    // Where a reference position is carried: its link (-1: the clamped base)
+    // and whether it lies on a section that gives under contact.
+    using Carrier = std::function<std::pair<int, bool>(const Eigen::Vector3d &)>;
+
+    // A point of the outer surface, and whether it lies strictly between two
+    // points of a row of one of its faces' grids (either direction) that the
+    // same link carries with the same skin: a combination of them wherever
+    // the link goes (CollisionSurface::between_vertices).
+    struct GridPoint
+    {
+      Weights weights;
+      bool    between_vertices = false;
+    };
+
     // The points of the outer faces on a grid of `subdivisions` intervals
     // per edge: bilinear on a quadrilateral, barycentric on a triangle. A point shared by faces
     // is kept once (keyed by its weights); those carried only by clamped
-    // base vertices are left out.
-    std::vector<Weights> outer_surface_points(const data::MeshRecord &mesh, const int subdivisions)
+    // base vertices are left out (and are no row's ends).
+    std::vector<GridPoint> outer_surface_points(const data::MeshRecord &mesh, const int subdivisions,
+                                                const Carrier &carried)
     {
       const std::set<std::int64_t> base(mesh.base_nodes.begin(), mesh.base_nodes.end());
-      std::map<std::vector<std::pair<std::int64_t, long>>, Weights> points;
-      const auto add = [&](const Weights &combination) {
-        Weights                                  kept;
+      std::map<std::vector<std::pair<std::int64_t, long>>, GridPoint> points;
+      const auto add = [&](const Weights &weights, const bool between) {
         std::vector<std::pair<std::int64_t, long>> key;
+        for (const auto &[node, w] : weights)
+          key.emplace_back(node, std::lround(w * 1e9));
+        std::sort(key.begin(), key.end());
+        GridPoint &point = points.try_emplace(key, GridPoint{weights, false}).first->second;
+        point.between_vertices |= between;
+      };
+      // The combination's vertices of positive weight, or none if all of them
+      // are clamped.
+      const auto surface_point = [&](const Weights &combination) -> std::optional<Weights> {
+        Weights kept;
         for (const auto &[node, w] : combination)
           if (w > 0.0)
-            {
-              kept.emplace_back(node, w);
-              key.emplace_back(node, std::lround(w * 1e9));
-            }
-        std::sort(key.begin(), key.end());
-        if (!std::all_of(kept.begin(), kept.end(), [&](const auto &nw) { return base.count(nw.first) > 0; }))
-          points.emplace(key, kept);
+            kept.emplace_back(node, w);
+        if (std::all_of(kept.begin(), kept.end(), [&](const auto &nw) { return base.count(nw.first) > 0; }))
+          return std::nullopt;
+        return kept;
       };
-      const double m = subdivisions;
+      const int m = subdivisions;
+      struct Node
+      {
+        Weights              weights;
+        std::pair<int, bool> carrier;
+      };
+      std::vector<std::vector<std::optional<Node>>> grid(m + 1, std::vector<std::optional<Node>>(m + 1));
+      // Whether (i, j) lies strictly between two grid points of its carrier
+      // along the direction (di, dj).
+      const auto between_along = [&](const int i, const int j, const int di, const int dj) {
+        const auto same_on_side = [&](const int sign) {
+          for (int a = i + sign * di, b = j + sign * dj; a >= 0 && a <= m && b >= 0 && b <= m;
+               a += sign * di, b += sign * dj)
+            if (grid[a][b] && grid[a][b]->carrier == grid[i][j]->carrier)
+              return true;
+          return false;
+        };
+        return same_on_side(-1) && same_on_side(1);
+      };
       for (const std::vector<std::int64_t> &face : outer_faces(mesh))
-        for (int i = 0; i <= subdivisions; ++i)
-          for (int j = 0; j <= subdivisions; ++j)
-            {
-              const double u = i / m, v = j / m;
-              if (face.size() == 4)
-                add({{face[0], (1 - u) * (1 - v)}, {face[1], u * (1 - v)}, {face[2], (1 - u) * v}, {face[3], u * v}});
-              else if (i + j <= subdivisions)
-                add({{face[0], 1 - u - v}, {face[1], u}, {face[2], v}});
-            }
-      std::vector<Weights> all;
-      for (auto &[key, weights] : points)
-        all.push_back(std::move(weights));
+        {
+          for (int i = 0; i <= m; ++i)
+            for (int j = 0; j <= m; ++j)
+              {
+                const double           u = double(i) / m, v = double(j) / m;
+                std::optional<Weights> point;
+                if (face.size() == 4)
+                  point = surface_point({{face[0], (1 - u) * (1 - v)}, {face[1], u * (1 - v)},
+                                         {face[2], (1 - u) * v}, {face[3], u * v}});
+                else if (i + j <= m)
+                  point = surface_point({{face[0], 1 - u - v}, {face[1], u}, {face[2], v}});
+                grid[i][j].reset();
+                if (point)
+                  grid[i][j] = Node{*point, carried(data::vector_of(combination(*point, mesh.X)))};
+              }
+          for (int i = 0; i <= m; ++i)
+            for (int j = 0; j <= m; ++j)
+              if (grid[i][j])
+                add(grid[i][j]->weights, between_along(i, j, 1, 0) || between_along(i, j, 0, 1));
+        }
+      std::vector<GridPoint> all;
+      for (auto &[key, point] : points)
+        all.push_back(std::move(point));
       return all;
     }
 
-    // Points of the outer surface on links, sorted by link, and whether each
+    // Points of the outer surface on links, sorted by link; whether each
     // lies on a section that gives under contact: strictly between the
     // cavity's ends along x, where the palm is a plate spanning the cavity
-    // (the solid base fill and tip cap do not give; ChainContact's skin).
+    // (the solid base fill and tip cap do not give; ChainContact's skin);
+    // and whether it lies between vertices (GridPoint).
     struct SurfacePoints
     {
       std::vector<Weights> points;
       std::vector<int>     links;
       std::vector<char>    gives;
+      std::vector<char>    between_vertices;
     };
 
     SurfacePoints surface_points(const KinematicChain &chain, const data::MeshRecord &mesh, const int subdivisions)
     {
+      const auto [low, high] = cavity_span(mesh);
+      const Carrier carried  = [&chain, low = low, high = high](const Eigen::Vector3d &X) {
+        return std::make_pair(chain.link_of(X), X.x() > low && X.x() < high);
+      };
       struct OnLink
       {
-        int     link;
-        double  x; // the reference position's x
-        Weights point;
+        int       link;
+        bool      gives;
+        GridPoint point;
       };
       std::vector<OnLink> by_link;
-      for (Weights &point : outer_surface_points(mesh, subdivisions))
+      for (GridPoint &point : outer_surface_points(mesh, subdivisions, carried))
         {
-          const Eigen::Vector3d X    = data::vector_of(combination(point, mesh.X));
-          const int             link = chain.link_of(X);
+          const auto [link, gives] = carried(data::vector_of(combination(point.weights, mesh.X)));
           if (link >= 0)
-            by_link.push_back({link, X.x(), std::move(point)});
+            by_link.push_back({link, gives, std::move(point)});
         }
       std::stable_sort(by_link.begin(), by_link.end(), [](const OnLink &a, const OnLink &b) { return a.link < b.link; });
-      const auto [low, high] = cavity_span(mesh);
       SurfacePoints points;
       for (OnLink &p : by_link)
         {
           points.links.push_back(p.link);
-          points.gives.push_back(p.x > low && p.x < high);
-          points.points.push_back(std::move(p.point));
+          points.gives.push_back(p.gives);
+          points.between_vertices.push_back(p.point.between_vertices);
+          points.points.push_back(std::move(p.point.weights));
         }
       return points;
     }
@@ -209,7 +266,7 @@ namespace softchain::chain
   {
     const SurfacePoints points = surface_points(model.chain(), mesh, subdivisions);
     CollisionSurface::Row rest{0.0, offsets_in_links(points, model.chain().rest_pose(), mesh.X)};
-    return CollisionSurface(points.links, {rest}, model.chain().n_joints(), points.gives);
+    return CollisionSurface(points.links, {rest}, model.chain().n_joints(), points.gives, points.between_vertices);
   }
 
   SurfaceSamples SurfaceSamples::read(const data::ActuationDatabase &database)
@@ -236,6 +293,7 @@ namespace softchain::chain
     for (const auto &[pressure, y] : inflated)
       if (equilibrium.solve(ChainLoad{pressure, {}}).converged)
         rows.push_back({pressure, offsets_in_links(points, equilibrium.pose(), y)});
-    return CollisionSurface(points.links, std::move(rows), model.chain().n_joints(), points.gives);
+    return CollisionSurface(points.links, std::move(rows), model.chain().n_joints(), points.gives,
+                            points.between_vertices);
   }
 } // namespace softchain::chain

@@ -428,6 +428,97 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond, outer
                     Catch::Contains("friction coefficient must be >= 0"));
 }
 
+TEST_CASE("a plane skips the points between vertices: the same equilibrium, no point deeper")
+{
+  // A 90 mm box of 15 mm hexahedra; joint 2 at 37.5 mm, inside the cells
+  // between 30 and 45 mm, joint 3 on a cell face. Faces subdivided 3 x 3.
+  testing::BoxMeshSpec spec;
+  spec.nx = 6, spec.ny = 4, spec.nz = 4;
+  const auto       mesh = testing::box_mesh(spec);
+  const ChainModel box("box",
+                       KinematicChain({{0.0, 0.0, 0.0}, {0.0375, 0.0, 0.0}, {0.06, 0.0, 0.0}},
+                                      Eigen::Vector3d(spec.length, 0.0, 0.0)),
+                       JointStiffness(std::vector<Eigen::Vector3d>(3, Eigen::Vector3d(0.3, 0.2, 0.1))),
+                       PressureActuation(Eigen::VectorXd::Zero(9)));
+  const CollisionSurface fine = rigid_collision_surface(box, mesh, 3);
+
+  // Between vertices: every point that is not a mesh vertex, except where
+  // a face's grid is split between two links: the faces of the cells across
+  // joint 2 (30 to 45 mm) and of those ending on joint 3 (45 to 60 mm; a
+  // vertex at J_3,x is link 3's). There the last grid points of a part
+  // (x = 35, 40 and 55 mm) on the faces' edges are corners of their parts,
+  // and so are those next to the clamped base (x = 5 mm), whose own grid
+  // points are left out.
+  std::vector<Eigen::Vector3d> offsets;
+  fine.offsets_at(0.0, offsets);
+  const ChainPose rest = box.chain().rest_pose();
+  const auto      at_rest = [&](int k) {
+    const int b = fine.links()[k];
+    return Eigen::Vector3d(rest.joint_positions[b] + rest.link_rotations[b] * offsets[k]);
+  };
+  std::vector<Eigen::Vector3d> vertices;
+  for (const std::int64_t v : outer_surface_nodes(mesh))
+    vertices.emplace_back(mesh.X[v][0], mesh.X[v][1], mesh.X[v][2]);
+  const auto on_grid = [](const double t, const double origin, const double step) {
+    const double cells = (t - origin) / step;
+    return std::abs(cells - std::round(cells)) < 1e-9;
+  };
+  int between = 0;
+  for (int k = 0; k < fine.n_points(); ++k)
+    {
+      const Eigen::Vector3d x      = at_rest(k);
+      const bool            vertex = std::any_of(vertices.begin(), vertices.end(),
+                                                 [&](const Eigen::Vector3d &v) { return (v - x).norm() < 1e-12; });
+      const bool top_or_bottom = on_grid(x.y(), spec.y0, spec.height);
+      const bool on_cell_edge  = top_or_bottom ? on_grid(x.z(), -spec.width / 2, spec.width / spec.nz)
+                                               : on_grid(x.y(), spec.y0, spec.height / spec.ny);
+      const bool part_corner   = on_cell_edge && (std::abs(x.x() - 0.005) < 1e-12 || std::abs(x.x() - 0.035) < 1e-12 ||
+                                                std::abs(x.x() - 0.04) < 1e-12 || std::abs(x.x() - 0.055) < 1e-12);
+      INFO("point at " << x.transpose());
+      CHECK(fine.between_vertices(k) == (!vertex && !part_corner));
+      between += fine.between_vertices(k);
+    }
+  CHECK(between > fine.n_points() / 2);
+
+  // The same points with every one searched.
+  std::vector<char> gives;
+  for (int k = 0; k < fine.n_points(); ++k)
+    gives.push_back(fine.gives(k));
+  const CollisionSurface all(fine.links(), {{0.0, offsets}}, box.chain().n_joints(), gives);
+
+  // A tip force of 0.5 N bends the box onto a table 4 mm under it.
+  const ChainLoad load{0.0, {{Eigen::Vector3d(spec.length, 0.0, 0.0), Eigen::Vector3d(0.0, -0.5, 0.0)}},
+                       {plane(spec.y0 - 0.004)}};
+  ChainModel searched_at_vertices = box, searched_everywhere = box;
+  searched_at_vertices.set_collision_surface(fine);
+  searched_everywhere.set_collision_surface(all);
+  ChainEquilibrium  at_vertices(searched_at_vertices), everywhere(searched_everywhere);
+  const Equilibrium a = at_vertices.solve(load), b = everywhere.solve(load);
+  REQUIRE(a.converged);
+  REQUIRE(b.converged);
+  const auto &touches = at_vertices.contact().touches();
+  REQUIRE(!touches.empty());
+  CHECK(touches.size() < everywhere.contact().touches().size());
+  for (const auto &t : touches)
+    CHECK_FALSE(fine.between_vertices(t.point));
+  // No point of the surface lies deeper in the table than the deepest
+  // touching one: the points left out are never reached first.
+  const double deepest = at_vertices.contact().max_penetration();
+  for (int k = 0; k < fine.n_points(); ++k)
+    {
+      const int             link = fine.links()[k];
+      const Eigen::Vector3d x = at_vertices.pose().joint_positions[link] + at_vertices.pose().link_rotations[link] * offsets[k];
+      CHECK(spec.y0 - 0.004 - x.y() <= deepest * (1 + 1e-9));
+    }
+  // Both searches hold the same constraint; they differ by how deep the
+  // penalty lets the touching points sink, f / k_c per point: the joints
+  // turn alike to that depth over the shortest lever to the touches
+  // (about the box's 15 mm cells).
+  const double depth = std::max(deepest, everywhere.contact().max_penetration());
+  CHECK((a.angles - b.angles).lpNorm<Eigen::Infinity>() <= depth / 0.015);
+  CHECK(depth < 1e-4 * spec.length);
+}
+
 TEST_CASE("a finger closing on a thin plate stops on its near side: no step carries a point through it")
 {
   // The palm finger bends down towards a plate 1 mm thick, 14 mm under the

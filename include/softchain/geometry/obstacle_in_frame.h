@@ -33,6 +33,8 @@ namespace softchain::geometry
     // Any obstacle, through its rest coordinates y = A L + b.
     ObstacleInFrame(const RigidObstacle &obstacle, const Eigen::Matrix3d &A, const Eigen::Vector3d &b);
 
+    bool is_plane() const { return kind_ == Kind::plane; }
+
     double gap(const Eigen::Vector3d &L) const
     {
       const Eigen::Vector3d d = L - point_;
