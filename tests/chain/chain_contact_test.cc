@@ -35,6 +35,17 @@ namespace
       moment += (t.position - solver.pose().joint_positions[0]).cross(t.force).z();
     return moment;
   }
+
+  // Three joints along a box of `spec` at x = 0, `second` and 60 mm, no
+  // pressure torque.
+  ChainModel box_chain(const testing::BoxMeshSpec &spec, const double second)
+  {
+    return ChainModel("box",
+                      KinematicChain({{0.0, 0.0, 0.0}, {second, 0.0, 0.0}, {0.06, 0.0, 0.0}},
+                                     Eigen::Vector3d(spec.length, 0.0, 0.0)),
+                      JointStiffness(std::vector<Eigen::Vector3d>(3, Eigen::Vector3d(0.3, 0.2, 0.1))),
+                      PressureActuation(Eigen::VectorXd::Zero(9)));
+  }
 } // namespace
 
 TEST_CASE("a joint bent onto a table: the penalty model's closed form and the exact contact's limit")
@@ -390,11 +401,7 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond, outer
       spec.nx = 6, spec.ny = 4, spec.nz = 4, spec.tetrahedra = tetrahedra;
       const auto       mesh  = testing::box_mesh(spec);
       // Joints from the base face on, so that every point has a link.
-      const ChainModel box("box",
-                           KinematicChain({{0.0, 0.0, 0.0}, {0.03, 0.0, 0.0}, {0.06, 0.0, 0.0}},
-                                          Eigen::Vector3d(spec.length, 0.0, 0.0)),
-                           JointStiffness(std::vector<Eigen::Vector3d>(3, Eigen::Vector3d(0.3, 0.2, 0.1))),
-                           PressureActuation(Eigen::VectorXd::Zero(9)));
+      const ChainModel box   = box_chain(spec, 0.03);
       const int        m     = 2;
       const auto       fine  = rigid_collision_surface(box, mesh, m);
       CHECK(fine.n_points() == 13 * 9 * 9 - 11 * 7 * 7 - 9 * 9);
@@ -435,11 +442,7 @@ TEST_CASE("a plane skips the points between vertices: the same equilibrium, no p
   testing::BoxMeshSpec spec;
   spec.nx = 6, spec.ny = 4, spec.nz = 4;
   const auto       mesh = testing::box_mesh(spec);
-  const ChainModel box("box",
-                       KinematicChain({{0.0, 0.0, 0.0}, {0.0375, 0.0, 0.0}, {0.06, 0.0, 0.0}},
-                                      Eigen::Vector3d(spec.length, 0.0, 0.0)),
-                       JointStiffness(std::vector<Eigen::Vector3d>(3, Eigen::Vector3d(0.3, 0.2, 0.1))),
-                       PressureActuation(Eigen::VectorXd::Zero(9)));
+  const ChainModel box  = box_chain(spec, 0.0375);
   const CollisionSurface fine = rigid_collision_surface(box, mesh, 3);
 
   // Between vertices: every point that is not a mesh vertex, except where
