@@ -36,12 +36,12 @@ namespace
     return moment;
   }
 
-  // Three joints along a box of `spec` at x = 0, `second` and 60 mm, no
+  // Three joints along a box of `spec` at x = 0, `second` and `third`, no
   // pressure torque.
-  ChainModel box_chain(const testing::BoxMeshSpec &spec, const double second)
+  ChainModel box_chain(const testing::BoxMeshSpec &spec, const double second, const double third)
   {
     return ChainModel("box",
-                      KinematicChain({{0.0, 0.0, 0.0}, {second, 0.0, 0.0}, {0.06, 0.0, 0.0}},
+                      KinematicChain({{0.0, 0.0, 0.0}, {second, 0.0, 0.0}, {third, 0.0, 0.0}},
                                      Eigen::Vector3d(spec.length, 0.0, 0.0)),
                       JointStiffness(std::vector<Eigen::Vector3d>(3, Eigen::Vector3d(0.3, 0.2, 0.1))),
                       PressureActuation(Eigen::VectorXd::Zero(9)));
@@ -401,7 +401,7 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond, outer
       spec.nx = 6, spec.ny = 4, spec.nz = 4, spec.tetrahedra = tetrahedra;
       const auto       mesh  = testing::box_mesh(spec);
       // Joints from the base face on, so that every point has a link.
-      const ChainModel box   = box_chain(spec, 0.03);
+      const ChainModel box   = box_chain(spec, 0.03, 0.06);
       const int        m     = 2;
       const auto       fine  = rigid_collision_surface(box, mesh, m);
       CHECK(fine.n_points() == 13 * 9 * 9 - 11 * 7 * 7 - 9 * 9);
@@ -438,20 +438,21 @@ TEST_CASE("the collision surface: offsets linear in pressure, held beyond, outer
 TEST_CASE("a plane skips the points between vertices: the same equilibrium, no point deeper")
 {
   // A 90 mm box of 15 mm hexahedra; joint 2 at 37.5 mm, inside the cells
-  // between 30 and 45 mm, joint 3 on a cell face. Faces subdivided 3 x 3.
+  // between 30 and 45 mm, joint 3 0.1 mm before the cell face at 60 mm (so
+  // that the points on that face's edges, whose x a sum of weights gives
+  // to round-off, lie on one link). Faces subdivided 3 x 3.
   testing::BoxMeshSpec spec;
   spec.nx = 6, spec.ny = 4, spec.nz = 4;
   const auto       mesh = testing::box_mesh(spec);
-  const ChainModel box  = box_chain(spec, 0.0375);
+  const ChainModel box  = box_chain(spec, 0.0375, 0.0599);
   const CollisionSurface fine = rigid_collision_surface(box, mesh, 3);
 
   // Between vertices: every point that is not a mesh vertex, except where
-  // a face's grid is split between two links: the faces of the cells across
-  // joint 2 (30 to 45 mm) and of those ending on joint 3 (45 to 60 mm; a
-  // vertex at J_3,x is link 3's). There the last grid points of a part
-  // (x = 35, 40 and 55 mm) on the faces' edges are corners of their parts,
-  // and so are those next to the clamped base (x = 5 mm), whose own grid
-  // points are left out.
+  // a face's grid is split between two links: the faces of the cells
+  // across joint 2 (30 to 45 mm) and across joint 3 (45 to 60 mm). There
+  // the last grid points of a part (x = 35, 40 and 55 mm) on the faces'
+  // edges are corners of their parts, and so are those next to the clamped
+  // base (x = 5 mm), whose own grid points are left out.
   std::vector<Eigen::Vector3d> offsets;
   fine.offsets_at(0.0, offsets);
   const ChainPose rest = box.chain().rest_pose();
