@@ -80,5 +80,4 @@ namespace softchain::reduction
                                           double(v.samples)});
     return table;
   }
-
 } // namespace softchain::reduction
