@@ -235,13 +235,16 @@ BENCHMARK_CAPTURE(contact_ramp_20_warm_start, table, on_table(0.0))->Unit(benchm
 BENCHMARK_CAPTURE(contact_ramp_20_warm_start, cylinder, on_cylinder(0.0))->Unit(benchmark::kMicrosecond);
 
 // With Coulomb friction (mu = 0.5) on the same obstacles: the sample's load
-// path from rest (FrictionalLoadPath, 20 steps, each solved until its
-// normal forces settle). Time per path; solves and Newton iterations per path.
+// path from rest (FrictionalLoadPath, 20 steps, a quarter of the default,
+// each solved until its normal forces settle). Time per path; solves and
+// Newton iterations per path.
 static void frictional_path_20_steps(benchmark::State &state, const ChainLoad &obstacle_load)
 {
   const ChainModel   model = finger_with_surface();
   ChainEquilibrium   solver(model);
-  FrictionalLoadPath path(solver);
+  FrictionalPathSettings twenty_steps;
+  twenty_steps.steps = 20;
+  FrictionalLoadPath path(solver, twenty_steps);
   ChainLoad          load = obstacle_load;
   load.obstacles.front().friction = 0.5;
   int iterations = 0;

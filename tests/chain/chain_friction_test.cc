@@ -133,10 +133,11 @@ TEST_CASE("a joint slides a point along a rough table: Coulomb's closed form wit
 
 TEST_CASE("a point on a rough table sticks where it entered it")
 {
-  // mu = 1 holds the point (T / N ~ 0.44 < 1). It enters the table within
-  // the step from t = 0.5 (phi = tau / 2k = -0.4, above the table: x_s = c
-  // + l (cos 0.4, -sin 0.4)) to 0.55, where the first solve, frictionless
-  // for it, puts it at x_1 (k phi - 0.55 tau - N l cos phi = 0). It sticks
+  // mu = 1 holds the point (T / N ~ 0.44 < 1). Along 20 steps it enters
+  // the table within the step from t = 0.5 (phi = tau / 2k = -0.4, above
+  // the table: x_s = c + l (cos 0.4, -sin 0.4)) to 0.55, where the first
+  // solve, frictionless for it, puts it at x_1 (k phi - 0.55 tau - N l cos
+  // phi = 0). It sticks
   // at the zero of the gap interpolated from x_s to x_1, a = x_s + g_s /
   // (g_s - g_1) (x_1 - x_s), and the penalty holds it there from then on,
   // F = -k_c (x - a_x, l sin phi + h).
@@ -144,7 +145,7 @@ TEST_CASE("a point on a rough table sticks where it entered it")
   const ChainModel          model    = one_joint();
   const EquilibriumSettings settings = with_penalty();
   ChainEquilibrium          solver(model, settings);
-  FrictionalLoadPath        path(solver);
+  FrictionalLoadPath        path(solver, {20, 30, 1e-6});
   const Equilibrium  e = path.solve(ChainLoad{1.0, {}, {rough_table(mu)}});
   REQUIRE(e.converged);
   // Relative to the joint.

@@ -23,8 +23,8 @@ namespace softchain::chain
 {
   struct FrictionalPathSettings
   {
-    int    steps      = 20;   // n
-    int    max_passes = 30;   // solves per step until the normal forces settle
+    int    steps      = 80;   // n: P10's grasps converge by 80 (docs/chain_fidelity.md)
+    int    max_passes = 100;  // solves per step until the normal forces settle
     double tolerance  = 1e-6; // relative
   };
 
