@@ -55,7 +55,7 @@ namespace softchain::chain
                       "intervals per edge of the database mesh's outer faces on which the "
                       "collision surface takes its points: 1 takes the vertices, n a grid of "
                       "n x n intervals on each face (bilinear in its deformed vertices)");
-      section.declare("Friction load steps", "80",
+      section.declare("Friction load steps", std::to_string(FrictionalPathSettings().steps),
                       "equal steps of the load path along which a contact sample with friction "
                       "is solved from rest (its stick anchors carried from step to step)");
       section.declare("Timed solves", "1",

@@ -94,8 +94,9 @@ namespace softchain::chain
     // the link goes (CollisionSurface::between_vertices).
     struct GridPoint
     {
-      Weights weights;
-      bool    between_vertices = false;
+      Weights              weights;
+      std::pair<int, bool> carrier; // Carrier's answer at the point
+      bool                 between_vertices = false;
     };
 
     // The points of the outer faces on a grid of `subdivisions` intervals
@@ -107,12 +108,12 @@ namespace softchain::chain
     {
       const std::set<std::int64_t> base(mesh.base_nodes.begin(), mesh.base_nodes.end());
       std::map<std::vector<std::pair<std::int64_t, long>>, GridPoint> points;
-      const auto add = [&](const Weights &weights, const bool between) {
+      const auto add = [&](const Weights &weights, const std::pair<int, bool> &carrier, const bool between) {
         std::vector<std::pair<std::int64_t, long>> key;
         for (const auto &[node, w] : weights)
           key.emplace_back(node, std::lround(w * 1e9));
         std::sort(key.begin(), key.end());
-        GridPoint &point = points.try_emplace(key, GridPoint{weights, false}).first->second;
+        GridPoint &point = points.try_emplace(key, GridPoint{weights, carrier, false}).first->second;
         point.between_vertices |= between;
       };
       // The combination's vertices of positive weight, or none if all of them
@@ -164,7 +165,7 @@ namespace softchain::chain
           for (int i = 0; i <= m; ++i)
             for (int j = 0; j <= m; ++j)
               if (grid[i][j])
-                add(grid[i][j]->weights, between_along(i, j, 1, 0) || between_along(i, j, 0, 1));
+                add(grid[i][j]->weights, grid[i][j]->carrier, between_along(i, j, 1, 0) || between_along(i, j, 0, 1));
         }
       std::vector<GridPoint> all;
       for (auto &[key, point] : points)
@@ -200,7 +201,7 @@ namespace softchain::chain
       std::vector<OnLink> by_link;
       for (GridPoint &point : outer_surface_points(mesh, subdivisions, carried))
         {
-          const auto [link, gives] = carried(data::vector_of(combination(point.weights, mesh.X)));
+          const auto [link, gives] = point.carrier;
           if (link >= 0)
             by_link.push_back({link, gives, std::move(point)});
         }
