@@ -11,8 +11,8 @@ namespace softchain::chain
 {
   void ChainContact::set(const CollisionSurface *surface, const double pressure,
                          const std::vector<data::ObstacleRecord> &obstacles, const double stiffness,
-                         const std::vector<double> &skin_compliance, const double path,
-                         std::vector<StickAnchor> anchors)
+                         const std::vector<double> &skin_compliance, const double shear_compliance,
+                         const double path, std::vector<StickAnchor> anchors)
   {
     obstacles_.clear();
     poses_.clear();
@@ -20,7 +20,7 @@ namespace softchain::chain
     skin_compliance_.clear();
     surface_   = surface;
     stiffness_ = stiffness;
-    friction_.set({}, stiffness, {});
+    friction_.set({}, stiffness, 0.0, {});
     if (obstacles.empty())
       return;
     if (surface == nullptr)
@@ -35,7 +35,7 @@ namespace softchain::chain
         poses_.push_back(obstacles_.back().pose(path));
         coefficients.push_back(record.friction);
       }
-    friction_.set(coefficients, stiffness, std::move(anchors));
+    friction_.set(coefficients, stiffness, shear_compliance, std::move(anchors));
     surface->offsets_at(pressure, offsets_);
     spheres_ = &surface->spheres_at(pressure);
     for (const double c : skin_compliance)

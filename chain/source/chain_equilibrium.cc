@@ -76,7 +76,7 @@ namespace softchain::chain
     const double              skin_compliance = model_.skin_compliance(load.pressure);
     const std::vector<double> skin(skin_compliance > 0.0 ? chain_.n_joints() : 0, skin_compliance);
     contact_.set(model_.collision_surface(), load.pressure, load.obstacles, settings_.contact_stiffness, skin,
-                 load.path, load.anchors);
+                 model_.skin_shear_compliance(load.pressure), load.path, load.anchors);
   }
 
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)

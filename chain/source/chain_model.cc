@@ -30,6 +30,7 @@ namespace softchain::chain
     rigid.link_shift_.reset();
     rigid.link_compliance_.reset();
     rigid.skin_compliance_.reset();
+    rigid.skin_shear_compliance_.reset();
     rigid.collision_surface_.reset(); // shaped for the links it leaves
     return rigid;
   }
@@ -39,7 +40,7 @@ namespace softchain::chain
     link_compliance_ = std::move(compliance);
   }
 
-  void ChainModel::set_skin_compliance(PiecewiseLinear compliance)
+  void ChainModel::set_skin_compliance(std::optional<PiecewiseLinear> compliance)
   {
     skin_compliance_ = std::move(compliance);
   }
@@ -49,11 +50,14 @@ namespace softchain::chain
     return skin_compliance_ ? (*skin_compliance_)(pressure) : 0.0;
   }
 
-  ChainModel ChainModel::without_skin_compliance() const
+  void ChainModel::set_skin_shear_compliance(std::optional<PiecewiseLinear> compliance)
   {
-    ChainModel rigid = *this;
-    rigid.skin_compliance_.reset();
-    return rigid;
+    skin_shear_compliance_ = std::move(compliance);
+  }
+
+  double ChainModel::skin_shear_compliance(const double pressure) const
+  {
+    return skin_shear_compliance_ ? (*skin_shear_compliance_)(pressure) : 0.0;
   }
 
   void ChainModel::set_collision_surface(CollisionSurface surface)
@@ -109,6 +113,8 @@ namespace softchain::chain
       merge_abscissae(link_shift_->table_pressures(), pressures);
     if (skin_compliance_)
       merge_abscissae(skin_compliance_->abscissae(), pressures);
+    if (skin_shear_compliance_)
+      merge_abscissae(skin_shear_compliance_->abscissae(), pressures);
     return pressures;
   }
 

@@ -6,6 +6,20 @@ namespace softchain::chain
 {
   namespace
   {
+    // A compliance that is `measured` (nothing: the reduction's table), none
+    // (0) or a value >= 0 in m/N.
+    std::optional<double> set_compliance(const data::PrmSection &section, const std::string &name)
+    {
+      const std::string text = section.get(name);
+      if (text == "measured")
+        return std::nullopt;
+      if (text == "none")
+        return 0.0;
+      const double c = section.get_double(name);
+      section.require(c >= 0, name, "must be measured, none or a compliance >= 0 in m/N");
+      return c;
+    }
+
     void declare(data::PrmSection &section)
     {
       section.declare("Stiffness method", "M2", "M1 (bounding box) or M2 (affine fit)");
@@ -51,6 +65,12 @@ namespace softchain::chain
                       "contact force: measured (c_s(p) the reduction fitted to the skin samples, "
                       "<label>_skin_compliance.csv; rigid sections without it), none (rigid "
                       "sections), or a value in m/N");
+      section.declare("Skin shear compliance", "measured",
+                      "how far each link's section gives along the palm per newton of friction, "
+                      "in series with each sticking point's penalty: measured (c_t(p) the "
+                      "reduction fitted to the skin samples with 'shear F', "
+                      "<label>_skin_shear_compliance.csv; sections rigid in shear without it), "
+                      "none, or a value in m/N");
       section.declare("Surface subdivisions", "3",
                       "intervals per edge of the database mesh's outer faces on which the "
                       "collision surface takes its points: 1 takes the vertices, n a grid of "
@@ -101,15 +121,8 @@ namespace softchain::chain
     section.require(p.newton.tolerance > 0, "Newton tolerance", "must be positive");
     p.newton.contact_stiffness = section.get_double("Contact stiffness");
     section.require(p.newton.contact_stiffness > 0, "Contact stiffness", "must be positive");
-    const std::string skin = section.get("Skin compliance");
-    if (skin == "none")
-      p.skin_compliance = 0.0;
-    else if (skin != "measured")
-      {
-        p.skin_compliance = section.get_double("Skin compliance");
-        section.require(*p.skin_compliance >= 0, "Skin compliance",
-                        "must be measured, none or a compliance >= 0 in m/N");
-      }
+    p.skin_compliance       = set_compliance(section, "Skin compliance");
+    p.skin_shear_compliance = set_compliance(section, "Skin shear compliance");
     // Upper bounds far above any use (the collision surface grows with the
     // square of its subdivisions: 16 puts 28 times the points of the default
     // 3 on it), so that a mistyped value is an error, not hours of solves.

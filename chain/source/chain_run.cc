@@ -35,6 +35,14 @@ namespace softchain::chain
       return {low, high};
     }
 
+    // A compliance set in the .prm: the same at every pressure (none for 0).
+    std::optional<PiecewiseLinear> constant_compliance(const double c)
+    {
+      if (c > 0.0)
+        return PiecewiseLinear({0.0}, {c});
+      return std::nullopt;
+    }
+
     // M1 and M2 (the selected one required, the other if present).
     std::vector<ChainModel> read_models(const std::string &directory, const ChainParameters &p,
                                         const Eigen::Vector3d &tip)
@@ -46,11 +54,9 @@ namespace softchain::chain
         if (!p.measured_joint_law)
           model = model.with_linear_joints();
         if (p.skin_compliance)
-          {
-            model = model.without_skin_compliance();
-            if (*p.skin_compliance > 0.0)
-              model.set_skin_compliance(PiecewiseLinear({0.0}, {*p.skin_compliance}));
-          }
+          model.set_skin_compliance(constant_compliance(*p.skin_compliance));
+        if (p.skin_shear_compliance)
+          model.set_skin_shear_compliance(constant_compliance(*p.skin_shear_compliance));
         if (!p.pressure_link_geometry)
           return model.with_rigid_links();
         if (!p.link_shift)

@@ -17,13 +17,14 @@ namespace softchain::chain
   } // namespace
 
   void CoulombFriction::set(const std::vector<double> &coefficients, const double stiffness,
-                            std::vector<StickAnchor> anchors)
+                            const double shear_compliance, std::vector<StickAnchor> anchors)
   {
     for (const double mu : coefficients)
       if (!(mu >= 0.0) || !std::isfinite(mu))
         throw std::invalid_argument("chain contact: a friction coefficient is negative or not finite");
+    if (!(shear_compliance >= 0.0) || !std::isfinite(shear_compliance))
+      throw std::invalid_argument("chain contact: the sections' shear compliance is negative or not finite");
     coefficients_ = coefficients;
-    stiffness_    = stiffness;
     any_          = std::any_of(coefficients.begin(), coefficients.end(), [](double mu) { return mu > 0.0; });
     anchors_.clear();
     for (const StickAnchor &a : anchors)
@@ -37,6 +38,15 @@ namespace softchain::chain
       }
     std::stable_sort(anchors_.begin(), anchors_.end(),
                      [](const StickAnchor &a, const StickAnchor &b) { return a.link < b.link; });
+    anchor_stiffness_.resize(anchors_.size());
+    for (std::size_t begin = 0, end = 0; begin < anchors_.size(); begin = end)
+      {
+        while (end < anchors_.size() && anchors_[end].link == anchors_[begin].link)
+          ++end;
+        const double m_b = static_cast<double>(end - begin);
+        std::fill(anchor_stiffness_.begin() + begin, anchor_stiffness_.begin() + end,
+                  1.0 / (1.0 / stiffness + m_b * shear_compliance));
+      }
     grips_.clear();
   }
 
@@ -55,16 +65,17 @@ namespace softchain::chain
         Eigen::Vector3d delta = g.position - a.position;
         delta -= a.normal.dot(delta) * a.normal;
         g.slip = delta.norm();
+        const double k_t     = anchor_stiffness_[i];
         const double limit   = coefficient(a.obstacle) * a.normal_force; // mu N
-        const double elastic = limit / stiffness_;                       // delta_s
+        const double elastic = limit / k_t;                              // delta_s
         const Eigen::Vector3d t = g.slip > 0.0 ? Eigen::Vector3d(delta / g.slip) : tangent_of(a.normal);
         g.direction = t;
         g.sliding   = g.slip > elastic;
         if (!g.sliding)
           {
-            g.force = -stiffness_ * delta;
-            g.rows  = {{{t, stiffness_}, {a.normal.cross(t), stiffness_}}};
-            energy += 0.5 * stiffness_ * g.slip * g.slip;
+            g.force = -k_t * delta;
+            g.rows  = {{{t, k_t}, {a.normal.cross(t), k_t}}};
+            energy += 0.5 * k_t * g.slip * g.slip;
           }
         else
           {
@@ -83,7 +94,7 @@ namespace softchain::chain
       if (grips_[i].sliding)
         {
           const StickAnchor &a       = anchors_[i];
-          const double       elastic = coefficient(a.obstacle) * a.normal_force / stiffness_;
+          const double       elastic = coefficient(a.obstacle) * a.normal_force / anchor_stiffness_[i];
           anchors[i].position        = grips_[i].position - elastic * grips_[i].direction;
         }
     return anchors;

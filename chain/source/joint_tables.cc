@@ -37,6 +37,8 @@ namespace softchain::chain
       chain_model.set_link_compliance(LinkCompliance(*link_compliance));
     if (pressure_tables && skin_compliance)
       chain_model.set_skin_compliance(*skin_compliance);
+    if (pressure_tables && skin_shear_compliance)
+      chain_model.set_skin_shear_compliance(*skin_shear_compliance);
     if (pressure_tables && force_law)
       chain_model.set_force_law(force_law->completed_with(chain_model.stiffness()));
     return chain_model;

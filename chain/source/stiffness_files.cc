@@ -466,8 +466,9 @@ namespace softchain::chain
     }
 
     // A compliance in pressure (the links' c(p), LinkCompliance; the
-    // sections' c_s(p), ChainContact's skin): one row per pressure, finite
-    // and not negative; none if the file is missing or has no rows.
+    // sections' c_s(p) and c_t(p), ChainContact's skin and CoulombFriction):
+    // one row per pressure, finite and not negative; none if the file is
+    // missing or has no rows.
     std::optional<PiecewiseLinear> read_compliance(const std::string &path)
     {
       const auto table = optional_table(path, {"pressure", "compliance"});
@@ -535,6 +536,7 @@ namespace softchain::chain
     link_shift_path_          = files.link_shift;
     link_compliance_path_     = files.link_compliance;
     skin_compliance_path_     = files.skin_compliance;
+    skin_shear_compliance_path_ = files.skin_shear_compliance;
     joint_law_path_           = files.joint_law;
   }
 
@@ -596,6 +598,7 @@ namespace softchain::chain
         joints.link_shift      = read_link_shift(link_shift_path_, n);
         joints.link_compliance = read_compliance(link_compliance_path_);
         joints.skin_compliance = read_compliance(skin_compliance_path_);
+        joints.skin_shear_compliance = read_compliance(skin_shear_compliance_path_);
       }
     if (in_pressure && std::filesystem::exists(joint_law_path_) && CsvTable::read(joint_law_path_).n_rows() > 0)
       joints.force_law = read_force_law(joint_law_path_, n);

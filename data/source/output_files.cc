@@ -25,6 +25,7 @@ namespace softchain::data
     link_shift         = stem + "_link_shift.csv";
     link_compliance    = stem + "_link_compliance.csv";
     skin_compliance    = stem + "_skin_compliance.csv";
+    skin_shear_compliance = stem + "_skin_shear_compliance.csv";
   }
 
   std::string contact_forces_file(const std::string &output_directory)

@@ -43,6 +43,7 @@ namespace softchain::reduction
     , samples_(reduce_all(converged_samples, mesh, geometry_, method))
     , stiffness_(samples_, parameters, geometry_.n_joints())
     , skin_compliance_(converged_samples, samples_, rest_, geometry_, mesh, parameters)
+    , skin_shear_compliance_(converged_samples, samples_, rest_, geometry_, mesh, parameters, SkinDirection::shear)
   {}
 
   std::string MethodReduction::label() const

@@ -24,12 +24,21 @@ namespace softchain::reduction
           link = static_cast<int>(i);
       return link;
     }
+
+    // The point of the joints' layer above palm point X (its x and z, the
+    // height of the joint centre of `link`).
+    Eigen::Vector3d layer_point(const JointGeometry &geometry, const int link, const Eigen::Vector3d &X)
+    {
+      return {X.x(), geometry.reference_centre(link).y(), X.z()};
+    }
   } // namespace
 
   SkinComplianceFit::SkinComplianceFit(const std::vector<data::SampleRecord> &records,
                                        const std::vector<SampleReduction> &reduced,
                                        const SampleReduction &rest, const JointGeometry &geometry,
-                                       const data::MeshRecord &mesh, const ReductionParameters &parameters)
+                                       const data::MeshRecord &mesh, const ReductionParameters &parameters,
+                                       const SkinDirection direction)
+    : axis_(direction == SkinDirection::normal ? 1 : 0)
   {
     // The pressure states: the first pressure sample at each pressure, the
     // rest configuration at 0.
@@ -43,7 +52,8 @@ namespace softchain::reduction
     for (std::size_t i = 0; i < records.size(); ++i)
       {
         const data::SampleRecord &s = records[i];
-        if (!has_role(s.actuation.role, parameters.skin_roles) || s.actuation.point_forces.empty())
+        if (!has_role(s.actuation.role, parameters.skin_roles) || s.actuation.point_forces.empty() ||
+            !along_direction(s, reduced[i], geometry))
           continue;
         const auto state = states.find(s.actuation.pressure);
         if (state == states.end())
@@ -58,14 +68,28 @@ namespace softchain::reduction
           }
       }
     for (const auto &[pressure, sum] : sums)
-      if (const auto c = sum.compliance("skin compliance at " + data::CsvTable::cell(pressure) +
+      if (const auto c = sum.compliance(name() + " at " + data::CsvTable::cell(pressure) +
                                           " Pa set to 0: the palm moved against the skin samples' force",
                                         warnings_))
         values_.push_back({pressure, *c, sum.samples});
   }
 
+  bool SkinComplianceFit::along_direction(const data::SampleRecord &s, const SampleReduction &reduced,
+                                          const JointGeometry &geometry) const
+  {
+    double along = 0, magnitude = 0;
+    for (const data::PointForce &f : s.actuation.point_forces)
+      {
+        const Eigen::Vector3d force = data::vector_of(f.force);
+        const int             link  = std::max(link_of(geometry, f.point[0]), 0);
+        along += force.dot(reduced.link_rotation(link).col(axis_));
+        magnitude += force.norm();
+      }
+    return std::abs(along) >= 0.5 * magnitude;
+  }
+
   // (delta, F) of skin sample `s`: the mean give of its points along their
-  // link's palm normal, and the sum of its forces along it (header).
+  // link's palm normal (or axis), and the sum of its forces along it (header).
   std::optional<std::pair<double, double>>
   SkinComplianceFit::measured_give(const data::SampleRecord &s, const SampleReduction &reduced,
                                    const State &state, const JointGeometry &geometry,
@@ -83,10 +107,27 @@ namespace softchain::reduction
                                 "before the first joint; skipped");
             continue;
           }
-        const Eigen::Vector3d d       = reduced.link_rotation(link).col(1);
-        const Eigen::Vector3d carried =
-          reduced.carried_from(*state.reduced, link, body.deformed(*located, *state.x));
-        delta += d.dot(body.deformed(*located, s.x) - carried);
+        const Eigen::Vector3d d = reduced.link_rotation(link).col(axis_);
+        if (axis_ == 1)
+          {
+            const Eigen::Vector3d carried =
+              reduced.carried_from(*state.reduced, link, body.deformed(*located, *state.x));
+            delta += d.dot(body.deformed(*located, s.x) - carried);
+          }
+        else
+          {
+            const auto layer = body.locate(layer_point(geometry, link, data::vector_of(f.point)));
+            if (!layer)
+              {
+                warnings_.push_back("skin sample '" + s.id + "': the layer above a force point lies outside "
+                                    "the body; skipped");
+                continue;
+              }
+            const Eigen::Matrix3d turn = reduced.link_rotation(link) * state.reduced->link_rotation(link).transpose();
+            const Eigen::Vector3d before = body.deformed(*located, *state.x) - body.deformed(*layer, *state.x);
+            const Eigen::Vector3d after  = body.deformed(*located, s.x) - body.deformed(*layer, s.x);
+            delta += d.dot(after - turn * before);
+          }
         F += data::vector_of(f.force).dot(d);
         ++n;
       }

@@ -173,11 +173,13 @@ namespace softchain::reduction
     const LinkComplianceFit compliance(reduction_, parameters_);
     compliance.table().write(files.link_compliance);
     reduction_.skin_compliance().table().write(files.skin_compliance);
+    reduction_.skin_shear_compliance().table().write(files.skin_shear_compliance);
     std::vector<std::string> warnings = shifts.warnings();
     for (const std::string &w : compliance.warnings())
       warnings.push_back(w);
-    for (const std::string &w : reduction_.skin_compliance().warnings())
-      warnings.push_back(w);
+    for (const SkinComplianceFit *skin : {&reduction_.skin_compliance(), &reduction_.skin_shear_compliance()})
+      for (const std::string &w : skin->warnings())
+        warnings.push_back(w);
     return warnings;
   }
 } // namespace softchain::reduction

@@ -96,6 +96,7 @@ namespace softchain::app
                name.find("_link_shift") != std::string::npos ? "the links' shift per in-plane turn, per pressure" :
                name.find("_link_compliance") != std::string::npos ? "the links' compliance per pressure" :
                name.find("_skin_compliance") != std::string::npos ? "the sections' compliance under contact per pressure" :
+               name.find("_skin_shear_compliance") != std::string::npos ? "the sections' shear compliance under friction per pressure" :
                ext == ".csv" ? "joint stiffness table k_psi, k_theta, k_phi" : "reduction output";
       if (dir == "chain")
         return name == "validation.csv" ? "chain vs FEM tip pose per sample and model" :

@@ -67,8 +67,10 @@ namespace
 
   // Anchors at the touching points of `solver`'s last evaluation, shifted
   // along the tangent e1 = n x e_z by `slip` times each one's elastic range
-  // mu N / k_t, with N = the touch's normal force.
-  std::vector<StickAnchor> shifted_anchors(const ChainEquilibrium &solver, double mu, const std::vector<double> &slips)
+  // mu N / k_t, with N = the touch's normal force and k_t = 1 / (1 / k_c +
+  // m_b c_t), m_b the touches on its link.
+  std::vector<StickAnchor> shifted_anchors(const ChainEquilibrium &solver, double mu, const std::vector<double> &slips,
+                                           double c_t = 0.0)
   {
     std::vector<Eigen::Vector3d> x;
     solver.contact().surface_positions(solver.pose(), x);
@@ -79,7 +81,10 @@ namespace
         const auto           &t     = touches[i];
         const double          N     = t.force.norm();
         const Eigen::Vector3d along = t.normal.cross(Eigen::Vector3d::UnitZ()).normalized();
-        const double          slip  = slips[i % slips.size()] * mu * N / solver.contact().stiffness();
+        const auto            m_b   = std::count_if(touches.begin(), touches.end(),
+                                                    [&](const auto &other) { return other.link == t.link; });
+        const double          k_t   = 1.0 / (1.0 / solver.contact().stiffness() + double(m_b) * c_t);
+        const double          slip  = slips[i % slips.size()] * mu * N / k_t;
         anchors.push_back({t.link, t.point, t.obstacle, x[t.point] - slip * along, t.normal, N});
       }
     return anchors;
@@ -131,7 +136,7 @@ TEST_CASE("a joint slides a point along a rough table: Coulomb's closed form wit
     }
 }
 
-TEST_CASE("a point on a rough table sticks where it entered it")
+TEST_CASE("a point on a rough table sticks where it entered it, its section sheared in series with the penalty")
 {
   // mu = 1 holds the point (T / N ~ 0.44 < 1). Along 20 steps it enters
   // the table within the step from t = 0.5 (phi = tau / 2k = -0.4, above
@@ -140,37 +145,74 @@ TEST_CASE("a point on a rough table sticks where it entered it")
   // phi = 0). It sticks
   // at the zero of the gap interpolated from x_s to x_1, a = x_s + g_s /
   // (g_s - g_1) (x_1 - x_s), and the penalty holds it there from then on,
-  // F = -k_c (x - a_x, l sin phi + h).
-  const double        mu = 1.0;
-  const ChainModel          model    = one_joint();
-  const EquilibriumSettings settings = with_penalty();
-  ChainEquilibrium          solver(model, settings);
-  FrictionalLoadPath        path(solver, {20, 30, 1e-6});
-  const Equilibrium  e = path.solve(ChainLoad{1.0, {}, {rough_table(mu)}});
-  REQUIRE(e.converged);
-  // Relative to the joint.
-  const auto point   = [&](double phi) { return Eigen::Vector2d(l * std::cos(phi), l * std::sin(phi)); };
-  const auto force_y = [&](double phi) { return -k_c * (point(phi).y() + h); };
-  const Eigen::Vector2d start = point(-0.4);
-  const double          touch = -std::asin(h / l);
-  const Eigen::Vector2d first =
-    point(bisect([&](double p) { return joint_residual(p, 0.55, 0.0, force_y(p)); }, touch, 0.55 * tau / k));
-  const double before = start.y() + h, after = first.y() + h;
-  const double anchor = start.x() + before / (before - after) * (first.x() - start.x());
-  const auto   force_x = [&](double phi) { return -k_c * (point(phi).x() - anchor); };
-  const double phi = bisect([&](double p) { return joint_residual(p, 1.0, force_x(p), force_y(p)); }, touch,
-                            tau / k);
-  // The settled normal force (1e-6) enters the cone's test only: in stick
-  // the answer is the penalty's, to round-off of the solves (tolerance
-  // 1e-10) amplified by the stiff tangential penalty.
-  CHECK(e.angles[2] == Approx(phi).epsilon(1e-9));
-  REQUIRE(std::abs(force_x(phi)) < mu * force_y(phi)); // inside the cone: it sticks
-  const auto &grips = solver.contact().friction().grips();
-  REQUIRE(grips.size() == 1);
-  CHECK_FALSE(grips[0].sliding);
-  CHECK(grips[0].force.x() == Approx(force_x(phi)).margin(1e-5 * force_y(phi)));
-  // The friction carries a real share: T / N ~ 0.43 (0 without friction).
-  CHECK(force_x(phi) > 0.3 * force_y(phi));
+  // F = (-k_t (x - a_x), -k_c (l sin phi + h)), with the section's shear c_t
+  // in series: k_t = 1 / (1 / k_c + c_t) (one point on its link).
+  const double mu = 1.0;
+  for (const double c_t : {0.0, 2e-4})
+    {
+      INFO("shear compliance " << c_t << " m/N");
+      ChainModel model = one_joint();
+      if (c_t > 0.0)
+        model.set_skin_shear_compliance(PiecewiseLinear({0.0}, {c_t}));
+      const EquilibriumSettings settings = with_penalty();
+      ChainEquilibrium          solver(model, settings);
+      FrictionalLoadPath        path(solver, {20, 30, 1e-6});
+      const Equilibrium         e = path.solve(ChainLoad{1.0, {}, {rough_table(mu)}});
+      REQUIRE(e.converged);
+      // Relative to the joint.
+      const auto point   = [&](double phi) { return Eigen::Vector2d(l * std::cos(phi), l * std::sin(phi)); };
+      const auto force_y = [&](double phi) { return -k_c * (point(phi).y() + h); };
+      const Eigen::Vector2d start = point(-0.4);
+      const double          touch = -std::asin(h / l);
+      const Eigen::Vector2d first =
+        point(bisect([&](double p) { return joint_residual(p, 0.55, 0.0, force_y(p)); }, touch, 0.55 * tau / k));
+      const double before = start.y() + h, after = first.y() + h;
+      const double anchor = start.x() + before / (before - after) * (first.x() - start.x());
+      const double k_t    = 1.0 / (1.0 / k_c + c_t);
+      const auto   force_x = [&](double phi) { return -k_t * (point(phi).x() - anchor); };
+      const double phi = bisect([&](double p) { return joint_residual(p, 1.0, force_x(p), force_y(p)); }, touch,
+                                tau / k);
+      // The settled normal force (1e-6) enters the cone's test only: in stick
+      // the answer is the penalty's, to round-off of the solves (tolerance
+      // 1e-10) amplified by the stiff tangential penalty.
+      CHECK(e.angles[2] == Approx(phi).epsilon(1e-9));
+      REQUIRE(std::abs(force_x(phi)) < mu * force_y(phi)); // inside the cone: it sticks
+      const auto &grips = solver.contact().friction().grips();
+      REQUIRE(grips.size() == 1);
+      CHECK_FALSE(grips[0].sliding);
+      CHECK(solver.contact().friction().stiffness(0) == Approx(k_t).epsilon(1e-12));
+      CHECK(grips[0].force.x() == Approx(force_x(phi)).margin(1e-5 * force_y(phi)));
+      // The friction carries a share: T / N ~ 0.43 rigid (0 without
+      // friction), 0.02 where the section shears: at c_t = 2e-4 m/N the
+      // point slips 21 times farther for the same force.
+      CHECK(force_x(phi) > (c_t > 0.0 ? 0.01 : 0.3) * force_y(phi));
+    }
+}
+
+TEST_CASE("the points sticking on one link share its section's shear: k_t = 1 / (1 / k_c + m_b c_t)")
+{
+  CoulombFriction friction;
+  const double    c_t = 1e-3;
+  // Two anchors on link 2, one on link 0, one with no normal force (it does
+  // not act, and does not count), listed out of link order.
+  const std::vector<StickAnchor> anchors = {{2, 5, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0},
+                                            {0, 1, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0},
+                                            {2, 6, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 0.0},
+                                            {2, 7, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 2.0}};
+  friction.set({0.5}, k_c, c_t, anchors);
+  REQUIRE(friction.anchors().size() == 3);
+  CHECK(friction.anchors()[0].link == 0);
+  CHECK(friction.stiffness(0) == Approx(1.0 / (1.0 / k_c + c_t)).epsilon(1e-14));
+  for (const std::size_t i : {1, 2})
+    {
+      CHECK(friction.anchors()[i].link == 2);
+      CHECK(friction.stiffness(i) == Approx(1.0 / (1.0 / k_c + 2 * c_t)).epsilon(1e-14));
+    }
+  // Two points that stick alike carry the link's series stiffness together.
+  CHECK(2 * friction.stiffness(1) == Approx(1.0 / (c_t + 1.0 / (2 * k_c))).epsilon(1e-14));
+  friction.set({0.5}, k_c, 0.0, anchors);
+  CHECK(friction.stiffness(1) == Approx(k_c).epsilon(1e-14));
+  CHECK_THROWS_WITH(friction.set({0.5}, k_c, -1e-3, anchors), Catch::Contains("shear compliance is negative"));
 }
 
 TEST_CASE("friction: residual = energy gradient, tangent = central differences, in stick and slip")
@@ -178,14 +220,17 @@ TEST_CASE("friction: residual = energy gradient, tangent = central differences, 
   const int    n  = 4;
   const double mu = 0.5;
   for (const double skin : {0.0, 0.01})
+    for (const double shear : {0.0, 0.005})
     for (auto obstacle : {plane(-0.012), cylinder({0.05, -0.016, 0.0}, 0.008)})
       {
-        INFO("skin compliance " << skin << " m/N, " << obstacle.shape);
+        INFO("skin compliance " << skin << " m/N, shear compliance " << shear << " m/N, " << obstacle.shape);
         obstacle.friction = mu;
         ChainModel model  = uniform_finger(n, 0.02, {0.3, 0.2, 0.1}, {0.0, 0.0, -2e-6});
         model.set_collision_surface(palm_points(n, 0.02, 3, 0.004, 0.006, skin > 0.0));
         if (skin > 0.0)
           model.set_skin_compliance(PiecewiseLinear({0.0}, {skin}));
+        if (shear > 0.0)
+          model.set_skin_shear_compliance(PiecewiseLinear({0.0}, {shear}));
         // A soft penalty (penetrations ~1 mm, elastic slips mu N / k_t ~
         // 0.5 mm), so that no point lies within the differences' reach of a
         // kink (g = 0 or |delta| = delta_s).
@@ -198,7 +243,7 @@ TEST_CASE("friction: residual = energy gradient, tangent = central differences, 
         REQUIRE(base.converged);
         // Anchors half within their elastic range (stick), half beyond (slip).
         ChainLoad load{1e4, {}, {obstacle}};
-        load.anchors = shifted_anchors(solver, mu, {0.3, 3.0});
+        load.anchors = shifted_anchors(solver, mu, {0.3, 3.0}, shear);
         REQUIRE(load.anchors.size() >= 2);
         Eigen::VectorXd q = base.angles;
         for (int i = 0; i < 3 * n; ++i)
@@ -210,7 +255,9 @@ TEST_CASE("friction: residual = energy gradient, tangent = central differences, 
         int sliding = 0;
         for (const auto &g : grips)
           {
-            const double elastic = mu * load.anchors[&g - grips.data()].normal_force / 100.0;
+            const auto   i       = static_cast<std::size_t>(&g - grips.data());
+            const double elastic = mu * solver.contact().friction().anchors()[i].normal_force /
+                                   solver.contact().friction().stiffness(i);
             REQUIRE(std::abs(g.slip - elastic) > 0.05 * elastic); // clear of the cone's kink
             sliding += g.sliding;
           }

@@ -212,6 +212,34 @@ TEST_CASE("'palm F' leaves a skin sample to the sweep: one force per point along
                     Catch::Contains("'palm' at 20000 Pa") && Catch::Contains("'Pressure sweep'"));
 }
 
+TEST_CASE("'shear F' leaves a skin sample to the sweep: one force per point along the palm towards the tip")
+{
+  const SampleSet set = read_samples("shear_keyword", "  set Pressure sweep = 2e4\n"
+                                                      "  set Skin samples = 2e4 : 0.05,0,0 : palm 0.1 ; "
+                                                      "2e4 : 0.05,0,0 : shear 0.1 : 0.05,0,0.004 : shear 0.2\n");
+  REQUIRE(set.measured_requests.size() == 2);
+  const auto &palm = set.measured_requests[0], &shear = set.measured_requests[1];
+  CHECK(palm.keyword() == "palm");
+  CHECK(shear.keyword() == "shear");
+  CHECK(shear.role() == "skin"); // the reduction tells them apart by the forces' directions
+  CHECK(shear.label == "skin 2");
+  CHECK(shear.forces == std::vector<double>{0.1, 0.2});
+  // The same point pressed and sheared: two samples, two ids.
+  const Sample pressed = SampleSet::measured_sample(palm, {{{0, 1, 0}}}, "h");
+  const Sample sheared = SampleSet::measured_sample(shear, {{{1, 0, 0}}, {{0.8, 0.6, 0}}}, "h");
+  CHECK(sheared.actuation.point_forces[0].force == data::Point3{{0.1, 0, 0}});
+  CHECK(sheared.actuation.point_forces[1].force[1] == Approx(0.12));
+  CHECK(sheared.id != pressed.id);
+
+  // One keyword per sample: its first force decides, the others must follow.
+  CHECK_THROWS_WITH(read_samples("shear_mixed", "  set Pressure sweep = 2e4\n"
+                                                "  set Skin samples = 2e4 : 0.05,0,0 : shear 0.1 : 0.05,0,0.004 : palm 0.1\n"),
+                    Catch::Contains("sample 'skin 1'") && Catch::Contains("'palm 0.1' is not 'shear F'"));
+  CHECK_THROWS_WITH(read_samples("shear_bad_force", "  set Pressure sweep = 2e4\n"
+                                                    "  set Skin samples = 2e4 : 0.05,0,0 : shear 0\n"),
+                    Catch::Contains("'shear 0' is not 'shear F'"));
+}
+
 TEST_CASE("contact samples carry their obstacle: frictionless ones form one chain and with friction one each")
 {
   const std::string contact = "  subsection table\n    set Shape = plane\n    set Position = 0, -0.005, 0\n  end\n"

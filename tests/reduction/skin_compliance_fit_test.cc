@@ -4,7 +4,8 @@
 // / (the force along the palm's normal): the squeeze turns no slab, so the
 // chain's links carry the palm points rigidly and all the squeeze is skin.
 // A palm that moves against its force gives c_s = 0, a skin sample without
-// its pressure state is skipped; both with a warning.
+// its pressure state is skipped; both with a warning. The shear fit (c_t)
+// against a section sheared along its palm, beside a squeezed one.
 #include <softchain/reduction/method_reduction.h>
 #include <softchain/reduction/skin_compliance_fit.h>
 
@@ -49,15 +50,54 @@ namespace
     return s;
   }
 
-  SkinComplianceFit fit(const data::MeshRecord &mesh, const std::vector<data::SampleRecord> &samples)
+  // The box finger whose palm (y = -2 mm) slides by `slide` along x and
+  // whose top (y = 10 mm) by the same, every other node staying: the
+  // section's affine fit sees no shear (the two faces lie symmetric about
+  // its centre y = 4 mm), so M2's links do not turn, and the palm slides by
+  // `slide` from the layer (y = 0) above it. Then turned by `turn` about
+  // joint 1's centre and pulled by `force` along the turned x axis at the
+  // three palm points of `squeezed`.
+  data::SampleRecord sheared(const data::MeshRecord &mesh, double slide, double turn, double force)
+  {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Vector3d J(5 * mm, 0, 0);
+    data::SampleRecord    s;
+    s.id             = "shear" + std::to_string(slide);
+    s.actuation.role = "skin";
+    const auto deformed = [&](const data::Point3 &X) -> data::Point3 {
+      const bool            face = std::abs(X[1] + 2 * mm) < 1e-9 || std::abs(X[1] - 10 * mm) < 1e-9;
+      const Eigen::Vector3d y    = J + R * (Eigen::Vector3d(X[0] + (face ? slide : 0.0), X[1], X[2]) - J);
+      return {{y.x(), y.y(), y.z()}};
+    };
+    for (const auto &X : mesh.X)
+      s.x.push_back(deformed(X));
+    const Eigen::Vector3d f = force * R.col(0);
+    for (const double z : {-3 * mm, 0.0, 3 * mm})
+      {
+        s.actuation.point_forces.push_back({{50 * mm, -2 * mm, z}, {f.x(), f.y(), f.z()}});
+        s.force_points_deformed.push_back(deformed({{50 * mm, -2 * mm, z}}));
+      }
+    return s;
+  }
+
+  // The normal and shear fits of the box finger's reduction of `samples`.
+  std::pair<SkinComplianceFit, SkinComplianceFit> fits(const data::MeshRecord &mesh,
+                                                       const std::vector<data::SampleRecord> &samples)
   {
     const ReductionParameters p = testing::layer_finger_parameters();
     const double              a = p.joint_spacing;
     const JointLayout         layout(mesh.X, a, 0, "box");
-    const auto                body = std::make_shared<const BodySamples>(mesh, a / 8, "box");
+    // A lattice of a / 10 (1 mm) lies symmetric about the section's centre
+    // (12 mm high), so that the slides of the palm and the top turn no link.
+    const auto                body = std::make_shared<const BodySamples>(mesh, a / 10, "box");
     const MethodReduction     r(RotationMethod::affine_fit, 0.5, p, JointGeometry(layout, body, 0.0, a / 2), mesh,
                                 samples);
-    return r.skin_compliance();
+    return {r.skin_compliance(), r.skin_shear_compliance()};
+  }
+
+  SkinComplianceFit fit(const data::MeshRecord &mesh, const std::vector<data::SampleRecord> &samples)
+  {
+    return fits(mesh, samples).first;
   }
 } // namespace
 
@@ -97,4 +137,30 @@ TEST_CASE("a palm that moves against its force gives c_s = 0, no pressure state 
     REQUIRE(c.warnings().size() == 1);
     CHECK_THAT(c.warnings()[0], Catch::Contains("skin sample 'skin0.020000' at 20000 Pa skipped"));
   }
+}
+
+TEST_CASE("a section sheared along its palm: c_t is the palm's slide from the layer over the force along it")
+{
+  const data::MeshRecord mesh  = testing::layer_finger_mesh(false);
+  const double           slide = 0.05 * mm, force = 0.1;
+  // Exact up to round-off: the palm points and the layer above them are
+  // nodes or lie on faces whose nodes all move alike.
+  for (const double turn : {0.0, 0.4})
+    {
+      const auto [normal, shear] = fits(mesh, {sheared(mesh, slide, turn, force), squeezed(mesh, 0.02, turn, force, 0)});
+      CHECK(shear.warnings().empty());
+      REQUIRE(shear.values().size() == 1);
+      CHECK(shear.values()[0].samples == 1); // the squeeze presses, and is the normal fit's
+      CHECK(shear.values()[0].compliance == Approx(slide / (3 * force)).epsilon(1e-9));
+      // The normal fit takes the squeeze alone: its value as without the shear.
+      REQUIRE(normal.values().size() == 1);
+      CHECK(normal.values()[0].samples == 1);
+      CHECK(normal.values()[0].compliance == Approx(0.02 * 12 * mm / (3 * force)).epsilon(1e-9));
+    }
+  // A palm that slides against its pull: c_t = 0, with the shear fit's warning.
+  const SkinComplianceFit against = fits(mesh, {sheared(mesh, -slide, 0.0, force)}).second;
+  REQUIRE(against.values().size() == 1);
+  CHECK(against.values()[0].compliance == 0.0);
+  REQUIRE(against.warnings().size() == 1);
+  CHECK_THAT(against.warnings()[0], Catch::Contains("skin shear compliance at 0 Pa set to 0"));
 }

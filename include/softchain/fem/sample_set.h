@@ -91,14 +91,16 @@ namespace softchain::fem
     // A sample whose forces' directions are measured on the pressure-only
     // state at its pressure, known once that state is (SampleSweep adds the
     // sample then): a chord sample's 'chord F' (F newtons along the base-tip
-    // chord, role chord), or a skin sample's 'palm F' at each of its points
-    // (F newtons along the palm's inward normal there, role skin).
+    // chord, role chord), or a skin sample's 'palm F' or 'shear F' at each of
+    // its points (F newtons along the palm's inward normal there, or along
+    // the palm towards the tip, role skin).
     struct MeasuredForceRequest
     {
       enum class Direction
       {
         chord,
-        palm_normal
+        palm_normal,
+        palm_shear
       };
       double                    pressure = 0;
       std::vector<data::Point3> points;
@@ -107,8 +109,11 @@ namespace softchain::fem
       std::string               label; // "chord 2", "skin 1"
       std::string               where; // file, parameter and sample, for messages
       std::string role() const { return direction == Direction::chord ? "chord" : "skin"; }
-      // The force's keyword in the .prm: "chord" or "palm".
-      std::string keyword() const { return direction == Direction::chord ? "chord" : "palm"; }
+      // The force's keyword in the .prm: "chord", "palm" or "shear".
+      std::string keyword() const
+      {
+        return direction == Direction::chord ? "chord" : direction == Direction::palm_normal ? "palm" : "shear";
+      }
     };
 
     // The pressure-controlled sample at `pressure` without forces, if listed.

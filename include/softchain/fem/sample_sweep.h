@@ -25,6 +25,8 @@
 #include <softchain/fem/sample_set.h>
 #include <softchain/fem/tip_motion_protocol.h>
 
+#include <Eigen/Core>
+
 #include <map>
 #include <optional>
 #include <ostream>
@@ -90,6 +92,8 @@ namespace softchain::fem
                                MeasuredChains &chains);
     data::Point3 chord_direction(const data::SampleRecord *record);
     data::Point3 palm_normal(const data::SampleRecord *record, const data::Point3 &X);
+    data::Point3 palm_tangent(const data::SampleRecord *record, const data::Point3 &X);
+    Eigen::Matrix3d palm_deformation(const data::SampleRecord &record, const data::Point3 &X);
     std::string                         run_protocol(Records &known, Summary &summary);
     std::pair<std::size_t, std::string> inflate_to_tip_angle(Records &known, Summary &summary);
     // The database's mesh (and the tip's fit to it), read once; rank 0.

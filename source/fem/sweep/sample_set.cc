@@ -41,8 +41,10 @@ namespace softchain::fem
       section.declare("Skin samples", "",
                       "p : point : palm F [: point : palm F ...] ; ... (role skin): forces of F "
                       "newtons pressing each point (x,y,z on the palm) along the palm's inward "
-                      "normal of the pressure-only state at p, found by the sweep; the reduction "
-                      "fits the sections' compliance to them (reduction/README.md)");
+                      "normal of the pressure-only state at p, found by the sweep; with 'shear F' "
+                      "instead, along the palm towards the tip (one keyword per sample); the "
+                      "reduction fits the sections' compliance under contact and friction to "
+                      "them (reduction/README.md)");
       section.declare("Validation samples", "",
                       "p : point : force [: point : force] ; ...; a point is x,y,z, tip (the "
                       "force point) or tip+arm, tip-arm (the torsion couple's points)");
@@ -205,7 +207,7 @@ namespace softchain::fem
       return samples;
     }
 
-    // "chord F" or "palm F" (`keyword` F): F, else nothing.
+    // "chord F", "palm F" or "shear F" (`keyword` F): F, else nothing.
     std::optional<double> measured_force(const std::string &text, const std::string &keyword,
                                          const std::string &where)
     {
@@ -221,7 +223,8 @@ namespace softchain::fem
     }
 
     // One entry "p : point : chord F" of Chord samples or "p : point : palm F
-    // [: point : palm F ...]" of Skin samples: its request, checked.
+    // [: point : palm F ...]" of Skin samples ('shear F' instead of 'palm F'
+    // throughout: along the palm): its request, checked.
     SampleSet::MeasuredForceRequest measured_request(const std::vector<std::string> &fields,
                                                      const SampleSet::MeasuredForceRequest::Direction direction,
                                                      const data::Point3 &tip, const double arm,
@@ -303,8 +306,11 @@ namespace softchain::fem
                 if (chord && role != "chord")
                   throw data::InputError(where + ": 'chord F' is a force of Chord samples only");
                 if (role == "skin")
-                  measured_requests.push_back(
-                    measured_request(fields, Direction::palm_normal, at, arm, name, where));
+                  measured_requests.push_back(measured_request(
+                    fields,
+                    fields.size() > 2 && measured_force(fields[2], "shear", where) ? Direction::palm_shear
+                                                                                 : Direction::palm_normal,
+                    at, arm, name, where));
                 else if (chord)
                   measured_requests.push_back(measured_request(fields, Direction::chord, at, arm, name, where));
                 else

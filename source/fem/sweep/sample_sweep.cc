@@ -283,7 +283,8 @@ namespace softchain::fem
   // The samples whose forces' directions the pressure-only state gives
   // (SampleSet::MeasuredForceRequest): 'chord F' along the chord from the
   // base face's centroid to the tip's position (chord_direction), 'palm F'
-  // along the palm's inward normal at the force's point (palm_normal), in the
+  // along the palm's inward normal at the force's point (palm_normal),
+  // 'shear F' along the palm towards the tip there (palm_tangent), in the
   // converged pressure sample at its pressure, or in the finger at rest at
   // p = 0. The samples at one pressure and points form a chain by increasing
   // force, from the pressure sample (whose state they share: only the forces
@@ -307,7 +308,10 @@ namespace softchain::fem
         if (world_rank() == 0)
           {
             std::cout << request.label << ": along the "
-                      << (request.role() == "chord" ? "base-tip chord" : "palm's inward normal") << " at "
+                      << (request.role() == "chord"        ? "base-tip chord"
+                          : request.keyword() == "palm" ? "palm's inward normal"
+                                                        : "palm towards the tip")
+                      << " at "
                       << request.pressure << " Pa:";
             for (std::size_t k = 0; k < directions->size(); ++k)
               std::cout << (k > 0 ? "," : "") << ' ' << request.forces[k] << " N (" << (*directions)[k][0]
@@ -336,9 +340,10 @@ namespace softchain::fem
         values[0]                        = 1.0;
         for (std::size_t k = 0; k < request.points.size(); ++k)
           {
-            const data::Point3 d = request.direction == SampleSet::MeasuredForceRequest::Direction::chord
-                                     ? chord_direction(record)
-                                     : palm_normal(record, request.points[k]);
+            using Direction      = SampleSet::MeasuredForceRequest::Direction;
+            const data::Point3 d = request.direction == Direction::chord       ? chord_direction(record)
+                                   : request.direction == Direction::palm_normal ? palm_normal(record, request.points[k])
+                                                                                 : palm_tangent(record, request.points[k]);
             std::copy(d.begin(), d.end(), values.begin() + 1 + 3 * k);
           }
       }
@@ -359,7 +364,7 @@ namespace softchain::fem
                                           MeasuredChains &chains)
   {
     std::ostringstream key;
-    key << request.role() << ' ' << request.pressure;
+    key << request.keyword() << ' ' << request.pressure;
     for (const auto &point : request.points)
       key << ' ' << point[0] << ' ' << point[1] << ' ' << point[2];
     if (!chains.count(key.str()))
@@ -395,13 +400,31 @@ namespace softchain::fem
 
   // The palm's inward normal (+y at rest, docs/conventions.md) at reference
   // point X deformed as in `record` (none: the finger at rest): the normal
-  // F^-T e_y of the affine map F that fits the deformation of the mesh nodes
-  // nearest to X (least squares over 20 of them, enough to span 3D on a
-  // surface of hexahedra or tetrahedra).
+  // F^-T e_y of the deformation gradient F there (palm_deformation).
   data::Point3 SampleSweep::palm_normal(const data::SampleRecord *record, const data::Point3 &X)
   {
     if (!record)
       return {{0.0, 1.0, 0.0}};
+    const Eigen::Vector3d normal = palm_deformation(*record, X).inverse().transpose().col(1).normalized();
+    return {{normal[0], normal[1], normal[2]}};
+  }
+
+  // The palm's tangent towards the tip (+x at rest) at reference point X
+  // deformed as in `record` (none: the finger at rest): the image F e_x of
+  // the finger's axis, which lies in the deformed palm.
+  data::Point3 SampleSweep::palm_tangent(const data::SampleRecord *record, const data::Point3 &X)
+  {
+    if (!record)
+      return {{1.0, 0.0, 0.0}};
+    const Eigen::Vector3d tangent = palm_deformation(*record, X).col(0).normalized();
+    return {{tangent[0], tangent[1], tangent[2]}};
+  }
+
+  // The affine map F that fits the deformation of the mesh nodes nearest to
+  // reference point X in `record` (least squares over 20 of them, enough to
+  // span 3D on a surface of hexahedra or tetrahedra).
+  Eigen::Matrix3d SampleSweep::palm_deformation(const data::SampleRecord &record, const data::Point3 &X)
+  {
     const data::MeshRecord        &mesh = database_mesh();
     const Eigen::Vector3d          point(X[0], X[1], X[2]);
     std::vector<std::pair<double, std::size_t>> nearest;
@@ -414,18 +437,16 @@ namespace softchain::fem
     for (std::size_t k = 0; k < n; ++k)
       {
         mean_X += at(mesh.X[nearest[k].second]) / double(n);
-        mean_x += at(record->x[nearest[k].second]) / double(n);
+        mean_x += at(record.x[nearest[k].second]) / double(n);
       }
     Eigen::Matrix3d XX = Eigen::Matrix3d::Zero(), xX = Eigen::Matrix3d::Zero();
     for (std::size_t k = 0; k < n; ++k)
       {
         const Eigen::Vector3d dX = at(mesh.X[nearest[k].second]) - mean_X;
         XX += dX * dX.transpose();
-        xX += (at(record->x[nearest[k].second]) - mean_x) * dX.transpose();
+        xX += (at(record.x[nearest[k].second]) - mean_x) * dX.transpose();
       }
-    const Eigen::Matrix3d F      = xX * XX.inverse();
-    const Eigen::Vector3d normal = F.inverse().transpose().col(1).normalized();
-    return {{normal[0], normal[1], normal[2]}};
+    return xX * XX.inverse();
   }
 
   // The paper's validation protocol (TipMotionProtocol): the inflation to the

@@ -78,11 +78,12 @@ namespace softchain::chain
     // with the stick anchors of its friction. Throws std::invalid_argument
     // if there are obstacles but no surface, a friction coefficient is
     // negative, or the stiffness is not positive. `skin_compliance` [m/N]
-    // per link (empty or 0: a rigid section).
+    // per link (empty or 0: a rigid section); `shear_compliance` [m/N] the
+    // sections' give along the palm under friction (CoulombFriction).
     void set(const CollisionSurface *surface, double pressure,
              const std::vector<data::ObstacleRecord> &obstacles, double stiffness,
-             const std::vector<double> &skin_compliance = {}, double path = 1.0,
-             std::vector<StickAnchor> anchors = {});
+             const std::vector<double> &skin_compliance = {}, double shear_compliance = 0.0,
+             double path = 1.0, std::vector<StickAnchor> anchors = {});
     bool empty() const { return obstacles_.empty(); }
 
     // Finds the touching points at `pose` (sorted by link) and the friction

@@ -60,12 +60,16 @@ namespace softchain::chain
     Eigen::Vector3d          link_deflection(const ChainLoad &load) const;
     bool                     has_link_geometry() const { return link_geometry_.has_value(); }
     // c_s(p), how far a link's section gives along its palm normal per newton
-    // of contact force (ChainContact's skin), m/N; 0 without a table.
-    void                     set_skin_compliance(PiecewiseLinear compliance);
+    // of contact force (ChainContact's skin), m/N; 0 without a table (none:
+    // rigid sections).
+    void                     set_skin_compliance(std::optional<PiecewiseLinear> compliance);
     double                   skin_compliance(double pressure) const;
     bool                     has_skin_compliance() const { return skin_compliance_.has_value(); }
-    // The same model with rigid sections (no skin compliance).
-    ChainModel               without_skin_compliance() const;
+    // c_t(p), how far a link's section gives along the palm per newton of
+    // friction (CoulombFriction), m/N; 0 without a table (none: sections
+    // rigid in shear).
+    void                     set_skin_shear_compliance(std::optional<PiecewiseLinear> compliance);
+    double                   skin_shear_compliance(double pressure) const;
     void                     set_collision_surface(CollisionSurface surface);
     // The collision surface, or nullptr (the model cannot touch).
     const CollisionSurface  *collision_surface() const;
@@ -91,6 +95,7 @@ namespace softchain::chain
     std::optional<LinkShiftPerTurn> link_shift_;
     std::optional<LinkCompliance> link_compliance_;
     std::optional<PiecewiseLinear> skin_compliance_;
+    std::optional<PiecewiseLinear> skin_shear_compliance_;
     std::optional<JointForceLaw>  force_law_;
     std::optional<CollisionSurface> collision_surface_;
   };

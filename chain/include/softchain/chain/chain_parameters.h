@@ -38,6 +38,9 @@ namespace softchain::chain
     // the reduction's table; a value: that compliance at every pressure, m/N
     // (0: rigid sections).
     std::optional<double>    skin_compliance;
+    // The sections' give along the palm under friction
+    // (ChainModel::skin_shear_compliance), the same way.
+    std::optional<double>    skin_shear_compliance;
     bool                     measured_joint_law  = true; // joints follow the measured curves (JointForceLaw)
     bool                     rigid_where_missing = true; // NaN or k <= 0: rigid joint (or an error)
     std::vector<std::string> validation_roles    = {"validation", "pressure"};

@@ -25,8 +25,15 @@
 // is Coulomb's law with the current N_k. x_k is the point on its link's
 // rigid section: a section that gives (ChainContact's skin) moves it along
 // the palm's normal, nearly the obstacle's, which the slip does not see.
-// k_t is the normal penalty k_c: a sticking point slips elastically by
-// |f_t| / k_c, 10 um per newton.
+// k_t is the normal penalty k_c, in series with the section's shear: a
+// section sheared by its sticking points gives along the palm by c_t(p)
+// times their force (SkinComplianceFit's c_t; the silicone between the palm
+// and the fabric layer shears), so that m_b points of link b sticking alike
+// share its stiffness 1 / (c_t + 1 / (m_b k_c)), each
+//     k_t = 1 / (1 / k_c + m_b c_t),
+// with m_b the link's anchors in this solve (exact when they slip alike;
+// where some of them slide, the others keep their share). Without c_t a
+// sticking point slips elastically by |f_t| / k_c, 10 um per newton.
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/kinematic_chain.h>
 
@@ -54,14 +61,17 @@ namespace softchain::chain
       std::array<std::pair<Eigen::Vector3d, double>, 2> rows;
     };
 
-    // `coefficients`: mu per obstacle (>= 0); `stiffness`: k_t [N/m];
-    // `anchors`: those of obstacles with mu > 0 and N > 0 act (sorted by
-    // link here). Throws std::invalid_argument on a negative or non-finite
-    // coefficient, or an anchor naming no obstacle.
-    void set(const std::vector<double> &coefficients, double stiffness, std::vector<StickAnchor> anchors);
+    // `coefficients`: mu per obstacle (>= 0); `stiffness`: k_c [N/m];
+    // `shear_compliance`: c_t [m/N] (0: rigid sections); `anchors`: those of
+    // obstacles with mu > 0 and N > 0 act (sorted by link here). Throws
+    // std::invalid_argument on a negative or non-finite coefficient or
+    // compliance, or an anchor naming no obstacle.
+    void set(const std::vector<double> &coefficients, double stiffness, double shear_compliance,
+             std::vector<StickAnchor> anchors);
     bool any() const { return any_; } // some obstacle has friction
     double coefficient(int obstacle) const { return coefficients_[obstacle]; }
-    double stiffness() const { return stiffness_; }
+    // k_t of anchor i (in anchors()' order).
+    double stiffness(std::size_t anchor) const { return anchor_stiffness_[anchor]; }
     const std::vector<StickAnchor> &anchors() const { return anchors_; }
 
     // The grips at `pose`, point k of link b at c_b + R_b offsets[k];
@@ -76,9 +86,9 @@ namespace softchain::chain
 
   private:
     std::vector<double>      coefficients_;
-    double                   stiffness_ = 0.0;
-    bool                     any_       = false;
+    bool                     any_ = false;
     std::vector<StickAnchor> anchors_;
+    std::vector<double>      anchor_stiffness_; // k_t per anchor, N/m
     std::vector<Grip>        grips_;
   };
 } // namespace softchain::chain

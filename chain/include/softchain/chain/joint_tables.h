@@ -34,6 +34,7 @@ namespace softchain::chain
     std::optional<LinkShiftPerTurn>             link_shift;      // g_i(p), m/rad; none: links do not shift as joints turn
     std::optional<PiecewiseLinear>              link_compliance; // c(p), m/N; none: links rigid under forces
     std::optional<PiecewiseLinear>              skin_compliance; // c_s(p), m/N; none: rigid sections
+    std::optional<PiecewiseLinear>              skin_shear_compliance; // c_t(p), m/N; none: sections rigid in shear
     std::optional<JointForceLaw>                force_law;       // none: linear springs about the pressure state
 
     // The chain to the tip point `tip`; J_p(p), the link geometry and the

@@ -25,6 +25,9 @@
 //   <label>_skin_compliance.csv   pressure,compliance,samples (ChainContact's skin,
 //                                 c_s in m/N; optional, without it or without
 //                                 rows the sections are rigid under contact)
+//   <label>_skin_shear_compliance.csv  the same columns (CoulombFriction's c_t in
+//                                 m/N; optional, without it or without rows the
+//                                 sections are rigid under friction)
 // Joints are numbered 1..n (docs/conventions.md, "Joints") and listed in that order in the
 // stiffness file. Bad content (missing column, missing or misnumbered joint,
 // NaN, zero or negative stiffness, NaN J_p) is an InputError naming the file
@@ -90,6 +93,7 @@ namespace softchain::chain
     std::string link_shift_path_;
     std::string link_compliance_path_;
     std::string skin_compliance_path_;
+    std::string skin_shear_compliance_path_;
     std::string joint_law_path_;
   };
 } // namespace softchain::chain

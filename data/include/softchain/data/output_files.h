@@ -46,6 +46,7 @@ namespace softchain::data
     std::string link_shift;         // <label>_link_shift.csv: the links' shift per in-plane turn
     std::string link_compliance;    // <label>_link_compliance.csv
     std::string skin_compliance;    // <label>_skin_compliance.csv
+    std::string skin_shear_compliance; // <label>_skin_shear_compliance.csv
   };
 
   // <output>/contact/contact_forces.csv

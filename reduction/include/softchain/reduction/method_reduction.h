@@ -30,6 +30,7 @@ namespace softchain::reduction
     const std::vector<SampleReduction> &samples() const { return samples_; }
     const StiffnessExtraction          &stiffness() const { return stiffness_; }
     const SkinComplianceFit            &skin_compliance() const { return skin_compliance_; }
+    const SkinComplianceFit            &skin_shear_compliance() const { return skin_shear_compliance_; }
     // The pressure state of each pressure: the first sample of `pressure_roles`
     // without point forces at it, the rest configuration at 0.
     std::map<double, const SampleReduction *> pressure_states(const std::vector<std::string> &pressure_roles) const;
@@ -48,6 +49,7 @@ namespace softchain::reduction
     SampleReduction              rest_;
     std::vector<SampleReduction> samples_;
     StiffnessExtraction          stiffness_;
-    SkinComplianceFit            skin_compliance_;
+    SkinComplianceFit            skin_compliance_;       // c_s(p), along the palm's normal
+    SkinComplianceFit            skin_shear_compliance_; // c_t(p), along the palm
   };
 } // namespace softchain::reduction

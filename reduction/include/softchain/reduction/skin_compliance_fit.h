@@ -22,6 +22,16 @@
 // (a palm does not give against the force; a negative value becomes 0 with a
 // warning). Samples of `Skin roles`, pressure states of `Pressure roles`
 // (the rest configuration at p = 0), as LinkComplianceFit.
+//
+// SkinDirection::shear fits the same way along the link's axis e_b = R_b e_x
+// instead of d_b: c_t(p), how far the palm slides towards the tip, relative
+// to its link, per newton of force along the palm ('shear F' skin samples).
+// A section sheared by a sticking contact gives like that (the silicone
+// between the palm and the fabric layer shears), and the chain puts c_t in
+// series with each sticking point's tangential penalty (CoulombFriction).
+// Each fit takes the skin samples whose forces lie mostly along its own
+// direction (|F| at least half the forces' sum of magnitudes); the others
+// are the other fit's.
 #include <softchain/data/actuation_database.h>
 #include <softchain/data/csv_table.h>
 #include <softchain/reduction/body_samples.h>
@@ -36,6 +46,13 @@
 
 namespace softchain::reduction
 {
+  // Along which of a link's axes a fit measures the palm's give.
+  enum class SkinDirection
+  {
+    normal, // the palm's inward normal R_b e_y: c_s
+    shear   // the finger's axis R_b e_x, along the palm: c_t
+  };
+
   struct SkinComplianceAtPressure
   {
     double pressure;   // Pa
@@ -51,7 +68,7 @@ namespace softchain::reduction
     SkinComplianceFit(const std::vector<data::SampleRecord> &records,
                       const std::vector<SampleReduction> &reduced, const SampleReduction &rest,
                       const JointGeometry &geometry, const data::MeshRecord &mesh,
-                      const ReductionParameters &parameters);
+                      const ReductionParameters &parameters, SkinDirection direction = SkinDirection::normal);
 
     const std::vector<SkinComplianceAtPressure> &values() const { return values_; }
     // pressure,compliance,samples, by increasing pressure.
@@ -70,6 +87,12 @@ namespace softchain::reduction
                                                            const SampleReduction &reduced, const State &state,
                                                            const JointGeometry &geometry,
                                                            const BodySamples &body);
+    // Whether sample `s`'s forces lie mostly along this fit's direction.
+    bool along_direction(const data::SampleRecord &s, const SampleReduction &reduced,
+                         const JointGeometry &geometry) const;
+    std::string name() const { return axis_ == 1 ? "skin compliance" : "skin shear compliance"; }
+
+    int                                   axis_; // of the link's frame: 1 normal, 0 shear
 
     std::vector<SkinComplianceAtPressure> values_;
     std::vector<std::string>              warnings_;
