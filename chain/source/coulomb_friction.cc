@@ -43,9 +43,11 @@ namespace softchain::chain
       {
         while (end < anchors_.size() && anchors_[end].link == anchors_[begin].link)
           ++end;
-        const double m_b = static_cast<double>(end - begin);
-        std::fill(anchor_stiffness_.begin() + begin, anchor_stiffness_.begin() + end,
-                  1.0 / (1.0 / stiffness + m_b * shear_compliance));
+        double N_b = 0.0;
+        for (std::size_t i = begin; i < end; ++i)
+          N_b += anchors_[i].normal_force;
+        for (std::size_t i = begin; i < end; ++i)
+          anchor_stiffness_[i] = 1.0 / (1.0 / stiffness + shear_compliance * N_b / anchors_[i].normal_force);
       }
     grips_.clear();
   }

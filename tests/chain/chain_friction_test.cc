@@ -68,7 +68,7 @@ namespace
   // Anchors at the touching points of `solver`'s last evaluation, shifted
   // along the tangent e1 = n x e_z by `slip` times each one's elastic range
   // mu N / k_t, with N = the touch's normal force and k_t = 1 / (1 / k_c +
-  // m_b c_t), m_b the touches on its link.
+  // c_t N_b / N), N_b the normal forces of the touches on its link.
   std::vector<StickAnchor> shifted_anchors(const ChainEquilibrium &solver, double mu, const std::vector<double> &slips,
                                            double c_t = 0.0)
   {
@@ -81,9 +81,10 @@ namespace
         const auto           &t     = touches[i];
         const double          N     = t.force.norm();
         const Eigen::Vector3d along = t.normal.cross(Eigen::Vector3d::UnitZ()).normalized();
-        const auto            m_b   = std::count_if(touches.begin(), touches.end(),
-                                                    [&](const auto &other) { return other.link == t.link; });
-        const double          k_t   = 1.0 / (1.0 / solver.contact().stiffness() + double(m_b) * c_t);
+        double                N_b   = 0.0;
+        for (const auto &other : touches)
+          N_b += other.link == t.link ? other.force.norm() : 0.0;
+        const double          k_t   = 1.0 / (1.0 / solver.contact().stiffness() + c_t * N_b / N);
         const double          slip  = slips[i % slips.size()] * mu * N / k_t;
         anchors.push_back({t.link, t.point, t.obstacle, x[t.point] - slip * along, t.normal, N});
       }
@@ -189,27 +190,37 @@ TEST_CASE("a point on a rough table sticks where it entered it, its section shea
     }
 }
 
-TEST_CASE("the points sticking on one link share its section's shear: k_t = 1 / (1 / k_c + m_b c_t)")
+TEST_CASE("the points sticking on one link share its section's shear by their normal forces")
 {
   CoulombFriction friction;
   const double    c_t = 1e-3;
-  // Two anchors on link 2, one on link 0, one with no normal force (it does
-  // not act, and does not count), listed out of link order.
-  const std::vector<StickAnchor> anchors = {{2, 5, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0},
-                                            {0, 1, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0},
-                                            {2, 6, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 0.0},
-                                            {2, 7, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 2.0}};
+  const auto      anchor = [](int link, int point, double N) {
+    return StickAnchor{link, point, 0, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), N};
+  };
+  // k_t = 1 / (1 / k_c + c_t N_b / N_k). Two anchors on link 2 (1 and 2 N),
+  // one on link 0, one with no normal force (it does not act, and does not
+  // count), listed out of link order.
+  const std::vector<StickAnchor> anchors = {anchor(2, 5, 1.0), anchor(0, 1, 1.0), anchor(2, 6, 0.0),
+                                            anchor(2, 7, 2.0)};
   friction.set({0.5}, k_c, c_t, anchors);
   REQUIRE(friction.anchors().size() == 3);
   CHECK(friction.anchors()[0].link == 0);
   CHECK(friction.stiffness(0) == Approx(1.0 / (1.0 / k_c + c_t)).epsilon(1e-14));
-  for (const std::size_t i : {1, 2})
-    {
-      CHECK(friction.anchors()[i].link == 2);
-      CHECK(friction.stiffness(i) == Approx(1.0 / (1.0 / k_c + 2 * c_t)).epsilon(1e-14));
-    }
-  // Two points that stick alike carry the link's series stiffness together.
-  CHECK(2 * friction.stiffness(1) == Approx(1.0 / (c_t + 1.0 / (2 * k_c))).epsilon(1e-14));
+  CHECK(friction.anchors()[1].point == 5);
+  CHECK(friction.stiffness(1) == Approx(1.0 / (1.0 / k_c + 3 * c_t)).epsilon(1e-14));
+  CHECK(friction.stiffness(2) == Approx(1.0 / (1.0 / k_c + 1.5 * c_t)).epsilon(1e-14));
+  // Each reaches the cone mu N_k at the same slip of the section, mu c_t N_b.
+  CHECK(0.5 * 1.0 / friction.stiffness(1) - 0.5 * 1.0 / k_c == Approx(0.5 * c_t * 3.0).epsilon(1e-12));
+  CHECK(0.5 * 2.0 / friction.stiffness(2) - 0.5 * 2.0 / k_c == Approx(0.5 * c_t * 3.0).epsilon(1e-12));
+  // Equal normal forces: m_b points sticking alike carry the link's series
+  // stiffness 1 / (c_t + 1 / (m_b k_c)) together.
+  friction.set({0.5}, k_c, c_t, {anchor(3, 1, 0.7), anchor(3, 2, 0.7), anchor(3, 3, 0.7)});
+  CHECK(3 * friction.stiffness(0) == Approx(1.0 / (c_t + 1.0 / (3 * k_c))).epsilon(1e-14));
+  // A point that grazes the obstacle takes a share that vanishes with its
+  // force, and leaves its neighbour's as it was.
+  friction.set({0.5}, k_c, c_t, {anchor(3, 1, 1.0), anchor(3, 2, 1e-9)});
+  CHECK(friction.stiffness(0) == Approx(1.0 / (1.0 / k_c + c_t)).epsilon(1e-8));
+  CHECK(friction.stiffness(1) < 1e-5);
   friction.set({0.5}, k_c, 0.0, anchors);
   CHECK(friction.stiffness(1) == Approx(k_c).epsilon(1e-14));
   CHECK_THROWS_WITH(friction.set({0.5}, k_c, -1e-3, anchors), Catch::Contains("shear compliance is negative"));

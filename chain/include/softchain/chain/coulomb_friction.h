@@ -28,12 +28,17 @@
 // k_t is the normal penalty k_c, in series with the section's shear: a
 // section sheared by its sticking points gives along the palm by c_t(p)
 // times their force (SkinComplianceFit's c_t; the silicone between the palm
-// and the fabric layer shears), so that m_b points of link b sticking alike
-// share its stiffness 1 / (c_t + 1 / (m_b k_c)), each
-//     k_t = 1 / (1 / k_c + m_b c_t),
-// with m_b the link's anchors in this solve (exact when they slip alike;
-// where some of them slide, the others keep their share). Without c_t a
-// sticking point slips elastically by |f_t| / k_c, 10 um per newton.
+// and the fabric layer shears). The link's shear spring 1 / c_t is shared
+// among its anchors in proportion to their normal forces N_k (of sum N_b):
+//     k_t = 1 / (1 / k_c + c_t N_b / N_k),
+// so that points sticking alike carry 1 / (c_t + 1 / (m_b k_c)) together
+// where their normal forces are equal, all reach the cone at the same slip
+// mu c_t N_b (plus mu N_k / k_c), and a point that grazes the obstacle
+// takes a share that vanishes with its force (an equal share would halve
+// its neighbours' stiffness as it touches, and the normal forces of a
+// grasp's path then cycle). Where some of them slide, the others keep their
+// share. Without c_t a sticking point slips elastically by |f_t| / k_c,
+// 10 um per newton.
 #include <softchain/chain/chain_load.h>
 #include <softchain/chain/kinematic_chain.h>
 
