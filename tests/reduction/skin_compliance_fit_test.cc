@@ -22,26 +22,27 @@ namespace
 {
   constexpr double mm = 1e-3;
 
-  // The box finger (palm y = -2 mm, top y = 10 mm) squeezed by y' = y +
-  // strain (10 mm - y), then turned by `turn` about joint 1's centre (5, 0,
-  // 0) mm, pressed by `force` along the turned palm normal at three palm
-  // points across x = 50 mm (link 5, joints at 45 and 55 mm).
-  data::SampleRecord squeezed(const data::MeshRecord &mesh, double strain, double turn, double force,
-                              double pressure)
+  // A skin sample of the box finger (palm y = -2 mm, top y = 10 mm): its
+  // nodes moved by `local`, then turned by `turn` about joint 1's centre
+  // (5, 0, 0) mm; a force of `force` along the turned axis `axis` at three
+  // palm points across x = 50 mm (link 5, joints at 45 and 55 mm).
+  template <typename Local>
+  data::SampleRecord skin_sample(const data::MeshRecord &mesh, const std::string &id, const Local &local,
+                                 double turn, int axis, double force, double pressure)
   {
     const Eigen::Matrix3d R = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     const Eigen::Vector3d J(5 * mm, 0, 0);
     data::SampleRecord    s;
-    s.id                 = "skin" + std::to_string(strain);
+    s.id                 = id;
     s.actuation.role     = "skin";
     s.actuation.pressure = pressure;
-    const auto deformed = [&](const data::Point3 &X) -> data::Point3 {
-      const Eigen::Vector3d y = J + R * (Eigen::Vector3d(X[0], X[1] + strain * (10 * mm - X[1]), X[2]) - J);
+    const auto deformed  = [&](const data::Point3 &X) -> data::Point3 {
+      const Eigen::Vector3d y = J + R * (local(Eigen::Vector3d(X[0], X[1], X[2])) - J);
       return {{y.x(), y.y(), y.z()}};
     };
     for (const auto &X : mesh.X)
       s.x.push_back(deformed(X));
-    const Eigen::Vector3d f = force * R.col(1);
+    const Eigen::Vector3d f = force * R.col(axis);
     for (const double z : {-3 * mm, 0.0, 3 * mm})
       {
         s.actuation.point_forces.push_back({{50 * mm, -2 * mm, z}, {f.x(), f.y(), f.z()}});
@@ -50,34 +51,29 @@ namespace
     return s;
   }
 
+  // The box finger squeezed by y' = y + strain (10 mm - y), pressed along
+  // the palm's normal.
+  data::SampleRecord squeezed(const data::MeshRecord &mesh, double strain, double turn, double force,
+                              double pressure)
+  {
+    const auto squeeze = [&](const Eigen::Vector3d &X) {
+      return Eigen::Vector3d(X.x(), X.y() + strain * (10 * mm - X.y()), X.z());
+    };
+    return skin_sample(mesh, "skin" + std::to_string(strain), squeeze, turn, 1, force, pressure);
+  }
+
   // The box finger whose palm (y = -2 mm) slides by `slide` along x and
   // whose top (y = 10 mm) by the same, every other node staying: the
   // section's affine fit sees no shear (the two faces lie symmetric about
   // its centre y = 4 mm), so M2's links do not turn, and the palm slides by
-  // `slide` from the layer (y = 0) above it. Then turned by `turn` about
-  // joint 1's centre and pulled by `force` along the turned x axis at the
-  // three palm points of `squeezed`.
+  // `slide` from the layer (y = 0) above it; pulled along the finger's axis.
   data::SampleRecord sheared(const data::MeshRecord &mesh, double slide, double turn, double force)
   {
-    const Eigen::Matrix3d R = Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    const Eigen::Vector3d J(5 * mm, 0, 0);
-    data::SampleRecord    s;
-    s.id             = "shear" + std::to_string(slide);
-    s.actuation.role = "skin";
-    const auto deformed = [&](const data::Point3 &X) -> data::Point3 {
-      const bool            face = std::abs(X[1] + 2 * mm) < 1e-9 || std::abs(X[1] - 10 * mm) < 1e-9;
-      const Eigen::Vector3d y    = J + R * (Eigen::Vector3d(X[0] + (face ? slide : 0.0), X[1], X[2]) - J);
-      return {{y.x(), y.y(), y.z()}};
+    const auto slide_faces = [&](const Eigen::Vector3d &X) {
+      const bool face = std::abs(X.y() + 2 * mm) < 1e-9 || std::abs(X.y() - 10 * mm) < 1e-9;
+      return Eigen::Vector3d(X.x() + (face ? slide : 0.0), X.y(), X.z());
     };
-    for (const auto &X : mesh.X)
-      s.x.push_back(deformed(X));
-    const Eigen::Vector3d f = force * R.col(0);
-    for (const double z : {-3 * mm, 0.0, 3 * mm})
-      {
-        s.actuation.point_forces.push_back({{50 * mm, -2 * mm, z}, {f.x(), f.y(), f.z()}});
-        s.force_points_deformed.push_back(deformed({{50 * mm, -2 * mm, z}}));
-      }
-    return s;
+    return skin_sample(mesh, "shear" + std::to_string(slide), slide_faces, turn, 0, force, 0.0);
   }
 
   // The normal and shear fits of the box finger's reduction of `samples`.
