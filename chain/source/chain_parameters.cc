@@ -8,7 +8,7 @@ namespace softchain::chain
   {
     // A compliance that is `measured` (nothing: the reduction's table), none
     // (0) or a value >= 0 in m/N.
-    std::optional<double> set_compliance(const data::PrmSection &section, const std::string &name)
+    std::optional<double> compliance_setting(const data::PrmSection &section, const std::string &name)
     {
       const std::string text = section.get(name);
       if (text == "measured")
@@ -121,8 +121,8 @@ namespace softchain::chain
     section.require(p.newton.tolerance > 0, "Newton tolerance", "must be positive");
     p.newton.contact_stiffness = section.get_double("Contact stiffness");
     section.require(p.newton.contact_stiffness > 0, "Contact stiffness", "must be positive");
-    p.skin_compliance       = set_compliance(section, "Skin compliance");
-    p.skin_shear_compliance = set_compliance(section, "Skin shear compliance");
+    p.skin_compliance       = compliance_setting(section, "Skin compliance");
+    p.skin_shear_compliance = compliance_setting(section, "Skin shear compliance");
     // Upper bounds far above any use (the collision surface grows with the
     // square of its subdivisions: 16 puts 28 times the points of the default
     // 3 on it), so that a mistyped value is an error, not hours of solves.

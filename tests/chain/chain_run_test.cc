@@ -387,6 +387,21 @@ TEST_CASE("the Chain subsection is read and checked")
                           Catch::Contains(prm + ":2") && Catch::Contains(entry.substr(0, entry.find(" ="))));
       }
   }
+  SECTION("the sections' compliances: measured (the tables), none, a value, or an error")
+  {
+    std::ofstream(prm) << chain_prm;
+    const ChainParameters measured = ChainParameters::read(data::PrmFile::read(prm));
+    CHECK_FALSE(measured.skin_compliance);
+    CHECK_FALSE(measured.skin_shear_compliance);
+    std::ofstream(prm) << "subsection Chain\n  set Skin compliance = 2e-3\n  set Skin shear compliance = none\nend\n";
+    const ChainParameters set = ChainParameters::read(data::PrmFile::read(prm));
+    CHECK(set.skin_compliance == 2e-3);
+    CHECK(set.skin_shear_compliance == 0.0);
+    std::ofstream(prm) << "subsection Chain\n  set Skin shear compliance = -1e-4\nend\n";
+    CHECK_THROWS_WITH(ChainParameters::read(data::PrmFile::read(prm)),
+                      Catch::Contains(prm) && Catch::Contains("Skin shear compliance") &&
+                        Catch::Contains("measured, none or a compliance >= 0"));
+  }
   SECTION("a bad method names file, line and parameter")
   {
     std::ofstream(prm) << "subsection Chain\n  set Stiffness method = M3\nend\n";
