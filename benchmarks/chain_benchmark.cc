@@ -236,14 +236,16 @@ BENCHMARK_CAPTURE(contact_ramp_20_warm_start, cylinder, on_cylinder(0.0))->Unit(
 
 // With Coulomb friction (mu = 0.5) on the same obstacles: the sample's load
 // path from rest (FrictionalLoadPath, 20 steps, a quarter of the default,
-// each solved until its normal forces settle). Time per path; solves and
-// Newton iterations per path.
-static void frictional_path_20_steps(benchmark::State &state, const ChainLoad &obstacle_load)
+// each solved until its normal forces settle; the steps before the last to
+// the default's 1e-4, or with `_exact_steps` to the solver's 1e-10). Time
+// per path; solves and Newton iterations per path.
+static void frictional_path(benchmark::State &state, const ChainLoad &obstacle_load, const double step_tolerance)
 {
   const ChainModel   model = finger_with_surface();
   ChainEquilibrium   solver(model);
   FrictionalPathSettings twenty_steps;
-  twenty_steps.steps = 20;
+  twenty_steps.steps          = 20;
+  twenty_steps.step_tolerance = step_tolerance;
   FrictionalLoadPath path(solver, twenty_steps);
   ChainLoad          load = obstacle_load;
   load.obstacles.front().friction = 0.5;
@@ -258,8 +260,18 @@ static void frictional_path_20_steps(benchmark::State &state, const ChainLoad &o
   state.counters["solves_per_path"]            = path.passes();
   state.counters["newton_iterations_per_path"] = iterations;
 }
+static void frictional_path_20_steps(benchmark::State &state, const ChainLoad &obstacle_load)
+{
+  frictional_path(state, obstacle_load, FrictionalPathSettings().step_tolerance);
+}
+static void frictional_path_20_exact_steps(benchmark::State &state, const ChainLoad &obstacle_load)
+{
+  frictional_path(state, obstacle_load, EquilibriumSettings().tolerance);
+}
 BENCHMARK_CAPTURE(frictional_path_20_steps, table, on_table(0.5 * p_max))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(frictional_path_20_steps, cylinder, on_cylinder(0.5 * p_max))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(frictional_path_20_exact_steps, table, on_table(0.5 * p_max))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(frictional_path_20_exact_steps, cylinder, on_cylinder(0.5 * p_max))->Unit(benchmark::kMicrosecond);
 
 // Five fingers of different stiffness (45 joints), each under pressure and
 // its own tip force, solved from rest.

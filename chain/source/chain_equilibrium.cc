@@ -79,6 +79,13 @@ namespace softchain::chain
                  model_.skin_shear_compliance(load.pressure), load.path, load.anchors);
   }
 
+  void ChainEquilibrium::set_tolerance(const double tolerance)
+  {
+    if (!(tolerance > 0.0))
+      throw std::invalid_argument("ChainEquilibrium: the tolerance must be positive");
+    settings_.tolerance = tolerance;
+  }
+
   void ChainEquilibrium::evaluate(const Eigen::VectorXd &q)
   {
     chain_.update_pose(q, pose_);

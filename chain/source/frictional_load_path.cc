@@ -8,12 +8,31 @@
 
 namespace softchain::chain
 {
+  // The solver's tolerance on the path: the looser of its own and the
+  // steps' before the last step, its own on the last and after the path.
+  FrictionalLoadPath::ToleranceOfSteps::ToleranceOfSteps(ChainEquilibrium &solver, const double steps)
+    : solver_(solver)
+    , final_(solver.tolerance())
+    , steps_(std::max(steps, final_))
+  {}
+
+  FrictionalLoadPath::ToleranceOfSteps::~ToleranceOfSteps()
+  {
+    solver_.set_tolerance(final_);
+  }
+
+  void FrictionalLoadPath::ToleranceOfSteps::set(const bool last_step) const
+  {
+    solver_.set_tolerance(last_step ? final_ : steps_);
+  }
+
   FrictionalLoadPath::FrictionalLoadPath(ChainEquilibrium &solver, const Settings settings)
     : solver_(solver)
     , settings_(settings)
   {
-    if (settings_.steps < 1 || settings_.max_passes < 1 || !(settings_.tolerance > 0.0))
-      throw std::invalid_argument("FrictionalLoadPath: steps, passes and tolerance must be positive");
+    if (settings_.steps < 1 || settings_.max_passes < 1 || !(settings_.tolerance > 0.0) ||
+        !(settings_.step_tolerance > 0.0))
+      throw std::invalid_argument("FrictionalLoadPath: steps, passes and tolerances must be positive");
   }
 
   bool FrictionalLoadPath::has_friction(const ChainLoad &load)
@@ -72,8 +91,10 @@ namespace softchain::chain
     std::vector<StickAnchor> anchors; // the last step's, slid
     Equilibrium              result;
     int                      iterations = 0;
+    const ToleranceOfSteps   tolerance(solver_, settings_.step_tolerance);
     for (int step = 1; step <= settings_.steps; ++step)
       {
+        tolerance.set(step == settings_.steps);
         result = solve_step(at(load, double(step) / settings_.steps), anchors, result.angles);
         iterations += result.iterations;
         if (!result.converged)

@@ -108,6 +108,10 @@ namespace softchain::chain
     // (warm start, e.g. the previous pressure of a sweep).
     Equilibrium solve(const ChainLoad &load);
     Equilibrium solve(const ChainLoad &load, const Eigen::VectorXd &start);
+    // The relative residual at which a solve stops (EquilibriumSettings);
+    // std::invalid_argument unless positive.
+    double tolerance() const { return settings_.tolerance; }
+    void   set_tolerance(double tolerance);
 
     // The pieces, for tests and for the dynamic step: set a load, then
     // evaluate U, r and H at q.
