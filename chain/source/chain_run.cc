@@ -193,8 +193,8 @@ namespace softchain::chain
       const auto precision = std::cout.precision(3);
       for (std::size_t r = 0; r < summary.n_rows(); ++r)
         std::cout << "chain: " << summary.text(r, "model") << " in contact: blocked force error "
-                  << summary.number(r, "blocked_force_error_percent") << " %, grasp force error "
-                  << summary.number(r, "grasp_force_error_percent") << " %, tip "
+                  << error_percent(summary.number(r, "blocked_force_error_percent")) << ", grasp force error "
+                  << error_percent(summary.number(r, "grasp_force_error_percent")) << ", tip "
                   << summary.number(r, "tip_error_percent_L") << " % of L and "
                   << summary.number(r, "orientation_error_deg") << " deg (max over "
                   << summary.text(r, "n_samples") << " samples, " << summary.text(r, "n_failed")

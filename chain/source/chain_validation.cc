@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <cmath>
 #include <tuple>
 
@@ -288,5 +289,15 @@ namespace softchain::chain
                        CsvTable::cell(degrees(s.mean_orientation))});
       }
     return table;
+  }
+
+  std::string error_percent(const double percent)
+  {
+    if (std::isnan(percent))
+      return "none (no such sample)";
+    std::ostringstream text;
+    text.precision(3);
+    text << percent << " %";
+    return text.str();
   }
 } // namespace softchain::chain

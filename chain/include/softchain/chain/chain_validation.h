@@ -95,4 +95,9 @@ namespace softchain::chain
     double                        finger_length_;
     std::vector<ValidationRecord> records_;
   };
+
+  // A force error of grasp_summary_table for the terminal: "4.88 %", or for
+  // a kind of contact sample the database lacks (NaN in the table) "none
+  // (no such sample)".
+  std::string error_percent(double percent);
 } // namespace softchain::chain
