@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <sstream>
 #include <cmath>
+#include <sstream>
 #include <tuple>
 
 namespace softchain::chain

@@ -1,5 +1,5 @@
-#include <softchain/chain/pressure_ramp_simulation.h>
 #include <softchain/chain/chain_validation.h>
+#include <softchain/chain/pressure_ramp_simulation.h>
 #include <softchain/chain/simulate_run.h>
 #include <softchain/data/input_error.h>
 #include <softchain/data/output_files.h>
@@ -215,7 +215,8 @@ namespace softchain::chain
     write_mujoco_row(file, {"mujoco", data::CsvTable::cell(n), "0", data::CsvTable::cell(blocked),
                             data::CsvTable::cell(grasp), data::CsvTable::cell(tip), "nan", "nan"});
     std::cout << "simulate: MuJoCo in contact: blocked force error " << error_percent(blocked)
-              << ", grasp force error " << error_percent(grasp) << ", tip " << tip << " % of L (max over " << n << " samples); " << file << "\n";
+              << ", grasp force error " << error_percent(grasp) << ", tip " << tip << " % of L (max over " << n
+              << " samples); " << file << "\n";
     return 0;
   }
 } // namespace softchain::chain

@@ -307,10 +307,11 @@ namespace softchain::fem
           }
         if (world_rank() == 0)
           {
+            using Direction = SampleSet::MeasuredForceRequest::Direction;
             std::cout << request.label << ": along the "
-                      << (request.role() == "chord"        ? "base-tip chord"
-                          : request.keyword() == "palm" ? "palm's inward normal"
-                                                        : "palm towards the tip")
+                      << (request.direction == Direction::chord         ? "base-tip chord"
+                          : request.direction == Direction::palm_normal ? "palm's inward normal"
+                                                                        : "palm towards the tip")
                       << " at "
                       << request.pressure << " Pa:";
             for (std::size_t k = 0; k < directions->size(); ++k)
