@@ -66,22 +66,85 @@ namespace softchain::chain
         blend.lower         = &table.hinges[j - 1];
         blend.upper         = &table.hinges[j];
         blend.weight = (pressure - table.pressures[j - 1]) / (table.pressures[j] - table.pressures[j - 1]);
+        blend.theta_in_series = table.pressures[j - 1] == 0.0;
       }
     if (blend.lower->kappa == 0.0 && (blend.weight == 0.0 || blend.upper->kappa == 0.0))
-      blend.springs = (1 - blend.weight) * blend.lower->k + blend.weight * blend.upper->k;
+      {
+        const double w = blend.weight;
+        blend.springs  = (1 - w) * blend.lower->k + w * blend.upper->k;
+        if (blend.theta_in_series)
+          (*blend.springs)(1) = 1.0 / ((1 - w) / blend.lower->k(1) + w / blend.upper->k(1));
+      }
     return blend;
   }
 
   data::FabricHinge::Value JointForceLaw::Blend::evaluate(const Eigen::Vector3d &increment) const
   {
-    data::FabricHinge::Value a = lower->evaluate(increment);
     if (weight == 0.0)
-      return a;
+      return lower->evaluate(increment);
+    if (theta_in_series)
+      return in_series(increment);
+    data::FabricHinge::Value       a = lower->evaluate(increment);
     const data::FabricHinge::Value b = upper->evaluate(increment);
     const double                   w = weight;
     a.energy  = (1 - w) * a.energy + w * b.energy;
     a.torque  = (1 - w) * a.torque + w * b.torque;
     a.tangent = (1 - w) * a.tangent + w * b.tangent;
     return a;
+  }
+
+  // The infimal convolution in theta (header): Newton on the convex
+  // F(x) = (1 - w) W_lo(x) + w W_hi(y), y = (d_theta - (1 - w) x) / w (theta
+  // components; psi and phi at d), F' = (1 - w) (T_lo - T_hi)_theta, with
+  // backtracking on F. Both laws are piecewise quadratic, so Newton lands
+  // on the minimiser in a few steps from x = d_theta (exact if the laws
+  // agree); it stops when the step falls to round-off (1e-14 |d|) or F no
+  // longer decreases.
+  data::FabricHinge::Value JointForceLaw::Blend::in_series(const Eigen::Vector3d &d) const
+  {
+    const double             w = weight;
+    Eigen::Vector3d          at_lo = d, at_hi = d;
+    data::FabricHinge::Value lo, hi;
+    const auto F = [&](const double x) {
+      at_lo(1) = x;
+      at_hi(1) = (d(1) - (1 - w) * x) / w;
+      lo       = lower->evaluate(at_lo);
+      hi       = upper->evaluate(at_hi);
+      return (1 - w) * lo.energy + w * hi.energy;
+    };
+    double x = d(1), value = F(x);
+    const double resolution = 1e-14 * d.lpNorm<Eigen::Infinity>();
+    for (int iteration = 0; iteration < max_series_iterations; ++iteration)
+      {
+        const double slope = (1 - w) * (lo.torque(1) - hi.torque(1));
+        const double step = -slope / ((1 - w) * lo.tangent(1, 1) + (1 - w) * (1 - w) / w * hi.tangent(1, 1));
+        if (!(std::abs(step) > resolution)) // the minimiser to round-off
+          break;
+        double t = 1.0, trial = F(x + step);
+        while (trial > value + 1e-4 * t * slope * step && t > 1e-6)
+          trial = F(x + (t *= 0.5) * step);
+        if (trial > value) // no decrease left above round-off
+          {
+            F(x); // lo, hi back at x
+            break;
+          }
+        x += t * step;
+        value = trial;
+      }
+    data::FabricHinge::Value out;
+    out.energy    = value;
+    out.torque    = (1 - w) * lo.torque + w * hi.torque;
+    out.torque(1) = hi.torque(1); // = lo's at the minimiser
+    // d^2W/dd^2 = F_dd - F_dx F_xd / F_xx (the Schur complement of x).
+    const Eigen::Matrix3d &L = lo.tangent, &H = hi.tangent;
+    Eigen::Matrix3d        F_dd = (1 - w) * L + w * H;
+    F_dd.row(1)                 = H.row(1);
+    F_dd.col(1)                 = H.col(1);
+    F_dd(1, 1)                  = H(1, 1) / w;
+    Eigen::RowVector3d F_xd     = (1 - w) * (L.row(1) - H.row(1));
+    F_xd(1)                     = -(1 - w) / w * H(1, 1);
+    const double F_xx           = (1 - w) * L(1, 1) + (1 - w) * (1 - w) / w * H(1, 1);
+    out.tangent                 = F_dd - F_xd.transpose() * F_xd / F_xx;
+    return out;
   }
 } // namespace softchain::chain

@@ -2,8 +2,11 @@
 // its tangent the residual's (central differences) with the fabric hinges
 // blended in pressure; the pressure-only state is unchanged by the law; a
 // law is completed with the linear springs at pressures it was not fitted
-// at, except between two of its laws where no force sample was made; and
-// the joint-law file is read, or rejected naming its row.
+// at, except between two of its laws where no force sample was made; from
+// rest theta blends in series (the infimal convolution against a brute-force
+// minimum, its torque and tangent against central differences, the springs'
+// harmonic mean), between inflated laws in parallel; and the joint-law file
+// is read, or rejected naming its row.
 #include <softchain/chain/chain_equilibrium.h>
 #include <softchain/chain/joint_force_law.h>
 #include <softchain/chain/stiffness_files.h>
@@ -44,6 +47,31 @@ namespace
     std::vector<JointForceLaw::Table> tables(n_joints, {{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}});
     model.set_force_law(JointForceLaw(tables));
     return model;
+  }
+
+  // The blend from rest by brute force: (1 - w) W_lo(x) + w W_hi(y) over a
+  // fine scan of x (theta of the law at rest; y = (d_theta - (1 - w) x) / w),
+  // refined by golden sections, independently of JointForceLaw's Newton.
+  double series_energy(const FabricHinge &lo, const FabricHinge &hi, double w, const Eigen::Vector3d &d)
+  {
+    const auto F = [&](double x) {
+      Eigen::Vector3d at_lo = d, at_hi = d;
+      at_lo(1)              = x;
+      at_hi(1)              = (d(1) - (1 - w) * x) / w;
+      return (1 - w) * lo.evaluate(at_lo).energy + w * hi.evaluate(at_hi).energy;
+    };
+    double best = d(1), span = 0.2;
+    for (int i = -1000; i <= 1000; ++i)
+      if (const double x = d(1) + span * i / 1000; F(x) < F(best))
+        best = x;
+    double left = best - span / 1000, right = best + span / 1000;
+    const double golden = 0.5 * (std::sqrt(5.0) - 1);
+    for (int i = 0; i < 200; ++i)
+      {
+        const double x1 = right - golden * (right - left), x2 = left + golden * (right - left);
+        (F(x1) < F(x2) ? right : left) = F(x1) < F(x2) ? x2 : x1;
+      }
+    return F(0.5 * (left + right));
   }
 
   Eigen::VectorXd angles(double amplitude)
@@ -126,10 +154,13 @@ TEST_CASE("a law is completed with the linear springs at the pressures it lacks"
   CHECK(complete.table(0).hinges[0].kappa == hinge(1, 0).kappa);
   CHECK(complete.table(0).hinges[1].kappa == 0.0);
   CHECK(complete.table(0).hinges[1].k == Eigen::Vector3d(1, 2, 6));
-  // Half way in pressure, half of each law's torque.
+  // Half way in pressure from rest, the series blend of the two laws (the
+  // brute-force minimum is exact to round-off in its energy: 1e-12).
   const Eigen::Vector3d d(0.01, 0.02, -0.01);
-  const Eigen::Vector3d expected = 0.5 * (hinge(1, 0).evaluate(d).torque + Eigen::Vector3d(1, 2, 6).cwiseProduct(d));
-  CHECK((complete.at(4e4, 0).evaluate(d).torque - expected).norm() < 1e-15 * expected.norm());
+  FabricHinge           springs_8e4;
+  springs_8e4.k = Eigen::Vector3d(1, 2, 6);
+  const double expected = series_energy(hinge(1, 0), springs_8e4, 0.5, d);
+  CHECK(complete.at(4e4, 0).evaluate(d).energy == Approx(expected).epsilon(1e-12));
 }
 
 TEST_CASE("between two laws, at a pressure without force samples, the laws blend")
@@ -145,14 +176,77 @@ TEST_CASE("between two laws, at a pressure without force samples, the laws blend
   const JointForceLaw complete = JointForceLaw({{{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}}}).completed_with(springs);
   REQUIRE(complete.table(0).pressures == std::vector<double>{0.0, 4e4, 8e4});
   const Eigen::Vector3d d(0.01, 0.02, -0.01);
-  const Eigen::Vector3d expected = 0.5 * (hinge(1, 0).evaluate(d).torque + hinge(2, 0.01).evaluate(d).torque);
-  CHECK((complete.at(2e4, 0).evaluate(d).torque - expected).norm() < 1e-15 * expected.norm());
+  CHECK(complete.at(2e4, 0).evaluate(d).energy ==
+        Approx(series_energy(hinge(1, 0), hinge(2, 0.01), 0.5, d)).epsilon(1e-12));
+  // Between two inflated laws (4e4 and the springs at 8e4) they blend in
+  // parallel: half of each law's torque.
+  const Eigen::Vector3d expected = 0.5 * (hinge(2, 0.01).evaluate(d).torque + Eigen::Vector3d(1, 3, 3).cwiseProduct(d));
+  CHECK((complete.at(6e4, 0).evaluate(d).torque - expected).norm() < 1e-15 * expected.norm());
   // A pressure of force samples where no law was fitted stays a knot.
   springs.set_in_pressure(1, {PiecewiseLinear({0.0, 2e4, 4e4}, {2.0, 2.2, 2.5})});
   const JointForceLaw with_samples =
     JointForceLaw({{{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}}}).completed_with(springs);
   REQUIRE(with_samples.table(0).pressures == std::vector<double>{0.0, 2e4, 4e4});
   CHECK(with_samples.table(0).hinges[1].kappa == 0.0);
+}
+
+TEST_CASE("from rest theta blends in series: its compliance, not its stiffness, interpolates in pressure")
+{
+  const double w = 0.3; // 1.2e4 between the laws at 0 and 4e4
+  SECTION("linear springs: the harmonic mean for theta, the arithmetic one for psi and phi")
+  {
+    FabricHinge rest, inflated, further;
+    rest.k     = Eigen::Vector3d(1, 2, 3);
+    inflated.k = Eigen::Vector3d(3, 8, 5);
+    further.k  = Eigen::Vector3d(4, 10, 7);
+    const JointForceLaw law({{{0.0, 4e4, 8e4}, {rest, inflated, further}}});
+    const auto          blend = law.at(w * 4e4, 0);
+    REQUIRE(blend.springs);
+    CHECK((*blend.springs - Eigen::Vector3d(0.7 * 1 + 0.3 * 3, 1 / (0.7 / 2 + 0.3 / 8), 0.7 * 3 + 0.3 * 5)).norm() <
+          1e-15);
+    const auto inflated_blend = law.at(6e4, 0);
+    REQUIRE(inflated_blend.springs);
+    CHECK((*inflated_blend.springs - Eigen::Vector3d(3.5, 9, 6)).norm() < 1e-15);
+  }
+  SECTION("fabric hinges: the infimal convolution, its torque and tangent")
+  {
+    const JointForceLaw law({{{0.0, 4e4}, {hinge(1, 0), hinge(2, 0.01)}}});
+    const auto          blend = law.at(w * 4e4, 0);
+    REQUIRE_FALSE(blend.springs);
+    // Increments with both fibres taut, one slack, and a lateral turn past
+    // the pre-stretched law's knee.
+    for (const Eigen::Vector3d &d : {Eigen::Vector3d(0.01, 0.002, -0.01), Eigen::Vector3d(0.01, 0.02, -0.01),
+                                    Eigen::Vector3d(-0.02, -0.05, 0.03)})
+      {
+        INFO("d = " << d.transpose());
+        const FabricHinge::Value v = blend.evaluate(d);
+        CHECK(v.energy == Approx(series_energy(hinge(1, 0), hinge(2, 0.01), w, d)).epsilon(1e-12));
+        // Central differences of a piecewise quadratic energy (its kinks
+        // farther than h from these d): round-off eps |W| / h, 1e-9 of |T|.
+        const double h = 1e-6;
+        for (int a = 0; a < 3; ++a)
+          {
+            const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(a);
+            const double torque = (blend.evaluate(d + e).energy - blend.evaluate(d - e).energy) / (2 * h);
+            CHECK(std::abs(v.torque(a) - torque) < 1e-9 * v.torque.norm());
+            const Eigen::Vector3d column = (blend.evaluate(d + e).torque - blend.evaluate(d - e).torque) / (2 * h);
+            CHECK((v.tangent.col(a) - column).norm() < 1e-8 * v.tangent.norm());
+          }
+        // The laws are in series in theta: the law at rest is the softer
+        // sideways, so the blend is softer than the parallel one.
+        const Eigen::Matrix3d parallel = (1 - w) * hinge(1, 0).evaluate(d).tangent + w * hinge(2, 0.01).evaluate(d).tangent;
+        CHECK(v.tangent(1, 1) < parallel(1, 1));
+      }
+  }
+  SECTION("a law in series with itself is that law")
+  {
+    const JointForceLaw      law({{{0.0, 4e4}, {hinge(2, 0.01), hinge(2, 0.01)}}});
+    const Eigen::Vector3d    d(0.01, 0.02, -0.01);
+    const FabricHinge::Value v = law.at(w * 4e4, 0).evaluate(d), exact = hinge(2, 0.01).evaluate(d);
+    CHECK(std::abs(v.energy - exact.energy) < 1e-15 * std::abs(exact.energy));
+    CHECK((v.torque - exact.torque).norm() < 1e-15 * exact.torque.norm());
+    CHECK((v.tangent - exact.tangent).norm() < 1e-14 * exact.tangent.norm());
+  }
 }
 
 TEST_CASE("the joint-law file gives the chain its law, and bad rows are input errors naming the row")
