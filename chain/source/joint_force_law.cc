@@ -144,7 +144,9 @@ namespace softchain::chain
     Eigen::RowVector3d F_xd     = (1 - w) * (L.row(1) - H.row(1));
     F_xd(1)                     = -(1 - w) / w * H(1, 1);
     const double F_xx           = (1 - w) * L(1, 1) + (1 - w) * (1 - w) / w * H(1, 1);
-    out.tangent                 = F_dd - F_xd.transpose() * F_xd / F_xx;
+    out.tangent                 = F_dd;
+    if (F_xx > 0.0) // else both laws are free in theta, and F_xd, their theta rows, is 0
+      out.tangent -= F_xd.transpose() * F_xd / F_xx;
     return out;
   }
 } // namespace softchain::chain

@@ -238,6 +238,18 @@ TEST_CASE("from rest theta blends in series: its compliance, not its stiffness, 
         CHECK(v.tangent(1, 1) < parallel(1, 1));
       }
   }
+  SECTION("laws free in theta (no theta spring, both fibres slack) leave a finite law")
+  {
+    FabricHinge free = hinge(1, 0);
+    free.k(1)        = 0.0;
+    const JointForceLaw      law({{{0.0, 4e4}, {free, free}}});
+    const Eigen::Vector3d    d(0.01, 0.0, -0.01); // e_u = r d_phi < 0: both edges slack
+    const FabricHinge::Value v = law.at(w * 4e4, 0).evaluate(d), exact = free.evaluate(d);
+    REQUIRE(exact.tangent(1, 1) == 0.0);
+    CHECK(v.tangent.allFinite());
+    CHECK((v.tangent - exact.tangent).norm() < 1e-15 * exact.tangent.norm());
+    CHECK((v.torque - exact.torque).norm() < 1e-15 * exact.torque.norm());
+  }
   SECTION("a law in series with itself is that law")
   {
     const JointForceLaw      law({{{0.0, 4e4}, {hinge(2, 0.01), hinge(2, 0.01)}}});
