@@ -60,16 +60,20 @@ namespace
       at_hi(1)              = (d(1) - (1 - w) * x) / w;
       return (1 - w) * lo.evaluate(at_lo).energy + w * hi.evaluate(at_hi).energy;
     };
-    double best = d(1), span = 0.2;
+    const double span = 0.2;
+    double       best = d(1), lowest = F(best);
     for (int i = -1000; i <= 1000; ++i)
-      if (const double x = d(1) + span * i / 1000; F(x) < F(best))
-        best = x;
-    double left = best - span / 1000, right = best + span / 1000;
+      if (const double x = d(1) + span * i / 1000, f = F(x); f < lowest)
+        best = x, lowest = f;
+    double       left = best - span / 1000, right = best + span / 1000;
     const double golden = 0.5 * (std::sqrt(5.0) - 1);
     for (int i = 0; i < 200; ++i)
       {
         const double x1 = right - golden * (right - left), x2 = left + golden * (right - left);
-        (F(x1) < F(x2) ? right : left) = F(x1) < F(x2) ? x2 : x1;
+        if (F(x1) < F(x2))
+          right = x2;
+        else
+          left = x1;
       }
     return F(0.5 * (left + right));
   }

@@ -17,9 +17,9 @@
 // knee. Measured on a P10 variant's tip under a lateral force of 0.1-0.2 N
 // (docs/history.md, "From rest to the first inflated law: theta in series"):
 // 66, 43 and 21.5 mm/N at 0, 10 and 20 kPa, where the compliances' mean is
-// 44 mm/N and the stiffnesses' 33. The blended energy is then the infimal convolution
-// in theta (psi and phi stay blended in parallel; x is theta of the law at
-// rest, the law at p_hi takes the rest of d_theta):
+// 44 mm/N and the stiffnesses' 33. The blended energy is then the infimal
+// convolution in theta (psi and phi stay blended in parallel; x is theta of
+// the law at rest, the law at p_hi takes the rest of d_theta):
 //   W(d) = min_x (1 - w) W_lo(x; d_psi, d_phi)
 //                + w W_hi((d_theta - (1 - w) x) / w; d_psi, d_phi),
 // convex in d as a partial infimal convolution of convex functions. At the
