@@ -112,12 +112,14 @@ namespace softchain::chain
       hi       = upper->evaluate(at_hi);
       return (1 - w) * lo.energy + w * hi.energy;
     };
+    // F_xx at the last evaluation: Newton's curvature, and the Schur pivot below.
+    const auto curvature = [&] { return (1 - w) * lo.tangent(1, 1) + (1 - w) * (1 - w) / w * hi.tangent(1, 1); };
     double x = d(1), value = F(x);
     const double resolution = 1e-14 * d.lpNorm<Eigen::Infinity>();
     for (int iteration = 0; iteration < max_series_iterations; ++iteration)
       {
         const double slope = (1 - w) * (lo.torque(1) - hi.torque(1));
-        const double step = -slope / ((1 - w) * lo.tangent(1, 1) + (1 - w) * (1 - w) / w * hi.tangent(1, 1));
+        const double step  = -slope / curvature();
         if (!(std::abs(step) > resolution)) // the minimiser to round-off
           break;
         double t = 1.0, trial = F(x + step);
@@ -143,7 +145,7 @@ namespace softchain::chain
     F_dd(1, 1)                  = H(1, 1) / w;
     Eigen::RowVector3d F_xd     = (1 - w) * (L.row(1) - H.row(1));
     F_xd(1)                     = -(1 - w) / w * H(1, 1);
-    const double F_xx           = (1 - w) * L(1, 1) + (1 - w) * (1 - w) / w * H(1, 1);
+    const double F_xx           = curvature();
     out.tangent                 = F_dd;
     if (F_xx > 0.0) // else both laws are free in theta, and F_xd, their theta rows, is 0
       out.tangent -= F_xd.transpose() * F_xd / F_xx;
